@@ -9,5 +9,7 @@ public enum DropReason {
   /** The packet stopped arriving half-way (no byte for the receive timeout). */
   TIMEOUT,
   /** The packet was well formed but its contents made no sense for its type. */
-  MALFORMED
+  MALFORMED,
+  /** The program fell behind and its queue of received packets was full. */
+  OVERFLOW
 }

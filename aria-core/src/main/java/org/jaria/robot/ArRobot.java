@@ -1,0 +1,700 @@
+package org.jaria.robot;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.ReentrantLock;
+import org.jaria.action.ArActionDesired;
+import org.jaria.clock.Clock;
+import org.jaria.connection.ArDeviceConnection;
+import org.jaria.geom.ArPose;
+import org.jaria.geom.ArTransform;
+import org.jaria.params.ArRobotParams;
+import org.jaria.protocol.ArCommands;
+import org.jaria.protocol.ArRobotPacket;
+import org.jaria.protocol.DropCounters;
+import org.jaria.protocol.packets.ArConfigPacket;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The robot: its connection, its state and its cycle (ARIA's {@code ArRobot}).
+ *
+ * <p>Typical use, as in ARIA:
+ *
+ * <pre>{@code
+ * ArRobot robot = new ArRobot();
+ * robot.setDeviceConnection(new ArTcpConnection("localhost", 8101));
+ * if (!robot.blockingConnect()) { ... }
+ * robot.runAsync(true);
+ * robot.enableMotors();
+ * robot.setVel(200);
+ * }</pre>
+ *
+ * <p><b>The cycle.</b> Every standard SIP (ten a second) starts one cycle: packet handlers, then
+ * sensor-interpretation tasks, then action resolution, then state reflection (which sends the
+ * motion commands), then user tasks. {@link #runAsync} runs cycles on a thread of their own; {@link
+ * #run} on the caller's thread; {@link #loopOnce} runs exactly one, for programs (and simulators in
+ * lockstep) that drive the loop themselves. If no SIP comes within two cycle times the cycle runs
+ * anyway.
+ *
+ * <p><b>Threads.</b> Every getter may be called from any thread: the robot publishes an immutable
+ * {@link RobotStatus} after each SIP, and getters read the latest one. Motion commands and direct
+ * commands may also be sent from any thread. The cycle holds the robot's lock ({@link #lock()})
+ * while it runs tasks; hold it yourself to keep the cycle from running between two of your calls.
+ * If your code holds it longer than a cycle time, that cycle's tasks are skipped (and a warning
+ * logged) but the robot is still kept alive with PULSEs.
+ */
+public class ArRobot extends RobotMotion implements AutoCloseable {
+
+  private static final Logger log = LoggerFactory.getLogger(ArRobot.class);
+
+  private final String name;
+  final ReentrantLock robotLock = new ReentrantLock();
+  final TaskList sensorInterpTasks = new TaskList("sensor interpretation");
+  final TaskList userTasks = new TaskList("user");
+  private final CopyOnWriteArrayList<ArPacketHandler> packetHandlers =
+      new CopyOnWriteArrayList<>();
+  final CopyOnWriteArrayList<org.jaria.range.ArRangeDevice> rangeDevices =
+      new CopyOnWriteArrayList<>();
+  final Callbacks connectCBs = new Callbacks("connect");
+  final Callbacks failedConnectCBs = new Callbacks("failed connect");
+  final Callbacks disconnectNormallyCBs = new Callbacks("disconnect normally");
+  final Callbacks disconnectOnErrorCBs = new Callbacks("disconnect on error");
+  final Callbacks runExitCBs = new Callbacks("run exit");
+  final DropCounters drops;
+  final PacketIntake intake;
+  final RobotConnection connection;
+  private final RunLoop runLoop;
+  private final ArActionDesired actionDesired = new ArActionDesired();
+  private volatile ActionHandler actionHandler;
+  private final java.util.concurrent.atomic.AtomicLong counter =
+      new java.util.concurrent.atomic.AtomicLong();
+  private volatile long cycleTimeMs = 100;
+  private volatile long cycleWarningTimeMs = 250;
+  private volatile boolean cycleChained = true;
+  private volatile long lastCycleNanos;
+  private long lockWarnings;
+  private long overrunWarnings;
+
+  /** A robot with the default name, timed by the system clock. */
+  public ArRobot() {
+    this("robot", Clock.system(), true);
+  }
+
+  /** A robot with a name (used in thread names and logs), timed by the system clock. */
+  public ArRobot(String name) {
+    this(name, Clock.system(), true);
+  }
+
+  /**
+   * A robot timed by {@code clock} (a {@link org.jaria.clock.VirtualClock} in tests).
+   *
+   * @param doStateReflection if false, motion commands are sent once when called instead of being
+   *     kept and re-sent by the cycle (ARIA's constructor flag)
+   */
+  public ArRobot(String name, Clock clock, boolean doStateReflection) {
+    super(clock, ArRobotParams.defaults());
+    this.name = name;
+    this.drops = new DropCounters(name);
+    this.intake = new PacketIntake(drops);
+    this.connection = new RobotConnection(this);
+    this.runLoop = new RunLoop(this);
+    motion.setDoStateReflection(doStateReflection);
+    addInternalPacketHandlers();
+  }
+
+  @Override
+  DropCounters dropCounters() {
+    return drops;
+  }
+
+  /** The robot's name as given to the constructor. */
+  public String getName() {
+    return name;
+  }
+
+  // ================================================================ connection
+
+  /** Sets the connection to the robot (TCP, serial or pipe); it is opened when connecting. */
+  public void setDeviceConnection(ArDeviceConnection c) {
+    connection.setDeviceConnection(c);
+  }
+
+  /** The connection to the robot, or null. */
+  public ArDeviceConnection getDeviceConnection() {
+    return connection.getDeviceConnection();
+  }
+
+  /**
+   * Connects to the robot, waiting until connected or failed (a few seconds at most). If the
+   * robot's cycle is already running on another thread, the connection is made there and this
+   * method waits for it.
+   *
+   * @return whether the robot is connected
+   */
+  public boolean blockingConnect() {
+    return connection.blockingConnect();
+  }
+
+  /**
+   * Starts connecting without waiting: the running cycle (or the next {@link #loopOnce} calls)
+   * carry the handshake forward. Watch {@link #isConnected()} or add a connect callback.
+   *
+   * @return false if there is no connection to use
+   */
+  public boolean asyncConnect() {
+    return connection.asyncConnect();
+  }
+
+  /** Whether the robot is connected. */
+  public boolean isConnected() {
+    return connection.isConnected();
+  }
+
+  /** Whether a connection attempt is under way. */
+  public boolean isConnecting() {
+    return connection.isConnecting();
+  }
+
+  /** Why the last connection attempt failed, or an empty string. */
+  public String getConnectFailure() {
+    return connection.failure();
+  }
+
+  /** Sends CLOSE and closes the connection; the disconnect-normally callbacks run. */
+  public boolean disconnect() {
+    return connection.disconnect();
+  }
+
+  /** The robot's name from the handshake. */
+  public String getRobotName() {
+    return connection.robotName();
+  }
+
+  /** The robot's type from the handshake, e.g. "Pioneer". */
+  public String getRobotType() {
+    return connection.robotType();
+  }
+
+  /** The robot's subtype from the handshake, lower-cased, e.g. "p3dx-sh". */
+  public String getRobotSubType() {
+    return connection.robotSubType();
+  }
+
+  /** The CONFIGpac received when connecting, or null. */
+  public ArConfigPacket getOrigRobotConfig() {
+    return connection.config();
+  }
+
+  /** The parameters in use (from the robot's subtype and name once connected). */
+  public ArRobotParams getRobotParams() {
+    return params;
+  }
+
+  /** Where user parameter files ({@code <subtype>.p}, {@code <name>.p}) are looked for. */
+  public void setParamsDirectory(Path dir) {
+    connection.setParamsDirectory(dir);
+  }
+
+  /**
+   * How long without any packet before the connection counts as lost, ms (default 8000; 0 never).
+   */
+  public void setConnectionTimeoutTime(long ms) {
+    connection.setTimeoutMs(ms);
+  }
+
+  /** The connection-lost timeout, ms. */
+  public long getConnectionTimeoutTime() {
+    return connection.timeoutMs();
+  }
+
+  /** Packets dropped on the way in, by reason. */
+  public DropCounters getDropCounters() {
+    return drops;
+  }
+
+  /** Commands sent since the robot was created. */
+  public long getPacketsSent() {
+    return sender.getPacketsSent();
+  }
+
+  /** The object that writes commands; its tap sees every packet sent. */
+  public ArRobotPacketSender getPacketSender() {
+    return sender;
+  }
+
+  /** Runs when a connection is made. */
+  public void addConnectCB(Runnable cb) {
+    connectCBs.add(cb);
+  }
+
+  /** Removes a connect callback. */
+  public void remConnectCB(Runnable cb) {
+    connectCBs.remove(cb);
+  }
+
+  /** Runs when a connection attempt fails. */
+  public void addFailedConnectCB(Runnable cb) {
+    failedConnectCBs.add(cb);
+  }
+
+  /** Removes a failed-connect callback. */
+  public void remFailedConnectCB(Runnable cb) {
+    failedConnectCBs.remove(cb);
+  }
+
+  /** Runs when the program disconnects on purpose. */
+  public void addDisconnectNormallyCB(Runnable cb) {
+    disconnectNormallyCBs.add(cb);
+  }
+
+  /** Removes a disconnect-normally callback. */
+  public void remDisconnectNormallyCB(Runnable cb) {
+    disconnectNormallyCBs.remove(cb);
+  }
+
+  /** Runs when the connection is lost (no packets, broken link, controller reset). */
+  public void addDisconnectOnErrorCB(Runnable cb) {
+    disconnectOnErrorCBs.add(cb);
+  }
+
+  /** Removes a disconnect-on-error callback. */
+  public void remDisconnectOnErrorCB(Runnable cb) {
+    disconnectOnErrorCBs.remove(cb);
+  }
+
+  /** Runs when {@link #run} / {@link #runAsync} ends. */
+  public void addRunExitCB(Runnable cb) {
+    runExitCBs.add(cb);
+  }
+
+  /** Removes a run-exit callback. */
+  public void remRunExitCB(Runnable cb) {
+    runExitCBs.remove(cb);
+  }
+
+  // ================================================================ the cycle
+
+  /**
+   * Runs the cycle on the calling thread until {@link #stopRunning()}.
+   *
+   * @param stopRunIfNotConnected also stop when the robot is (or becomes) disconnected
+   */
+  public void run(boolean stopRunIfNotConnected) {
+    runLoop.run(stopRunIfNotConnected);
+  }
+
+  /** Runs the cycle on a new thread named after the robot; returns at once. */
+  public void runAsync(boolean stopRunIfNotConnected) {
+    runLoop.runAsync(stopRunIfNotConnected);
+  }
+
+  /** Asks the cycle to stop; it ends within about two cycle times. */
+  public void stopRunning() {
+    runLoop.stopRunning();
+  }
+
+  /** Whether the cycle is running. */
+  public boolean isRunning() {
+    return runLoop.isRunning();
+  }
+
+  /** Waits until the cycle has stopped (at once if it is not running). */
+  public void waitForRunExit() throws InterruptedException {
+    runLoop.waitForRunExit();
+  }
+
+  /**
+   * Runs one cycle now: reads what has arrived (without waiting), then packet handlers, sensor
+   * interpretation, actions, state reflection and user tasks. While a connection is being made it
+   * advances the handshake instead.
+   */
+  public void loopOnce() {
+    long start = clock.nanoTime();
+    long realStart = System.nanoTime();
+    if (connection.stepConnecting(start)) {
+      counter.incrementAndGet();
+      return;
+    }
+    if (isConnected()) {
+      connection.readAvailable(start);
+    }
+    boolean locked;
+    try {
+      locked = robotLock.tryLock(Math.max(1, cycleTimeMs), TimeUnit.MILLISECONDS);
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+      return;
+    }
+    if (!locked) {
+      keepAliveWithoutLock(start);
+      return;
+    }
+    try {
+      dispatchQueuedPackets();
+      connection.checkTimeout(clock.nanoTime());
+      sensorInterpTasks.runAll();
+      resolveActions();
+      if (isConnected()) {
+        motion.reflect(actionDesired, processor.getEncoderTransform().getTh());
+      }
+      userTasks.runAll();
+    } finally {
+      robotLock.unlock();
+    }
+    counter.incrementAndGet();
+    long took = System.nanoTime() - realStart;
+    lastCycleNanos = took;
+    if (cycleWarningTimeMs > 0 && took > TimeUnit.MILLISECONDS.toNanos(cycleWarningTimeMs)) {
+      warnRarely(
+          ++overrunWarnings,
+          "cycle took {} ms, more than the {} ms warning time: a task is too slow",
+          TimeUnit.NANOSECONDS.toMillis(took),
+          cycleWarningTimeMs);
+    }
+  }
+
+  private void keepAliveWithoutLock(long now) {
+    warnRarely(
+        ++lockWarnings,
+        "skipped a cycle: user code held the robot lock for more than {} ms (cycle time {} ms)",
+        cycleTimeMs,
+        cycleTimeMs);
+    if (isConnected() && now - sender.getLastSentNanos() > TimeUnit.MILLISECONDS.toNanos(500)) {
+      sender.com(ArCommands.PULSE.getNumber());
+    }
+  }
+
+  private static void warnRarely(long n, String format, Object a, Object b) {
+    if (n == 1 || n % 100 == 0) {
+      log.warn(format + " (#" + n + ")", a, b);
+    }
+  }
+
+  void dispatchQueuedPackets() {
+    ArRobotPacket p;
+    while ((p = intake.poll()) != null) {
+      dispatch(p);
+    }
+  }
+
+  /** Hands one packet to the handler list; the first handler to accept it wins. */
+  void dispatch(ArRobotPacket p) {
+    for (ArPacketHandler h : packetHandlers) {
+      p.resetRead();
+      if (h.handle(p)) {
+        return;
+      }
+    }
+    log.debug("no packet handler wanted packet 0x{}", Integer.toHexString(p.getID()));
+  }
+
+  private void addInternalPacketHandlers() {
+    packetHandlers.add(connection::handleControllerReset);
+    packetHandlers.add(p -> handleSip(p, counter.get()));
+    packetHandlers.add(connection::handleConfig);
+    packetHandlers.add(this::handleEncoderPacket);
+    packetHandlers.add(this::handleIoPacket);
+  }
+
+  private void resolveActions() {
+    actionDesired.reset();
+    ActionHandler h = actionHandler;
+    if (h != null && isConnected()) {
+      ArActionDesired d = h.resolve(this);
+      if (d != null) {
+        actionDesired.merge(d);
+      }
+    }
+  }
+
+  /** Resolves the robot's actions each cycle (set by the action machinery). */
+  interface ActionHandler {
+    /** The resolved desire for this cycle, or null for none. */
+    ArActionDesired resolve(ArRobot robot);
+  }
+
+  void setActionHandler(ActionHandler h) {
+    actionHandler = h;
+  }
+
+  /** The actions' resolved desire of the last cycle (a copy). */
+  public ArActionDesired getActionDesired() {
+    ArActionDesired copy = new ArActionDesired();
+    copy.copyFrom(actionDesired);
+    return copy;
+  }
+
+  /** Adds a packet handler at the end of the list (after the robot's own handlers). */
+  public void addPacketHandler(ArPacketHandler h) {
+    addPacketHandler(h, ArListPos.LAST);
+  }
+
+  /** Adds a packet handler at the front (asked before the robot's own) or the end. */
+  public void addPacketHandler(ArPacketHandler h, ArListPos pos) {
+    if (pos == ArListPos.FIRST) {
+      packetHandlers.add(0, h);
+    } else {
+      packetHandlers.add(h);
+    }
+  }
+
+  /** Removes a packet handler. */
+  public void remPacketHandler(ArPacketHandler h) {
+    packetHandlers.remove(h);
+  }
+
+  /**
+   * Adds (or replaces, by name) a sensor-interpretation task; higher positions run first. Range
+   * devices and localization use these.
+   */
+  public ArSyncTask addSensorInterpTask(String taskName, int position, Runnable task) {
+    return sensorInterpTasks.add(taskName, position, task);
+  }
+
+  /** Removes a sensor-interpretation task by name. */
+  public boolean remSensorInterpTask(String taskName) {
+    return sensorInterpTasks.remove(taskName);
+  }
+
+  /** Adds (or replaces, by name) a user task; higher positions run first. */
+  public ArSyncTask addUserTask(String taskName, int position, Runnable task) {
+    return userTasks.add(taskName, position, task);
+  }
+
+  /** Removes a user task by name. */
+  public boolean remUserTask(String taskName) {
+    return userTasks.remove(taskName);
+  }
+
+  /** The sensor-interpretation task with this name, or null. */
+  public ArSyncTask findSensorInterpTask(String taskName) {
+    return sensorInterpTasks.find(taskName);
+  }
+
+  /** The user task with this name, or null. */
+  public ArSyncTask findUserTask(String taskName) {
+    return userTasks.find(taskName);
+  }
+
+  /** The user tasks in running order. */
+  public List<ArSyncTask> getUserTasks() {
+    return userTasks.snapshot();
+  }
+
+  /** The sensor-interpretation tasks in running order. */
+  public List<ArSyncTask> getSensorInterpTasks() {
+    return sensorInterpTasks.snapshot();
+  }
+
+  /** Locks the robot: the cycle's tasks do not run until {@link #unlock()}. */
+  public void lock() {
+    robotLock.lock();
+  }
+
+  /** Tries to lock the robot without waiting. */
+  public boolean tryLock() {
+    return robotLock.tryLock();
+  }
+
+  /** Unlocks the robot. */
+  public void unlock() {
+    robotLock.unlock();
+  }
+
+  /** Cycles run so far (ARIA's counter, used to tell new sensor readings from old). */
+  public long getCounter() {
+    return counter.get();
+  }
+
+  /** Sets the cycle time, ms (default 100, the SIP cycle). */
+  public void setCycleTime(long ms) {
+    if (ms <= 0) {
+      throw new IllegalArgumentException("cycle time must be positive, got " + ms);
+    }
+    cycleTimeMs = ms;
+  }
+
+  /** The cycle time, ms. */
+  public long getCycleTime() {
+    return cycleTimeMs;
+  }
+
+  /** A cycle longer than this logs a warning, ms (default 250; 0 never). */
+  public void setCycleWarningTime(long ms) {
+    cycleWarningTimeMs = ms;
+  }
+
+  /** The cycle warning time, ms. */
+  public long getCycleWarningTime() {
+    return cycleWarningTimeMs;
+  }
+
+  /** Whether each cycle waits for a SIP (true, default) or just runs every cycle time. */
+  public void setCycleChained(boolean chained) {
+    cycleChained = chained;
+  }
+
+  /** Whether cycles are chained to SIP arrival. */
+  public boolean isCycleChained() {
+    return cycleChained;
+  }
+
+  /** Real time the last cycle's tasks took, ns. */
+  public long getLastCycleNanos() {
+    return lastCycleNanos;
+  }
+
+  // ================================================================ pose transform
+
+  /**
+   * Declares that the robot is at {@code pose} now (ARIA's {@code moveTo}): odometry keeps
+   * counting, but {@link #getPose()} and everything that uses it jump to the new pose. Range
+   * devices' buffers move along.
+   */
+  public void moveTo(ArPose pose) {
+    ArTransform before = processor.getEncoderTransform();
+    publish(processor.moveTo(pose));
+    shiftRangeDevices(processor.getEncoderTransform().compose(before.inverse()));
+  }
+
+  /**
+   * Sets the encoder→global transform so that odometry pose {@code encoderPose} corresponds to
+   * global pose {@code globalPose} (what a localizer reports for an odometry pose it used).
+   */
+  public void setEncoderTransform(ArPose encoderPose, ArPose globalPose) {
+    ArTransform before = processor.getEncoderTransform();
+    publish(processor.setEncoderTransform(encoderPose, globalPose));
+    shiftRangeDevices(processor.getEncoderTransform().compose(before.inverse()));
+  }
+
+  private void shiftRangeDevices(ArTransform change) {
+    for (org.jaria.range.ArRangeDevice d : rangeDevices) {
+      d.applyTransform(change);
+    }
+  }
+
+  /** The transform from odometry coordinates to global coordinates. */
+  public ArTransform getEncoderTransform() {
+    return processor.getEncoderTransform();
+  }
+
+  /** The transform from the robot's local frame to global coordinates (at the current pose). */
+  public ArTransform getToGlobalTransform() {
+    return ArTransform.ofPose(getPose());
+  }
+
+  /** The transform from global coordinates to the robot's local frame. */
+  public ArTransform getToLocalTransform() {
+    return getToGlobalTransform().inverse();
+  }
+
+  // ================================================================ range devices
+
+  /** Adds a range device (sonar, bumpers, laser ...) and tells it its robot. */
+  public void addRangeDevice(org.jaria.range.ArRangeDevice device) {
+    device.setRobot(this);
+    rangeDevices.addIfAbsent(device);
+  }
+
+  /** Removes a range device. */
+  public void remRangeDevice(org.jaria.range.ArRangeDevice device) {
+    rangeDevices.remove(device);
+  }
+
+  /** The range device called {@code deviceName}, or null. */
+  public org.jaria.range.ArRangeDevice findRangeDevice(String deviceName) {
+    for (org.jaria.range.ArRangeDevice d : rangeDevices) {
+      if (d.getName().equals(deviceName)) {
+        return d;
+      }
+    }
+    return null;
+  }
+
+  /** The range devices added to this robot. */
+  public List<org.jaria.range.ArRangeDevice> getRangeDeviceList() {
+    return List.copyOf(rangeDevices);
+  }
+
+  /**
+   * The closest current reading of any range device in the sector from {@code startAngle}
+   * counter-clockwise to {@code endAngle} (degrees, 0 ahead), in mm from the robot's centre; a
+   * value of at least the devices' maximum range means nothing was seen.
+   */
+  public double checkRangeDevicesCurrentPolar(double startAngle, double endAngle) {
+    double best = Double.MAX_VALUE;
+    for (org.jaria.range.ArRangeDevice d : rangeDevices) {
+      best = Math.min(best, d.currentReadingPolar(startAngle, endAngle));
+    }
+    return best;
+  }
+
+  /** As {@link #checkRangeDevicesCurrentPolar}, over the cumulative buffers. */
+  public double checkRangeDevicesCumulativePolar(double startAngle, double endAngle) {
+    double best = Double.MAX_VALUE;
+    for (org.jaria.range.ArRangeDevice d : rangeDevices) {
+      best = Math.min(best, d.cumulativeReadingPolar(startAngle, endAngle));
+    }
+    return best;
+  }
+
+  /**
+   * The closest current reading of any range device inside the box with corners (x1, y1), (x2,
+   * y2) in the robot's frame (x forward, y left, mm); a very large value if none.
+   */
+  public double checkRangeDevicesCurrentBox(double x1, double y1, double x2, double y2) {
+    double best = Double.MAX_VALUE;
+    for (org.jaria.range.ArRangeDevice d : rangeDevices) {
+      best = Math.min(best, d.currentReadingBox(x1, y1, x2, y2));
+    }
+    return best;
+  }
+
+  /** As {@link #checkRangeDevicesCurrentBox}, over the cumulative buffers. */
+  public double checkRangeDevicesCumulativeBox(double x1, double y1, double x2, double y2) {
+    double best = Double.MAX_VALUE;
+    for (org.jaria.range.ArRangeDevice d : rangeDevices) {
+      best = Math.min(best, d.cumulativeReadingBox(x1, y1, x2, y2));
+    }
+    return best;
+  }
+
+  // ================================================================ shutdown
+
+  /**
+   * Disconnects (sending CLOSE), stops the cycle and waits for its thread to end. Safe to call
+   * more than once.
+   */
+  @Override
+  public void close() {
+    if (isConnected()) {
+      disconnect();
+    }
+    stopRunning();
+    try {
+      waitForRunExit();
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+    }
+    ArDeviceConnection c = getDeviceConnection();
+    if (c != null) {
+      c.close();
+    }
+  }
+
+  /** Counts of internal events for diagnostics: skipped cycles, overruns. */
+  public String getDiagnostics() {
+    return String.format(
+        java.util.Locale.ROOT,
+        "%s: counter %d, last cycle %.2f ms, lock waits %d, overruns %d, %s",
+        name,
+        counter.get(),
+        lastCycleNanos / 1e6,
+        lockWarnings,
+        overrunWarnings,
+        drops);
+  }
+}

@@ -1,0 +1,681 @@
+package org.jaria.robot;
+
+import java.util.concurrent.TimeUnit;
+import java.util.function.Supplier;
+import org.jaria.action.ArActionDesired;
+import org.jaria.clock.Clock;
+import org.jaria.geom.ArMath;
+import org.jaria.geom.ArPose;
+import org.jaria.protocol.ArCommands;
+
+/**
+ * ARIA's state reflection for motion: remembers what the program asked for (by motion commands or
+ * by the actions' resolved desire) and, once per cycle, sends the robot the commands that make it
+ * so — again when a value changes, and every refresh time (500 ms) anyway, with a PULSE when
+ * nothing else went out, so the robot's watchdog never trips.
+ *
+ * <p>Direct motion commands ({@link #setVel} ...) take precedence over actions: forever, or for the
+ * precedence time after the last such command if one is set; {@link #clearDirectMotion} hands
+ * control back to the actions. Translation and rotation are separate: a program can drive with
+ * {@code setVel} while actions steer.
+ *
+ * <p>Setters may be called from any thread; all state is guarded by this object's monitor.
+ */
+final class MotionReflector {
+
+  /** What controls translation. */
+  enum TransType {
+    /** Nothing direct: actions may drive. */
+    NONE,
+    VEL,
+    VEL2,
+    DIST_NEW,
+    DIST,
+    /** Direct control that sends nothing (e.g. a program driving with com()). */
+    IGNORE
+  }
+
+  /** What controls rotation. */
+  enum RotType {
+    NONE,
+    VEL,
+    HEADING,
+    IGNORE
+  }
+
+  private final Clock clock;
+  private final ArRobotPacketSender sender;
+  private final Supplier<RobotStatus> status;
+
+  private boolean doStateReflection = true;
+  private long refreshNanos = TimeUnit.MILLISECONDS.toNanos(500);
+  private long precedenceMs;
+  private boolean settableVelMaxes = true;
+  private boolean settableAccsDecs = true;
+  private boolean hasMoveCommand = true;
+  private double vel2Divisor = 20;
+
+  private TransType transType = TransType.NONE;
+  private double transVal;
+  private double transVal2;
+  private long transSetTime;
+  private ArPose transDistStart = ArPose.ORIGIN;
+  private RotType rotType = RotType.NONE;
+  private double rotVal;
+  private long rotSetTime;
+
+  private double absMaxTransVel = 5000;
+  private double absMaxRotVel = 500;
+  private double transVelMax;
+  private double rotVelMax;
+  private double transAccel;
+  private double transDecel;
+  private double rotAccel;
+  private double rotDecel;
+
+  private double lastSentTransVelMax;
+  private double lastSentRotVelMax;
+  private double lastSentTransAccel;
+  private double lastSentTransDecel;
+  private double lastSentRotAccel;
+  private double lastSentRotDecel;
+
+  private int lastTransVal;
+  private int lastTransVal2;
+  private TransType lastTransType = TransType.NONE;
+  private long lastTransSent;
+  private int lastRotVal;
+  private RotType lastRotType = RotType.NONE;
+  private long lastRotSent;
+  private long lastPulseSent;
+
+  private int lastActionTransVal;
+  private boolean actionTransSet;
+  private int lastActionRotVal;
+  private boolean lastActionRotStopped;
+  private boolean lastActionRotHeading;
+  private boolean actionRotSet;
+  private boolean tryingToMove;
+
+  private double moveDoneDist = 40;
+  private double headingDoneDiff = 3;
+
+  MotionReflector(Clock clock, ArRobotPacketSender sender, Supplier<RobotStatus> status) {
+    this.clock = clock;
+    this.sender = sender;
+    this.status = status;
+  }
+
+  // ---------------------------------------------------------------- configuration
+
+  synchronized void configure(
+      boolean velMaxes, boolean accsDecs, boolean moveCommand, double vel2Div) {
+    settableVelMaxes = velMaxes;
+    settableAccsDecs = accsDecs;
+    hasMoveCommand = moveCommand;
+    vel2Divisor = vel2Div <= 0 ? 20 : vel2Div;
+  }
+
+  synchronized void setDoStateReflection(boolean on) {
+    doStateReflection = on;
+  }
+
+  synchronized void setRefreshMillis(long ms) {
+    refreshNanos = TimeUnit.MILLISECONDS.toNanos(ms);
+  }
+
+  synchronized long getRefreshMillis() {
+    return TimeUnit.NANOSECONDS.toMillis(refreshNanos);
+  }
+
+  synchronized void setDirectMotionPrecedenceTime(long ms) {
+    precedenceMs = Math.max(0, ms);
+  }
+
+  synchronized long getDirectMotionPrecedenceTime() {
+    return precedenceMs;
+  }
+
+  /** Forgets everything sent (a new connection). */
+  synchronized void reset() {
+    transType = TransType.NONE;
+    rotType = RotType.NONE;
+    lastTransType = TransType.NONE;
+    lastRotType = RotType.NONE;
+    lastSentTransVelMax = 0;
+    lastSentRotVelMax = 0;
+    lastSentTransAccel = 0;
+    lastSentTransDecel = 0;
+    lastSentRotAccel = 0;
+    lastSentRotDecel = 0;
+    lastActionTransVal = 0;
+    lastActionRotVal = 0;
+    lastActionRotStopped = false;
+    lastActionRotHeading = false;
+    long now = clock.nanoTime();
+    lastTransSent = now;
+    lastRotSent = now;
+    lastPulseSent = now;
+  }
+
+  // ---------------------------------------------------------------- limits
+
+  synchronized void setAbsoluteMaxTransVel(double v) {
+    absMaxTransVel = Math.abs(v);
+    if (transVelMax > absMaxTransVel) {
+      transVelMax = absMaxTransVel;
+    }
+  }
+
+  synchronized double getAbsoluteMaxTransVel() {
+    return absMaxTransVel;
+  }
+
+  synchronized void setAbsoluteMaxRotVel(double v) {
+    absMaxRotVel = Math.abs(v);
+    if (rotVelMax > absMaxRotVel) {
+      rotVelMax = absMaxRotVel;
+    }
+  }
+
+  synchronized double getAbsoluteMaxRotVel() {
+    return absMaxRotVel;
+  }
+
+  synchronized boolean setTransVelMax(double v) {
+    if (v <= 0 || v > absMaxTransVel) {
+      return false;
+    }
+    transVelMax = v;
+    return true;
+  }
+
+  synchronized double getTransVelMax() {
+    return transVelMax;
+  }
+
+  synchronized boolean setRotVelMax(double v) {
+    if (v <= 0 || v > absMaxRotVel) {
+      return false;
+    }
+    rotVelMax = v;
+    return true;
+  }
+
+  synchronized double getRotVelMax() {
+    return rotVelMax;
+  }
+
+  synchronized void setTransAccel(double a) {
+    transAccel = Math.abs(a);
+  }
+
+  synchronized double getTransAccel() {
+    return transAccel;
+  }
+
+  synchronized void setTransDecel(double a) {
+    transDecel = Math.abs(a);
+  }
+
+  synchronized double getTransDecel() {
+    return transDecel;
+  }
+
+  synchronized void setRotAccel(double a) {
+    rotAccel = Math.abs(a);
+  }
+
+  synchronized double getRotAccel() {
+    return rotAccel;
+  }
+
+  synchronized void setRotDecel(double a) {
+    rotDecel = Math.abs(a);
+  }
+
+  synchronized double getRotDecel() {
+    return rotDecel;
+  }
+
+  // ---------------------------------------------------------------- direct motion
+
+  synchronized void setVel(double v) {
+    transType = TransType.VEL;
+    transVal = v;
+    transSetTime = clock.nanoTime();
+    if (!doStateReflection) {
+      sender.comInt(ArCommands.VEL.getNumber(), clampShort(v));
+    }
+  }
+
+  synchronized void setVel2(double left, double right) {
+    transType = TransType.VEL2;
+    transVal = left;
+    transVal2 = right;
+    rotType = RotType.IGNORE;
+    long now = clock.nanoTime();
+    transSetTime = now;
+    rotSetTime = now;
+    if (!doStateReflection) {
+      sender.com2Bytes(ArCommands.VEL2.getNumber(), vel2Byte(left), vel2Byte(right));
+    }
+  }
+
+  synchronized void move(double distance) {
+    transType = TransType.DIST_NEW;
+    transVal = distance;
+    transSetTime = clock.nanoTime();
+    transDistStart = status.get().pose();
+    if (!doStateReflection) {
+      sender.comInt(ArCommands.MOVE.getNumber(), clampShort(distance));
+      transType = TransType.DIST;
+    }
+  }
+
+  synchronized boolean isMoveDone(double delta) {
+    if (Math.abs(delta) < 0.001) {
+      delta = moveDoneDist;
+    }
+    if (transType != TransType.DIST && transType != TransType.DIST_NEW) {
+      return true;
+    }
+    double gone = transDistStart.findDistanceTo(status.get().pose());
+    return Math.abs(gone - Math.abs(transVal)) < delta;
+  }
+
+  synchronized void setMoveDoneDist(double d) {
+    moveDoneDist = d;
+  }
+
+  synchronized double getMoveDoneDist() {
+    return moveDoneDist;
+  }
+
+  synchronized void setRotVel(double v) {
+    rotType = RotType.VEL;
+    rotVal = v;
+    rotSetTime = clock.nanoTime();
+    if (!doStateReflection) {
+      sender.comInt(ArCommands.RVEL.getNumber(), clampShort(v));
+    }
+  }
+
+  synchronized void setHeading(double heading) {
+    rotType = RotType.HEADING;
+    rotVal = ArMath.fixAngle(heading);
+    rotSetTime = clock.nanoTime();
+    if (!doStateReflection) {
+      sender.comInt(ArCommands.HEAD.getNumber(), robotHeading(rotVal, status.get()));
+    }
+  }
+
+  synchronized void setDeltaHeading(double delta) {
+    setHeading(status.get().pose().th() + delta);
+  }
+
+  synchronized boolean isHeadingDone(double delta) {
+    if (Math.abs(delta) < 0.001) {
+      delta = headingDoneDiff;
+    }
+    if (rotType != RotType.HEADING) {
+      return true;
+    }
+    return Math.abs(ArMath.subAngle(status.get().pose().th(), rotVal)) < delta;
+  }
+
+  synchronized void setHeadingDoneDiff(double d) {
+    headingDoneDiff = d;
+  }
+
+  synchronized double getHeadingDoneDiff() {
+    return headingDoneDiff;
+  }
+
+  /** Stops both axes at once and remembers that zero is what is wanted. */
+  synchronized void stop() {
+    sender.com(ArCommands.STOP.getNumber());
+    long now = clock.nanoTime();
+    transType = TransType.VEL;
+    transVal = 0;
+    transSetTime = now;
+    rotType = RotType.VEL;
+    rotVal = 0;
+    rotSetTime = now;
+    lastTransVal = 0;
+    lastTransType = TransType.VEL;
+    lastTransSent = now;
+    lastRotVal = 0;
+    lastRotType = RotType.VEL;
+    lastRotSent = now;
+    lastActionTransVal = 0;
+    lastActionRotStopped = true;
+    lastActionRotHeading = false;
+  }
+
+  synchronized void clearDirectMotion() {
+    transType = TransType.NONE;
+    rotType = RotType.NONE;
+    lastTransType = TransType.NONE;
+    lastRotType = RotType.NONE;
+  }
+
+  /** Declares that translation and rotation are being driven some other way: send nothing. */
+  synchronized void setIgnore() {
+    long now = clock.nanoTime();
+    transType = TransType.IGNORE;
+    rotType = RotType.IGNORE;
+    transSetTime = now;
+    rotSetTime = now;
+  }
+
+  synchronized boolean isDirectMotion() {
+    long now = clock.nanoTime();
+    return hasPrecedence(transType != TransType.NONE, transSetTime, now)
+        || hasPrecedence(rotType != RotType.NONE, rotSetTime, now);
+  }
+
+  synchronized boolean isTryingToMove() {
+    return tryingToMove;
+  }
+
+  synchronized TransType transType() {
+    return transType;
+  }
+
+  synchronized RotType rotType() {
+    return rotType;
+  }
+
+  synchronized double transVal() {
+    return transVal;
+  }
+
+  synchronized double rotVal() {
+    return rotVal;
+  }
+
+  private boolean hasPrecedence(boolean set, long setTime, long now) {
+    return set && (precedenceMs == 0 || now - setTime < TimeUnit.MILLISECONDS.toNanos(precedenceMs));
+  }
+
+  // ---------------------------------------------------------------- the cycle's reflection
+
+  /**
+   * Sends what is needed this cycle. {@code desired} is the actions' resolved desire (no strength
+   * anywhere if there are no actions).
+   */
+  synchronized void reflect(ArActionDesired desired, double encoderTransformTh) {
+    long now = clock.nanoTime();
+    RobotStatus s = status.get();
+    if (doStateReflection) {
+      tryingToMove = false;
+      if (hasPrecedence(transType != TransType.NONE, transSetTime, now)) {
+        reflectDirectTrans(now, s);
+      } else {
+        reflectActionTrans(now, desired);
+      }
+      if (hasPrecedence(rotType != RotType.NONE, rotSetTime, now)) {
+        reflectDirectRot(now, s, encoderTransformTh);
+      } else {
+        reflectActionRot(now, s, desired, encoderTransformTh);
+      }
+    }
+    if (now - lastRotSent > refreshNanos
+        && now - lastTransSent > refreshNanos
+        && now - lastPulseSent > refreshNanos) {
+      sender.com(ArCommands.PULSE.getNumber());
+      lastPulseSent = now;
+    }
+  }
+
+  private void sendTransLimits(double velMax, double accel, double decel) {
+    if (settableVelMaxes && Math.abs(lastSentTransVelMax - velMax) >= 1) {
+      sender.comInt(ArCommands.SETV.getNumber(), clampShort(velMax));
+      lastSentTransVelMax = velMax;
+    }
+    if (settableAccsDecs && Math.abs(accel) > 1 && Math.abs(lastSentTransAccel - accel) >= 1) {
+      sender.comInt(ArCommands.SETA.getNumber(), clampShort(accel));
+      lastSentTransAccel = accel;
+    }
+    if (settableAccsDecs && Math.abs(decel) > 1 && Math.abs(lastSentTransDecel - decel) >= 1) {
+      sender.comInt(ArCommands.SETA.getNumber(), -clampShort(decel));
+      lastSentTransDecel = decel;
+    }
+  }
+
+  private void sendRotLimits(double velMax, double accel, double decel) {
+    if (settableVelMaxes && Math.abs(lastSentRotVelMax - velMax) >= 1) {
+      sender.comInt(ArCommands.SETRV.getNumber(), clampShort(velMax));
+      lastSentRotVelMax = velMax;
+    }
+    if (settableAccsDecs && Math.abs(accel) > 1 && Math.abs(lastSentRotAccel - accel) >= 1) {
+      sender.comInt(ArCommands.SETRA.getNumber(), clampShort(accel));
+      lastSentRotAccel = accel;
+    }
+    if (settableAccsDecs && Math.abs(decel) > 1 && Math.abs(lastSentRotDecel - decel) >= 1) {
+      sender.comInt(ArCommands.SETRA.getNumber(), -clampShort(decel));
+      lastSentRotDecel = decel;
+    }
+  }
+
+  private void reflectDirectTrans(long now, RobotStatus s) {
+    actionTransSet = false;
+    sendTransLimits(transVelMax, transAccel, transDecel);
+    int val = clampShort(transVal);
+    int val2 = 0;
+    boolean refresh = now - lastTransSent >= refreshNanos;
+    switch (transType) {
+      case VEL -> {
+        int max = clampShort(transVelMax);
+        val = Math.max(-max, Math.min(max, val));
+        if (lastTransVal != val || lastTransType != transType || refresh) {
+          sender.comInt(ArCommands.VEL.getNumber(), val);
+          lastTransSent = now;
+        }
+        tryingToMove |= Math.abs(val) > 0;
+      }
+      case VEL2 -> {
+        val = vel2Byte(transVal);
+        val2 = vel2Byte(transVal2);
+        if (lastTransVal != val || lastTransVal2 != val2 || lastTransType != transType || refresh) {
+          sender.com2Bytes(ArCommands.VEL2.getNumber(), val, val2);
+          lastTransSent = now;
+        }
+        tryingToMove |= val != 0 || val2 != 0;
+      }
+      case DIST_NEW, DIST -> reflectDistance(now, s, val, refresh);
+      case IGNORE, NONE -> {
+        // nothing to send
+      }
+    }
+    lastTransVal = val;
+    lastTransVal2 = val2;
+    lastTransType = transType;
+  }
+
+  /** MOVE once; without a MOVE command, drive by velocity and stop at the distance. */
+  private void reflectDistance(long now, RobotStatus s, int val, boolean refresh) {
+    if (!hasMoveCommand) {
+      transType = TransType.DIST;
+      double gone = transDistStart.findDistanceTo(s.pose());
+      double toGo = Math.abs(Math.abs(transVal) - gone);
+      if (gone > Math.abs(transVal) || (toGo < 10 && Math.abs(s.vel()) < 30)) {
+        sender.comInt(ArCommands.VEL.getNumber(), 0);
+        transType = TransType.VEL;
+        transVal = 0;
+        lastTransSent = now;
+        return;
+      }
+      tryingToMove = true;
+      double v = Math.min(Math.sqrt(toGo * 200 * 2), transVelMax);
+      sender.comInt(ArCommands.VEL.getNumber(), clampShort(transVal < 0 ? -v : v));
+      lastTransSent = now;
+    } else if (transType == TransType.DIST_NEW) {
+      sender.comInt(ArCommands.MOVE.getNumber(), val);
+      lastTransSent = now;
+      transType = TransType.DIST;
+      tryingToMove = true;
+    } else if (refresh) {
+      sender.com(ArCommands.PULSE.getNumber());
+      lastPulseSent = now;
+      lastTransSent = now;
+    }
+  }
+
+  private void reflectActionTrans(long now, ArActionDesired d) {
+    double accel =
+        d.getTransAccelStrength() >= ArActionDesired.MIN_STRENGTH
+            ? Math.round(d.getTransAccel())
+            : transAccel;
+    double decel =
+        d.getTransDecelStrength() >= ArActionDesired.MIN_STRENGTH
+            ? Math.round(d.getTransDecel())
+            : transDecel;
+    sendTransLimits(transVelMax, accel, decel);
+    double maxVel =
+        d.getMaxVelStrength() >= ArActionDesired.MIN_STRENGTH
+            ? Math.min(d.getMaxVel(), transVelMax)
+            : transVelMax;
+    double maxNeg =
+        d.getMaxNegVelStrength() >= ArActionDesired.MIN_STRENGTH
+            ? Math.max(-Math.abs(d.getMaxNegVel()), -transVelMax)
+            : -transVelMax;
+    int val;
+    if (d.getVelStrength() >= ArActionDesired.MIN_STRENGTH) {
+      val = clampShort(d.getVel());
+      actionTransSet = true;
+    } else {
+      val = lastActionTransVal;
+    }
+    tryingToMove |= Math.abs(val) > 0;
+    val = Math.max(clampShort(maxNeg), Math.min(clampShort(maxVel), val));
+    if (actionTransSet && (now - lastTransSent >= refreshNanos || val != lastActionTransVal)) {
+      sender.comInt(ArCommands.VEL.getNumber(), val);
+      lastTransSent = now;
+    }
+    lastActionTransVal = val;
+  }
+
+  private void reflectDirectRot(long now, RobotStatus s, double encoderTransformTh) {
+    actionRotSet = false;
+    sendRotLimits(rotVelMax, rotAccel, rotDecel);
+    int val = clampShort(rotVal);
+    boolean refresh = now - lastRotSent >= refreshNanos;
+    if (rotType == RotType.HEADING) {
+      val = robotHeading(rotVal, s, encoderTransformTh);
+      double error = Math.abs(ArMath.subAngle(rotVal, s.pose().th()));
+      if (lastRotVal != val || lastRotType != rotType || error > 1 || refresh) {
+        sender.comInt(ArCommands.HEAD.getNumber(), val);
+        lastRotSent = now;
+      }
+      tryingToMove |= error > 1;
+    } else if (rotType == RotType.VEL) {
+      if (lastRotVal != val || lastRotType != rotType || refresh) {
+        sender.comInt(ArCommands.RVEL.getNumber(), val);
+        lastRotSent = now;
+        tryingToMove |= val != 0;
+      }
+    }
+    lastRotVal = val;
+    lastRotType = rotType;
+  }
+
+  private void reflectActionRot(
+      long now, RobotStatus s, ArActionDesired d, double encoderTransformTh) {
+    if (d.getMaxRotVelStrength() >= ArActionDesired.MIN_STRENGTH) {
+      double max = Math.round(Math.min(d.getMaxRotVel(), absMaxRotVel));
+      if (Math.abs(lastSentRotVelMax - max) >= 1) {
+        lastSentRotVelMax = max;
+        sender.comInt(ArCommands.SETRV.getNumber(), clampShort(max));
+      }
+      double accel =
+          d.getRotAccelStrength() >= ArActionDesired.MIN_STRENGTH
+              ? Math.round(d.getRotAccel())
+              : rotAccel;
+      double decel =
+          d.getRotDecelStrength() >= ArActionDesired.MIN_STRENGTH
+              ? Math.round(d.getRotDecel())
+              : rotDecel;
+      sendRotLimits(max, accel, decel);
+    } else {
+      double accel =
+          d.getRotAccelStrength() >= ArActionDesired.MIN_STRENGTH
+              ? Math.round(d.getRotAccel())
+              : rotAccel;
+      double decel =
+          d.getRotDecelStrength() >= ArActionDesired.MIN_STRENGTH
+              ? Math.round(d.getRotDecel())
+              : rotDecel;
+      sendRotLimits(rotVelMax, accel, decel);
+    }
+    boolean stopped;
+    boolean heading;
+    int val;
+    if (d.getDeltaHeadingStrength() >= ArActionDesired.MIN_STRENGTH) {
+      if (Math.round(d.getDeltaHeading()) == 0) {
+        stopped = true;
+        heading = false;
+        val = 0;
+      } else {
+        val = robotHeading(s.pose().th() + d.getDeltaHeading(), s, encoderTransformTh);
+        stopped = false;
+        heading = true;
+        tryingToMove = true;
+      }
+      actionRotSet = true;
+    } else if (d.getRotVelStrength() >= ArActionDesired.MIN_STRENGTH) {
+      val = clampShort(d.getRotVel());
+      stopped = val == 0;
+      heading = false;
+      tryingToMove |= val != 0;
+      actionRotSet = true;
+    } else {
+      stopped = lastActionRotStopped;
+      val = lastActionRotVal;
+      heading = lastActionRotHeading;
+    }
+    if (actionRotSet
+        && (now - lastRotSent > refreshNanos
+            || stopped != lastActionRotStopped
+            || val != lastActionRotVal
+            || heading != lastActionRotHeading)) {
+      if (stopped) {
+        sender.comInt(ArCommands.RVEL.getNumber(), 0);
+      } else if (heading) {
+        sender.comInt(ArCommands.HEAD.getNumber(), val);
+      } else {
+        sender.comInt(ArCommands.RVEL.getNumber(), val);
+      }
+      lastRotSent = now;
+    }
+    lastActionRotVal = val;
+    lastActionRotStopped = stopped;
+    lastActionRotHeading = heading;
+  }
+
+  /**
+   * Converts a global heading into the robot's own heading frame, which is what HEAD takes: undo
+   * the encoder→global rotation and any gyro correction of the odometry heading.
+   */
+  private static int robotHeading(double globalHeading, RobotStatus s, double encoderTransformTh) {
+    double encTh = ArMath.subAngle(globalHeading, encoderTransformTh);
+    double rawTh = ArMath.addAngle(encTh, ArMath.subAngle(s.rawEncoderPose().th(), s.encoderPose().th()));
+    return (int) Math.round(rawTh);
+  }
+
+  private int robotHeading(double globalHeading, RobotStatus s) {
+    return robotHeading(
+        globalHeading, s, ArMath.subAngle(s.pose().th(), s.encoderPose().th()));
+  }
+
+  private int vel2Byte(double v) {
+    long b = Math.round(v / vel2Divisor);
+    return (int) Math.max(-128, Math.min(127, b));
+  }
+
+  private static int clampShort(double v) {
+    long r = Math.round(v);
+    return (int) Math.max(-32767, Math.min(32767, r));
+  }
+}

@@ -1,0 +1,238 @@
+package org.jaria.robot;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.jaria.geom.ArMath;
+import org.jaria.geom.ArPose;
+import org.jaria.geom.ArTransform;
+import org.jaria.params.ArRobotParams;
+import org.jaria.protocol.packets.StandardSip;
+import org.jaria.range.ArSensorReading;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Turns standard SIPs into {@link RobotStatus} snapshots: integrates the 15-bit wrapping position
+ * counters into an odometry pose, applies the conversion factors, places sonar readings in global
+ * coordinates, and keeps the encoder→global transform that localization uses to correct the pose.
+ *
+ * <p>SIPs are processed on the robot's cycle thread; {@link #moveTo} and {@link
+ * #setEncoderTransform} may come from another thread (a localization task), so every method is
+ * synchronized. They are short, and contention is rare.
+ */
+final class SipProcessor {
+
+  private static final Logger log = LoggerFactory.getLogger(SipProcessor.class);
+
+  /** Corrects each odometry heading change, e.g. with a gyro (ARIA's encoder correction). */
+  @FunctionalInterface
+  interface HeadingCorrection {
+    /** Returns the heading change to use, degrees, given the raw odometry deltas. */
+    double correctedDeltaTh(double deltaX, double deltaY, double deltaTh, long timeNanos);
+  }
+
+  private ArRobotParams params;
+  private final List<ArSensorReading> sonars = new ArrayList<>();
+  private boolean first = true;
+  private int lastX;
+  private int lastY;
+  private int lastTh;
+  private ArPose rawEncoderPose = ArPose.ORIGIN;
+  private ArPose encoderPose = ArPose.ORIGIN;
+  private ArTransform encoderTransform = ArTransform.IDENTITY;
+  private ArPose globalPose = ArPose.ORIGIN;
+  private double odometerDistance;
+  private double odometerDegrees;
+  private HeadingCorrection headingCorrection;
+  private boolean warnedExtraSonar;
+  private RobotStatus last;
+
+  SipProcessor(ArRobotParams params) {
+    setParams(params);
+  }
+
+  /** New parameters (after connecting): sonar geometry and conversion factors. */
+  synchronized void setParams(ArRobotParams p) {
+    this.params = p;
+    sonars.clear();
+    for (int i = 0; i < p.getNumSonar(); i++) {
+      sonars.add(ArSensorReading.never(p.getSonarX(i), p.getSonarY(i), p.getSonarTh(i)));
+    }
+    last = RobotStatus.initial(sonars);
+  }
+
+  /** Forgets the odometry history (a new connection starts counting afresh). */
+  synchronized void reset() {
+    first = true;
+    rawEncoderPose = ArPose.ORIGIN;
+    encoderPose = ArPose.ORIGIN;
+    odometerDistance = 0;
+    odometerDegrees = 0;
+    setParams(params);
+  }
+
+  synchronized void setHeadingCorrection(HeadingCorrection c) {
+    headingCorrection = c;
+  }
+
+  /** Converts one SIP into a new status. */
+  synchronized RobotStatus process(StandardSip sip, long counter, long nowNanos) {
+    ArRobotParams p = params;
+    int x = sip.getXPos();
+    int y = sip.getYPos();
+    int th = sip.getThPos();
+    int qx;
+    int qy;
+    int qth;
+    if (first) {
+      qx = 0;
+      qy = 0;
+      qth = 0;
+      first = false;
+      rawEncoderPose =
+          new ArPose(
+              p.getDistConvFactor() * x,
+              p.getDistConvFactor() * y,
+              Math.toDegrees(p.getAngleConvFactor() * th));
+      encoderPose = rawEncoderPose;
+      encoderTransform = ArTransform.between(encoderPose, globalPose);
+    } else {
+      qx = wrap15(x - lastX);
+      qy = wrap15(y - lastY);
+      qth = th - lastTh;
+    }
+    lastX = x;
+    lastY = y;
+    lastTh = th;
+
+    double dx = p.getDistConvFactor() * qx;
+    double dy = p.getDistConvFactor() * qy;
+    double dth = Math.toDegrees(p.getAngleConvFactor() * qth);
+    rawEncoderPose =
+        new ArPose(rawEncoderPose.x() + dx, rawEncoderPose.y() + dy, rawEncoderPose.th() + dth);
+    HeadingCorrection c = headingCorrection;
+    if (c != null && !first) {
+      dth = c.correctedDeltaTh(dx, dy, dth, nowNanos);
+      // Rotate the position delta from the raw heading frame into the corrected one.
+      double rot =
+          Math.toRadians(ArMath.subAngle(encoderPose.th() + dth, rawEncoderPose.th()));
+      double cos = Math.cos(rot);
+      double sin = Math.sin(rot);
+      double rdx = cos * dx - sin * dy;
+      dy = sin * dx + cos * dy;
+      dx = rdx;
+    }
+    encoderPose = new ArPose(encoderPose.x() + dx, encoderPose.y() + dy, encoderPose.th() + dth);
+    globalPose = encoderTransform.doTransform(encoderPose);
+    odometerDegrees += Math.abs(dth);
+    odometerDistance += Math.hypot(dx, dy);
+
+    double leftVel = p.getVelConvFactor() * sip.getLeftVel();
+    double rightVel = p.getVelConvFactor() * sip.getRightVel();
+    double battery = sip.getBattery() * 0.1;
+    double control =
+        ArMath.fixAngle(Math.toDegrees(p.getAngleConvFactor() * (sip.getControl() - th)));
+
+    for (int i = 0; i < sip.getSonarCount(); i++) {
+      int num = sip.getSonarNumber(i);
+      int range = ArMath.roundInt(sip.getSonarRange(i) * p.getRangeConvFactor());
+      if (num < sonars.size()) {
+        // A later reading of the same sonar in this SIP replaces the earlier one.
+        sonars.set(num, sonars.get(num).newData(range, globalPose, encoderPose, counter, nowNanos));
+      } else if (!warnedExtraSonar) {
+        warnedExtraSonar = true;
+        log.warn(
+            "robot sent a reading of sonar {} but its parameters define only {}: update the"
+                + " parameter file or the firmware",
+            num,
+            sonars.size());
+      }
+    }
+
+    int n = sip.getOptionalCount();
+    double realBattery =
+        sip.has(StandardSip.Optional.BATTERY_X10) ? sip.getBatteryX10() * 0.1 : battery;
+    double rotVel =
+        sip.has(StandardSip.Optional.ROT_VEL)
+            ? sip.getRotVel() / 10.0
+            : Math.toDegrees((rightVel - leftVel) / 2.0 * p.getDiffConvFactor());
+    last =
+        new RobotStatus(
+            counter,
+            nowNanos,
+            globalPose,
+            encoderPose,
+            rawEncoderPose,
+            (leftVel + rightVel) / 2.0,
+            rotVel,
+            leftVel,
+            rightVel,
+            battery,
+            realBattery,
+            sip.getStallAndBumpers(),
+            control,
+            sip.getFlags(),
+            2 * sip.getCompass(),
+            n > 1 ? sip.getAnPort() : 0,
+            n > 2 ? sip.getAnalog() : 0,
+            n > 3 ? sip.getDigIn() : 0,
+            n > 4 ? sip.getDigOut() : 0,
+            n > 0 ? sip.getGripState() : 0,
+            sip.has(StandardSip.Optional.CHARGE_STATE) ? sip.getChargeState() : -1,
+            sip.has(StandardSip.Optional.FAULT_FLAGS) ? sip.getFaultFlags() : 0,
+            sip.isMoving(),
+            odometerDistance,
+            odometerDegrees,
+            sonars);
+    return last;
+  }
+
+  /** A 15-bit counter difference, corrected for wrap-around. */
+  static int wrap15(int delta) {
+    if (delta > 0x1000) {
+      return delta - 0x8000;
+    }
+    if (delta < -0x1000) {
+      return delta + 0x8000;
+    }
+    return delta;
+  }
+
+  /** The encoder→global transform. */
+  synchronized ArTransform getEncoderTransform() {
+    return encoderTransform;
+  }
+
+  /**
+   * Declares that the robot is now at {@code pose}: the encoder→global transform changes so the
+   * current odometry maps there, and sonar readings move along. Returns the updated status.
+   */
+  synchronized RobotStatus moveTo(ArPose pose) {
+    ArTransform old = encoderTransform;
+    encoderTransform = ArTransform.between(encoderPose, pose);
+    ArTransform change = encoderTransform.compose(old.inverse());
+    globalPose = encoderTransform.doTransform(encoderPose);
+    for (int i = 0; i < sonars.size(); i++) {
+      ArSensorReading r = sonars.get(i);
+      if (r.range() >= 0) {
+        sonars.set(i, r.applyTransform(change));
+      }
+    }
+    last = last.withPoseAndSonars(globalPose, sonars);
+    return last;
+  }
+
+  /**
+   * Sets the transform so that odometry pose {@code encoder} corresponds to global pose {@code
+   * global} (what a localizer computed for an earlier odometry reading).
+   */
+  synchronized RobotStatus setEncoderTransform(ArPose encoder, ArPose global) {
+    ArTransform target = ArTransform.between(encoder, global);
+    return moveTo(target.doTransform(encoderPose));
+  }
+
+  /** The last status produced. */
+  synchronized RobotStatus last() {
+    return last;
+  }
+}

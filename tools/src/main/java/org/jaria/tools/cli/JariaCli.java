@@ -1,0 +1,67 @@
+package org.jaria.tools.cli;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.util.Properties;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/**
+ * The {@code jaria} command: one entry point for the simulator, the demos, the benchmarks, the
+ * protocol tools and the desktop apps. Run {@code ./jaria --help} for the list.
+ */
+@Command(
+    name = "jaria",
+    mixinStandardHelpOptions = true,
+    versionProvider = JariaCli.Version.class,
+    description = "JAria: Pioneer robots in pure Java (ARIA, ARCOS, a simulator, SonARNL, ACTS).",
+    subcommands = {
+      VersionCommand.class,
+      PacketsCommand.class,
+      BenchCommand.class,
+      CommandLine.HelpCommand.class
+    })
+public final class JariaCli implements Runnable {
+
+  @CommandLine.Spec CommandLine.Model.CommandSpec spec;
+
+  @Override
+  public void run() {
+    spec.commandLine().usage(spec.commandLine().getOut());
+  }
+
+  /** Builds the command line with every subcommand, ready to execute. */
+  public static CommandLine commandLine() {
+    return new CommandLine(new JariaCli());
+  }
+
+  /** Runs {@code jaria} with {@code args} and exits with its status. */
+  public static void main(String[] args) {
+    System.exit(commandLine().execute(args));
+  }
+
+  /** The project version, from the build. */
+  public static String projectVersion() {
+    Properties p = new Properties();
+    try (InputStream in = JariaCli.class.getResourceAsStream("/org/jaria/tools/version.properties")) {
+      if (in != null) {
+        p.load(in);
+      }
+    } catch (IOException e) {
+      // fall through to "unknown"
+    }
+    return p.getProperty("version", "unknown");
+  }
+
+  /** Supplies {@code --version}. */
+  static final class Version implements CommandLine.IVersionProvider {
+    @Override
+    public String[] getVersion() {
+      return new String[] {
+        "JAria " + projectVersion(),
+        "Java " + System.getProperty("java.version") + " (" + System.getProperty("java.vendor") + ")",
+        "OS " + System.getProperty("os.name") + " " + System.getProperty("os.arch")
+      };
+    }
+  }
+}
