@@ -115,7 +115,9 @@ public final class ArActionDesiredChannel {
   void addAverage(ArActionDesiredChannel other) {
     allowOverride = allowOverride && other.allowOverride;
     if (allowOverride) {
-      if (strength >= MIN_STRENGTH && other.strength >= MIN_STRENGTH) {
+      // ARIA tests this channel's own strength here, which stays 0 while averaging, so the last
+      // limit of a priority level won over stricter ones; the running total fixes that.
+      if (strengthTotal >= MIN_STRENGTH && other.strength >= MIN_STRENGTH) {
         desired = mostRestrictive(desired, other.desired);
       } else if (other.strength >= MIN_STRENGTH) {
         desired = other.desired;

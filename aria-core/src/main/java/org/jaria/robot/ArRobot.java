@@ -8,8 +8,6 @@ import java.util.concurrent.locks.ReentrantLock;
 import org.jaria.action.ArActionDesired;
 import org.jaria.clock.Clock;
 import org.jaria.connection.ArDeviceConnection;
-import org.jaria.geom.ArPose;
-import org.jaria.geom.ArTransform;
 import org.jaria.params.ArRobotParams;
 import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
@@ -46,7 +44,7 @@ import org.slf4j.LoggerFactory;
  * If your code holds it longer than a cycle time, that cycle's tasks are skipped (and a warning
  * logged) but the robot is still kept alive with PULSEs.
  */
-public class ArRobot extends RobotMotion implements AutoCloseable {
+public class ArRobot extends RobotDevices implements AutoCloseable {
 
   private static final Logger log = LoggerFactory.getLogger(ArRobot.class);
 
@@ -55,8 +53,6 @@ public class ArRobot extends RobotMotion implements AutoCloseable {
   final TaskList sensorInterpTasks = new TaskList("sensor interpretation");
   final TaskList userTasks = new TaskList("user");
   private final CopyOnWriteArrayList<ArPacketHandler> packetHandlers =
-      new CopyOnWriteArrayList<>();
-  final CopyOnWriteArrayList<org.jaria.range.ArRangeDevice> rangeDevices =
       new CopyOnWriteArrayList<>();
   final Callbacks connectCBs = new Callbacks("connect");
   final Callbacks failedConnectCBs = new Callbacks("failed connect");
@@ -67,8 +63,6 @@ public class ArRobot extends RobotMotion implements AutoCloseable {
   final PacketIntake intake;
   final RobotConnection connection;
   private final RunLoop runLoop;
-  private final ArActionDesired actionDesired = new ArActionDesired();
-  private volatile ActionHandler actionHandler;
   private final java.util.concurrent.atomic.AtomicLong counter =
       new java.util.concurrent.atomic.AtomicLong();
   private volatile long cycleTimeMs = 100;
@@ -336,9 +330,9 @@ public class ArRobot extends RobotMotion implements AutoCloseable {
       dispatchQueuedPackets();
       connection.checkTimeout(clock.nanoTime());
       sensorInterpTasks.runAll();
-      resolveActions();
+      ArActionDesired desired = resolveActions(this, isConnected());
       if (isConnected()) {
-        motion.reflect(actionDesired, processor.getEncoderTransform().getTh());
+        motion.reflect(desired, processor.getEncoderTransform().getTh());
       }
       userTasks.runAll();
     } finally {
@@ -397,34 +391,6 @@ public class ArRobot extends RobotMotion implements AutoCloseable {
     packetHandlers.add(connection::handleConfig);
     packetHandlers.add(this::handleEncoderPacket);
     packetHandlers.add(this::handleIoPacket);
-  }
-
-  private void resolveActions() {
-    actionDesired.reset();
-    ActionHandler h = actionHandler;
-    if (h != null && isConnected()) {
-      ArActionDesired d = h.resolve(this);
-      if (d != null) {
-        actionDesired.merge(d);
-      }
-    }
-  }
-
-  /** Resolves the robot's actions each cycle (set by the action machinery). */
-  interface ActionHandler {
-    /** The resolved desire for this cycle, or null for none. */
-    ArActionDesired resolve(ArRobot robot);
-  }
-
-  void setActionHandler(ActionHandler h) {
-    actionHandler = h;
-  }
-
-  /** The actions' resolved desire of the last cycle (a copy). */
-  public ArActionDesired getActionDesired() {
-    ArActionDesired copy = new ArActionDesired();
-    copy.copyFrom(actionDesired);
-    return copy;
   }
 
   /** Adds a packet handler at the end of the list (after the robot's own handlers). */
@@ -545,121 +511,6 @@ public class ArRobot extends RobotMotion implements AutoCloseable {
   /** Real time the last cycle's tasks took, ns. */
   public long getLastCycleNanos() {
     return lastCycleNanos;
-  }
-
-  // ================================================================ pose transform
-
-  /**
-   * Declares that the robot is at {@code pose} now (ARIA's {@code moveTo}): odometry keeps
-   * counting, but {@link #getPose()} and everything that uses it jump to the new pose. Range
-   * devices' buffers move along.
-   */
-  public void moveTo(ArPose pose) {
-    ArTransform before = processor.getEncoderTransform();
-    publish(processor.moveTo(pose));
-    shiftRangeDevices(processor.getEncoderTransform().compose(before.inverse()));
-  }
-
-  /**
-   * Sets the encoder→global transform so that odometry pose {@code encoderPose} corresponds to
-   * global pose {@code globalPose} (what a localizer reports for an odometry pose it used).
-   */
-  public void setEncoderTransform(ArPose encoderPose, ArPose globalPose) {
-    ArTransform before = processor.getEncoderTransform();
-    publish(processor.setEncoderTransform(encoderPose, globalPose));
-    shiftRangeDevices(processor.getEncoderTransform().compose(before.inverse()));
-  }
-
-  private void shiftRangeDevices(ArTransform change) {
-    for (org.jaria.range.ArRangeDevice d : rangeDevices) {
-      d.applyTransform(change);
-    }
-  }
-
-  /** The transform from odometry coordinates to global coordinates. */
-  public ArTransform getEncoderTransform() {
-    return processor.getEncoderTransform();
-  }
-
-  /** The transform from the robot's local frame to global coordinates (at the current pose). */
-  public ArTransform getToGlobalTransform() {
-    return ArTransform.ofPose(getPose());
-  }
-
-  /** The transform from global coordinates to the robot's local frame. */
-  public ArTransform getToLocalTransform() {
-    return getToGlobalTransform().inverse();
-  }
-
-  // ================================================================ range devices
-
-  /** Adds a range device (sonar, bumpers, laser ...) and tells it its robot. */
-  public void addRangeDevice(org.jaria.range.ArRangeDevice device) {
-    device.setRobot(this);
-    rangeDevices.addIfAbsent(device);
-  }
-
-  /** Removes a range device. */
-  public void remRangeDevice(org.jaria.range.ArRangeDevice device) {
-    rangeDevices.remove(device);
-  }
-
-  /** The range device called {@code deviceName}, or null. */
-  public org.jaria.range.ArRangeDevice findRangeDevice(String deviceName) {
-    for (org.jaria.range.ArRangeDevice d : rangeDevices) {
-      if (d.getName().equals(deviceName)) {
-        return d;
-      }
-    }
-    return null;
-  }
-
-  /** The range devices added to this robot. */
-  public List<org.jaria.range.ArRangeDevice> getRangeDeviceList() {
-    return List.copyOf(rangeDevices);
-  }
-
-  /**
-   * The closest current reading of any range device in the sector from {@code startAngle}
-   * counter-clockwise to {@code endAngle} (degrees, 0 ahead), in mm from the robot's centre; a
-   * value of at least the devices' maximum range means nothing was seen.
-   */
-  public double checkRangeDevicesCurrentPolar(double startAngle, double endAngle) {
-    double best = Double.MAX_VALUE;
-    for (org.jaria.range.ArRangeDevice d : rangeDevices) {
-      best = Math.min(best, d.currentReadingPolar(startAngle, endAngle));
-    }
-    return best;
-  }
-
-  /** As {@link #checkRangeDevicesCurrentPolar}, over the cumulative buffers. */
-  public double checkRangeDevicesCumulativePolar(double startAngle, double endAngle) {
-    double best = Double.MAX_VALUE;
-    for (org.jaria.range.ArRangeDevice d : rangeDevices) {
-      best = Math.min(best, d.cumulativeReadingPolar(startAngle, endAngle));
-    }
-    return best;
-  }
-
-  /**
-   * The closest current reading of any range device inside the box with corners (x1, y1), (x2,
-   * y2) in the robot's frame (x forward, y left, mm); a very large value if none.
-   */
-  public double checkRangeDevicesCurrentBox(double x1, double y1, double x2, double y2) {
-    double best = Double.MAX_VALUE;
-    for (org.jaria.range.ArRangeDevice d : rangeDevices) {
-      best = Math.min(best, d.currentReadingBox(x1, y1, x2, y2));
-    }
-    return best;
-  }
-
-  /** As {@link #checkRangeDevicesCurrentBox}, over the cumulative buffers. */
-  public double checkRangeDevicesCumulativeBox(double x1, double y1, double x2, double y2) {
-    double best = Double.MAX_VALUE;
-    for (org.jaria.range.ArRangeDevice d : rangeDevices) {
-      best = Math.min(best, d.cumulativeReadingBox(x1, y1, x2, y2));
-    }
-    return best;
   }
 
   // ================================================================ shutdown

@@ -95,6 +95,8 @@ final class MotionReflector {
   private boolean lastActionRotStopped;
   private boolean lastActionRotHeading;
   private boolean actionRotSet;
+  private boolean transWasDirect;
+  private boolean rotWasDirect;
   private boolean tryingToMove;
 
   private double moveDoneDist = 40;
@@ -410,15 +412,22 @@ final class MotionReflector {
     RobotStatus s = status.get();
     if (doStateReflection) {
       tryingToMove = false;
+      // When control passes from motion commands back to the actions, the actions' values are
+      // sent at once even if unchanged since the actions last had control (ARIA waits for the
+      // next refresh, leaving the robot on the old command for up to half a second).
       if (hasPrecedence(transType != TransType.NONE, transSetTime, now)) {
         reflectDirectTrans(now, s);
+        transWasDirect = true;
       } else {
         reflectActionTrans(now, desired);
+        transWasDirect = false;
       }
       if (hasPrecedence(rotType != RotType.NONE, rotSetTime, now)) {
         reflectDirectRot(now, s, encoderTransformTh);
+        rotWasDirect = true;
       } else {
         reflectActionRot(now, s, desired, encoderTransformTh);
+        rotWasDirect = false;
       }
     }
     if (now - lastRotSent > refreshNanos
@@ -550,7 +559,8 @@ final class MotionReflector {
     }
     tryingToMove |= Math.abs(val) > 0;
     val = Math.max(clampShort(maxNeg), Math.min(clampShort(maxVel), val));
-    if (actionTransSet && (now - lastTransSent >= refreshNanos || val != lastActionTransVal)) {
+    if (actionTransSet
+        && (now - lastTransSent >= refreshNanos || val != lastActionTransVal || transWasDirect)) {
       sender.comInt(ArCommands.VEL.getNumber(), val);
       lastTransSent = now;
     }
@@ -637,6 +647,7 @@ final class MotionReflector {
     }
     if (actionRotSet
         && (now - lastRotSent > refreshNanos
+            || rotWasDirect
             || stopped != lastActionRotStopped
             || val != lastActionRotVal
             || heading != lastActionRotHeading)) {

@@ -29,21 +29,32 @@ public final class LockstepRig {
   private long sinceSip;
   private long sinceLoop;
 
+  /** A rig whose robot does state reflection (the normal case). */
   public LockstepRig() {
+    this(true);
+  }
+
+  /** A rig whose robot reflects state or sends motion commands once, as ARIA's flag says. */
+  public LockstepRig(boolean doStateReflection) {
     try {
       pipe.b().open();
     } catch (IOException e) {
       throw new UncheckedIOException(e);
     }
     fake = new FakeRobot(pipe.b(), clock);
-    robot = new ArRobot("rig", clock, true);
+    robot = new ArRobot("rig", clock, doStateReflection);
     robot.setDeviceConnection(pipe.a());
   }
 
-  /** Runs {@code ms} of virtual time. */
+  /** Runs {@code ms} of virtual time; everything the robot sent has been read at the end. */
   public void run(long ms) {
     for (long t = 0; t < ms; t += TICK_MS) {
       tick();
+    }
+    try {
+      fake.pump();
+    } catch (IOException e) {
+      // the client closed its end
     }
   }
 
