@@ -3,13 +3,13 @@ package org.jaria.action;
 import org.jaria.robot.ArRobot;
 
 /**
- * A behaviour: once per cycle the robot asks every active action what it wants ({@link #fire}),
- * and the resolver combines the answers by priority (ARIA's {@code ArAction}).
+ * A behaviour: once per cycle the robot asks every active action what it wants ({@link #fire}), and
+ * the resolver combines the answers by priority (ARIA's {@code ArAction}).
  *
  * <p>To write one, extend this class and implement {@code fire}: look at the robot (its pose,
- * speeds, range devices), fill in this action's {@link ArActionDesired} — only the channels it cares
- * about — and return it; return {@code null} to want nothing this cycle. {@code fire} runs on the
- * robot's cycle thread with the robot locked, so it may read the robot freely but must return
+ * speeds, range devices), fill in this action's {@link ArActionDesired} — only the channels it
+ * cares about — and return it; return {@code null} to want nothing this cycle. {@code fire} runs on
+ * the robot's cycle thread with the robot locked, so it may read the robot freely but must return
  * quickly.
  *
  * <pre>{@code

@@ -10,8 +10,8 @@ import org.slf4j.LoggerFactory;
  * <p>Each kind of command is a separate channel with its own strength from 0 to 1: translational
  * velocity, change of heading (or an absolute heading, turned into a change when the resolver
  * runs), rotational velocity, and the limits — maximum forward and backward speeds, maximum
- * rotational speed (overall and per direction), and accelerations and decelerations. An action
- * sets only the channels it cares about; the resolver combines the desires of all actions.
+ * rotational speed (overall and per direction), and accelerations and decelerations. An action sets
+ * only the channels it cares about; the resolver combines the desires of all actions.
  *
  * <p>Heading and rotational velocity are alternatives: if a delta heading is set, a rotational
  * velocity is ignored, and the other way round. Lateral channels of omnidirectional robots are not
@@ -45,8 +45,18 @@ public class ArActionDesired {
 
   /** Every channel: the three motion channels first, then the limits (merged uniformly). */
   private final ArActionDesiredChannel[] all = {
-    vel, rotVel, deltaHeading, maxVel, maxNegVel, transAccel, transDecel,
-    maxRotVel, maxRotVelPos, maxRotVelNeg, rotAccel, rotDecel
+    vel,
+    rotVel,
+    deltaHeading,
+    maxVel,
+    maxNegVel,
+    transAccel,
+    transDecel,
+    maxRotVel,
+    maxRotVelPos,
+    maxRotVelNeg,
+    rotAccel,
+    rotDecel
   };
 
   private static final int FIRST_LIMIT = 3;

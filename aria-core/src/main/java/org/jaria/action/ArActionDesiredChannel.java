@@ -27,8 +27,8 @@ public final class ArActionDesiredChannel {
   private double strengthTotal;
 
   /**
-   * A channel; {@code overrideDoesLessThan} says whether "most restrictive" means smallest
-   * (speeds, accelerations) or largest (decelerations, the backwards limit).
+   * A channel; {@code overrideDoesLessThan} says whether "most restrictive" means smallest (speeds,
+   * accelerations) or largest (decelerations, the backwards limit).
    */
   ArActionDesiredChannel(boolean overrideDoesLessThan) {
     this.overrideDoesLessThan = overrideDoesLessThan;
@@ -158,6 +158,8 @@ public final class ArActionDesiredChannel {
 
   @Override
   public String toString() {
-    return strength < MIN_STRENGTH ? "-" : String.format(java.util.Locale.ROOT, "%.1f@%.2f", desired, strength);
+    return strength < MIN_STRENGTH
+        ? "-"
+        : String.format(java.util.Locale.ROOT, "%.1f@%.2f", desired, strength);
   }
 }

@@ -15,9 +15,9 @@ import org.jaria.protocol.packets.Tcm2Packet;
 
 /**
  * Describes ARCOS packets in words, for protocol debugging ({@code ./jaria packets}). The same
- * bytes mean different things in the two directions (ID 32 is VEL2 from a client but CONFIGpac
- * from a robot), so the caller says which way a packet went, or lets {@link Direction#AUTO} guess
- * from the ID and length.
+ * bytes mean different things in the two directions (ID 32 is VEL2 from a client but CONFIGpac from
+ * a robot), so the caller says which way a packet went, or lets {@link Direction#AUTO} guess from
+ * the ID and length.
  */
 public final class PacketFormatter {
 
@@ -74,7 +74,9 @@ public final class PacketFormatter {
         printable &= b >= 32 && b < 127;
       }
       if (printable) {
-        sb.append('"').append(new String(data, java.nio.charset.StandardCharsets.ISO_8859_1)).append('"');
+        sb.append('"')
+            .append(new String(data, java.nio.charset.StandardCharsets.ISO_8859_1))
+            .append('"');
       } else {
         sb.append(Hex.format(data));
       }
@@ -101,14 +103,28 @@ public final class PacketFormatter {
         return "SIP (malformed: too short)";
       }
       StringBuilder sb = new StringBuilder();
-      sb.append(String.format(Locale.ROOT,
-          "SIP %s x=%d y=%d th=%d lvel=%d rvel=%d batt=%.1fV stall=0x%04X control=%d flags=0x%04X"
-              + " compass=%d sonar=%d",
-          s.isMoving() ? "moving" : "stopped", s.getXPos(), s.getYPos(), s.getThPos(),
-          s.getLeftVel(), s.getRightVel(), s.getBattery() / 10.0, s.getStallAndBumpers(),
-          s.getControl(), s.getFlags(), s.getCompass(), s.getSonarCount()));
+      sb.append(
+          String.format(
+              Locale.ROOT,
+              "SIP %s x=%d y=%d th=%d lvel=%d rvel=%d batt=%.1fV stall=0x%04X control=%d flags=0x%04X"
+                  + " compass=%d sonar=%d",
+              s.isMoving() ? "moving" : "stopped",
+              s.getXPos(),
+              s.getYPos(),
+              s.getThPos(),
+              s.getLeftVel(),
+              s.getRightVel(),
+              s.getBattery() / 10.0,
+              s.getStallAndBumpers(),
+              s.getControl(),
+              s.getFlags(),
+              s.getCompass(),
+              s.getSonarCount()));
       for (int i = 0; i < s.getSonarCount(); i++) {
-        sb.append(i == 0 ? " [" : " ").append(s.getSonarNumber(i)).append(':').append(s.getSonarRange(i));
+        sb.append(i == 0 ? " [" : " ")
+            .append(s.getSonarNumber(i))
+            .append(':')
+            .append(s.getSonarRange(i));
         if (i == s.getSonarCount() - 1) {
           sb.append(']');
         }
@@ -118,18 +134,19 @@ public final class PacketFormatter {
       }
       return sb.toString();
     }
-    Object decoded = switch (id) {
-      case PacketIds.CONFIG -> ArConfigPacket.decode(p);
-      case PacketIds.ENCODER -> EncoderPacket.decode(p);
-      case PacketIds.IO -> IoPacket.decode(p);
-      case PacketIds.JOYSTICK -> JoystickPacket.decode(p);
-      case PacketIds.GRIPPER -> GripperPacket.decode(p);
-      case PacketIds.GYRO -> GyroPacket.decode(p);
-      case PacketIds.TCM2 -> Tcm2Packet.decode(p);
-      case PacketIds.SERAUX1, PacketIds.SERAUX2, PacketIds.SERAUX3 -> SerAuxPacket.decode(p);
-      case PacketIds.SIMSTAT -> SimStatPacket.decode(p);
-      default -> null;
-    };
+    Object decoded =
+        switch (id) {
+          case PacketIds.CONFIG -> ArConfigPacket.decode(p);
+          case PacketIds.ENCODER -> EncoderPacket.decode(p);
+          case PacketIds.IO -> IoPacket.decode(p);
+          case PacketIds.JOYSTICK -> JoystickPacket.decode(p);
+          case PacketIds.GRIPPER -> GripperPacket.decode(p);
+          case PacketIds.GYRO -> GyroPacket.decode(p);
+          case PacketIds.TCM2 -> Tcm2Packet.decode(p);
+          case PacketIds.SERAUX1, PacketIds.SERAUX2, PacketIds.SERAUX3 -> SerAuxPacket.decode(p);
+          case PacketIds.SIMSTAT -> SimStatPacket.decode(p);
+          default -> null;
+        };
     if (decoded != null) {
       return decoded.toString();
     }
@@ -138,8 +155,13 @@ public final class PacketFormatter {
     }
     if (id == 2) {
       p.resetRead();
-      return "SYNC2 echo name=\"" + p.bufToString() + "\" type=\"" + p.bufToString()
-          + "\" subtype=\"" + p.bufToString() + "\"";
+      return "SYNC2 echo name=\""
+          + p.bufToString()
+          + "\" type=\""
+          + p.bufToString()
+          + "\" subtype=\""
+          + p.bufToString()
+          + "\"";
     }
     byte[] rest = new byte[p.getDataLength()];
     p.resetRead();

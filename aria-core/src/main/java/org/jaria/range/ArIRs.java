@@ -41,8 +41,7 @@ public class ArIRs extends ArRangeDevice {
     }
     ArRobotParams p = r.getRobotParams();
     long now = r.getClock().nanoTime();
-    int bits =
-        p.haveNewTableSensingIR() && r.getIODigInSize() > 3 ? r.getIODigIn(3) : r.getDigIn();
+    int bits = p.haveNewTableSensingIR() && r.getIODigInSize() > 3 ? r.getIODigIn(3) : r.getDigIn();
     ArTransform toGlobal = r.getToGlobalTransform();
     synchronized (this) {
       currentBuffer.removeIf((x, y, t) -> now - t > keepNanos);

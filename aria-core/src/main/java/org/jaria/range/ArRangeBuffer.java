@@ -158,7 +158,8 @@ public final class ArRangeBuffer {
       double dx = xs[i] - robot.x();
       double dy = ys[i] - robot.y();
       double angle = ArMath.subAngle(Math.toDegrees(Math.atan2(dy, dx)), robot.th());
-      boolean inside = start < end ? angle >= start && angle <= end : angle >= start || angle <= end;
+      boolean inside =
+          start < end ? angle >= start && angle <= end : angle >= start || angle <= end;
       if (!inside) {
         continue;
       }
@@ -171,8 +172,8 @@ public final class ArRangeBuffer {
   }
 
   /**
-   * The point closest to the robot among those inside the box with corners (x1, y1) and (x2, y2)
-   * in the robot's frame (x forward, y left); null if none.
+   * The point closest to the robot among those inside the box with corners (x1, y1) and (x2, y2) in
+   * the robot's frame (x forward, y left); null if none.
    */
   public Closest getClosestBox(double x1, double y1, double x2, double y2, ArPose robot) {
     double minX = Math.min(x1, x2);

@@ -12,17 +12,20 @@ import org.jaria.robot.ArRobot;
  * has seen recently, for obstacles that have moved out of view, such as beside the robot).
  *
  * <p>Queries answer "how far is the closest obstacle in this sector / box around the robot?". A
- * result of at least {@link #getMaxRange()} means nothing was seen there. Buffers are updated on the
- * robot's cycle thread and may be queried from any thread.
+ * result of at least {@link #getMaxRange()} means nothing was seen there. Buffers are updated on
+ * the robot's cycle thread and may be queried from any thread.
  */
 public abstract class ArRangeDevice {
 
   private final String name;
   private volatile double maxRange;
+
   /** What the device sees now. Guarded by {@code this}. */
   protected final ArRangeBuffer currentBuffer;
+
   /** What the device has seen recently. Guarded by {@code this}. */
   protected final ArRangeBuffer cumulativeBuffer;
+
   /** The robot the device belongs to, once added with {@link ArRobot#addRangeDevice}. */
   protected volatile ArRobot robot;
 
@@ -57,8 +60,8 @@ public abstract class ArRangeDevice {
   }
 
   /**
-   * Called by {@link ArRobot#addRangeDevice}; subclasses register the task that reads their
-   * sensor here (call {@code super.setRobot}).
+   * Called by {@link ArRobot#addRangeDevice}; subclasses register the task that reads their sensor
+   * here (call {@code super.setRobot}).
    */
   public void setRobot(ArRobot r) {
     robot = r;

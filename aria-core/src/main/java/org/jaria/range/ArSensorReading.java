@@ -4,9 +4,9 @@ import org.jaria.geom.ArPose;
 import org.jaria.geom.ArTransform;
 
 /**
- * One reading of one range sensor (a sonar transducer), with where the sensor sits on the robot
- * and where the robot was when the reading arrived (ARIA's {@code ArSensorReading}). Immutable: a
- * new reading replaces the old one.
+ * One reading of one range sensor (a sonar transducer), with where the sensor sits on the robot and
+ * where the robot was when the reading arrived (ARIA's {@code ArSensorReading}). Immutable: a new
+ * reading replaces the old one.
  *
  * @param range distance from the sensor to what it saw, mm; −1 if the sensor never reported
  * @param x global x of the point seen, mm
@@ -38,8 +38,8 @@ public record ArSensorReading(
   }
 
   /**
-   * A new reading of this sensor: the point seen is placed in global coordinates using the
-   * robot's pose.
+   * A new reading of this sensor: the point seen is placed in global coordinates using the robot's
+   * pose.
    */
   public ArSensorReading newData(
       int newRange, ArPose robotPose, ArPose encoderPose, long counter, long timeNanos) {

@@ -52,8 +52,7 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
   final ReentrantLock robotLock = new ReentrantLock();
   final TaskList sensorInterpTasks = new TaskList("sensor interpretation");
   final TaskList userTasks = new TaskList("user");
-  private final CopyOnWriteArrayList<ArPacketHandler> packetHandlers =
-      new CopyOnWriteArrayList<>();
+  private final CopyOnWriteArrayList<ArPacketHandler> packetHandlers = new CopyOnWriteArrayList<>();
   final Callbacks connectCBs = new Callbacks("connect");
   final Callbacks failedConnectCBs = new Callbacks("failed connect");
   final Callbacks disconnectNormallyCBs = new Callbacks("disconnect normally");
@@ -516,8 +515,8 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
   // ================================================================ shutdown
 
   /**
-   * Disconnects (sending CLOSE), stops the cycle and waits for its thread to end. Safe to call
-   * more than once.
+   * Disconnects (sending CLOSE), stops the cycle and waits for its thread to end. Safe to call more
+   * than once.
    */
   @Override
   public void close() {

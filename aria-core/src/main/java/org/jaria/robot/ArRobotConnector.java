@@ -10,10 +10,10 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Connects an {@link ArRobot} the way ARIA's programs do (ARIA's {@code ArRobotConnector} /
- * {@code ArSimpleConnector}): from command-line options, trying a simulator on this computer first
- * and the robot's serial port second, so the same program runs against the simulator on a laptop
- * and on the robot's own computer unchanged.
+ * Connects an {@link ArRobot} the way ARIA's programs do (ARIA's {@code ArRobotConnector} / {@code
+ * ArSimpleConnector}): from command-line options, trying a simulator on this computer first and the
+ * robot's serial port second, so the same program runs against the simulator on a laptop and on the
+ * robot's own computer unchanged.
  *
  * <p>Options: {@code -robotPort|-rp PORT} serial port (default {@code /dev/ttyS0}, COM1 on
  * Windows); {@code -robotBaud|-rb BAUD} (default 9600); {@code -remoteHost|-rh HOST} connect by TCP
@@ -54,8 +54,7 @@ public class ArRobotConnector {
       if (host != null) {
         remoteHost = host;
       }
-      remotePort =
-          parser.checkParameterArgumentInteger(remotePort, "-remoteRobotTcpPort", "-rrtp");
+      remotePort = parser.checkParameterArgumentInteger(remotePort, "-remoteRobotTcpPort", "-rrtp");
       parser.checkArgument("-remoteIsSim", "-ris");
       parser.checkHelp();
       parsed = true;

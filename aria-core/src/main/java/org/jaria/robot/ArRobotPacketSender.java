@@ -15,8 +15,8 @@ import org.slf4j.LoggerFactory;
  * ArRobotPacketSender}). Safe to call from any thread: one command is written at a time, whole.
  *
  * <p>Each method returns whether the command went out; it does not go out when there is no open
- * connection or the write fails (the failure is logged, and the robot notices the broken
- * connection on its next read).
+ * connection or the write fails (the failure is logged, and the robot notices the broken connection
+ * on its next read).
  */
 public final class ArRobotPacketSender {
 

@@ -250,7 +250,10 @@ final class Handshake {
         return;
       }
       if (code < 0) {
-        log.warn("SwitchToBaudRate {} is not a Pioneer baud rate; staying at {}", baud, serial.getBaud());
+        log.warn(
+            "SwitchToBaudRate {} is not a Pioneer baud rate; staying at {}",
+            baud,
+            serial.getBaud());
       }
     }
     state = State.DONE;

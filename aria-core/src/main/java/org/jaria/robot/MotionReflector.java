@@ -398,7 +398,8 @@ final class MotionReflector {
   }
 
   private boolean hasPrecedence(boolean set, long setTime, long now) {
-    return set && (precedenceMs == 0 || now - setTime < TimeUnit.MILLISECONDS.toNanos(precedenceMs));
+    return set
+        && (precedenceMs == 0 || now - setTime < TimeUnit.MILLISECONDS.toNanos(precedenceMs));
   }
 
   // ---------------------------------------------------------------- the cycle's reflection
@@ -593,32 +594,24 @@ final class MotionReflector {
 
   private void reflectActionRot(
       long now, RobotStatus s, ArActionDesired d, double encoderTransformTh) {
+    double accel =
+        d.getRotAccelStrength() >= ArActionDesired.MIN_STRENGTH
+            ? Math.round(d.getRotAccel())
+            : rotAccel;
+    double decel =
+        d.getRotDecelStrength() >= ArActionDesired.MIN_STRENGTH
+            ? Math.round(d.getRotDecel())
+            : rotDecel;
+    double velMax = rotVelMax;
     if (d.getMaxRotVelStrength() >= ArActionDesired.MIN_STRENGTH) {
-      double max = Math.round(Math.min(d.getMaxRotVel(), absMaxRotVel));
-      if (Math.abs(lastSentRotVelMax - max) >= 1) {
-        lastSentRotVelMax = max;
-        sender.comInt(ArCommands.SETRV.getNumber(), clampShort(max));
+      // An action's limit is sent even when the robot's own maxima are not settable.
+      velMax = Math.round(Math.min(d.getMaxRotVel(), absMaxRotVel));
+      if (Math.abs(lastSentRotVelMax - velMax) >= 1) {
+        lastSentRotVelMax = velMax;
+        sender.comInt(ArCommands.SETRV.getNumber(), clampShort(velMax));
       }
-      double accel =
-          d.getRotAccelStrength() >= ArActionDesired.MIN_STRENGTH
-              ? Math.round(d.getRotAccel())
-              : rotAccel;
-      double decel =
-          d.getRotDecelStrength() >= ArActionDesired.MIN_STRENGTH
-              ? Math.round(d.getRotDecel())
-              : rotDecel;
-      sendRotLimits(max, accel, decel);
-    } else {
-      double accel =
-          d.getRotAccelStrength() >= ArActionDesired.MIN_STRENGTH
-              ? Math.round(d.getRotAccel())
-              : rotAccel;
-      double decel =
-          d.getRotDecelStrength() >= ArActionDesired.MIN_STRENGTH
-              ? Math.round(d.getRotDecel())
-              : rotDecel;
-      sendRotLimits(rotVelMax, accel, decel);
     }
+    sendRotLimits(velMax, accel, decel);
     boolean stopped;
     boolean heading;
     int val;
@@ -671,13 +664,13 @@ final class MotionReflector {
    */
   private static int robotHeading(double globalHeading, RobotStatus s, double encoderTransformTh) {
     double encTh = ArMath.subAngle(globalHeading, encoderTransformTh);
-    double rawTh = ArMath.addAngle(encTh, ArMath.subAngle(s.rawEncoderPose().th(), s.encoderPose().th()));
+    double rawTh =
+        ArMath.addAngle(encTh, ArMath.subAngle(s.rawEncoderPose().th(), s.encoderPose().th()));
     return (int) Math.round(rawTh);
   }
 
   private int robotHeading(double globalHeading, RobotStatus s) {
-    return robotHeading(
-        globalHeading, s, ArMath.subAngle(s.pose().th(), s.encoderPose().th()));
+    return robotHeading(globalHeading, s, ArMath.subAngle(s.pose().th(), s.encoderPose().th()));
   }
 
   private int vel2Byte(double v) {

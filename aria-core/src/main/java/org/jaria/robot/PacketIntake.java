@@ -12,9 +12,9 @@ import org.jaria.protocol.DropReason;
 import org.jaria.protocol.packets.PacketIds;
 
 /**
- * Reads bytes from the robot's connection and queues the packets they form, without allocating:
- * the queue is a ring of preallocated packets. Used only by the thread that runs the robot's cycle
- * (or connects it), so it needs no locking.
+ * Reads bytes from the robot's connection and queues the packets they form, without allocating: the
+ * queue is a ring of preallocated packets. Used only by the thread that runs the robot's cycle (or
+ * connects it), so it needs no locking.
  *
  * <p>If the program falls so far behind that the ring fills, the oldest packet is dropped and
  * counted ({@link DropReason#OVERFLOW}): fresh data is worth more than stale data to a robot.
@@ -75,8 +75,8 @@ final class PacketIntake {
   }
 
   /**
-   * Takes the oldest queued packet, or null. The packet stays valid until the queue wraps around
-   * to it again (more than 200 packets later), so use it before reading again.
+   * Takes the oldest queued packet, or null. The packet stays valid until the queue wraps around to
+   * it again (more than 200 packets later), so use it before reading again.
    */
   ArRobotPacket poll() {
     if (size == 0) {

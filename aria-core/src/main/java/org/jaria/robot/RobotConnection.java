@@ -106,8 +106,7 @@ final class RobotConnection implements Handshake.Host {
     robot.resetState();
     robot.motion.reset();
     connectDone = new CountDownLatch(1);
-    handshake =
-        new Handshake(robot.sender, robot.intake, this, Math.max(1, robot.getCycleTime()));
+    handshake = new Handshake(robot.sender, robot.intake, this, Math.max(1, robot.getCycleTime()));
     return true;
   }
 

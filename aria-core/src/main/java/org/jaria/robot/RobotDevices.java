@@ -126,8 +126,8 @@ public abstract class RobotDevices extends RobotMotion {
   }
 
   /**
-   * The closest current reading of any range device inside the box with corners (x1, y1), (x2,
-   * y2) in the robot's frame (x forward, y left, mm); a very large value if none.
+   * The closest current reading of any range device inside the box with corners (x1, y1), (x2, y2)
+   * in the robot's frame (x forward, y left, mm); a very large value if none.
    */
   public double checkRangeDevicesCurrentBox(double x1, double y1, double x2, double y2) {
     double best = Double.MAX_VALUE;
@@ -157,8 +157,7 @@ public abstract class RobotDevices extends RobotMotion {
       actions.removeIf(p -> p.action() == action);
       List<ArResolver.PrioritizedAction> copy = new ArrayList<>(actions);
       copy.add(new ArResolver.PrioritizedAction(priority, action));
-      copy.sort(
-          Comparator.comparingInt(ArResolver.PrioritizedAction::priority).reversed());
+      copy.sort(Comparator.comparingInt(ArResolver.PrioritizedAction::priority).reversed());
       actions.clear();
       actions.addAll(copy);
     }

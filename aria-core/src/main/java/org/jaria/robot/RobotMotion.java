@@ -113,8 +113,8 @@ public abstract class RobotMotion extends RobotState {
   }
 
   /**
-   * How long a motion command keeps precedence over actions, ms; 0 (the default) means until
-   * {@link #clearDirectMotion()}.
+   * How long a motion command keeps precedence over actions, ms; 0 (the default) means until {@link
+   * #clearDirectMotion()}.
    */
   public void setDirectMotionPrecedenceTime(long ms) {
     motion.setDirectMotionPrecedenceTime(ms);

@@ -14,11 +14,11 @@ import org.jaria.protocol.packets.StandardSip;
 import org.jaria.range.ArSensorReading;
 
 /**
- * The robot's reflected state: what the last SIP said, converted to millimetres, degrees and
- * volts (ARIA's state reflection getters). Part of {@link ArRobot}'s API; use it through ArRobot.
+ * The robot's reflected state: what the last SIP said, converted to millimetres, degrees and volts
+ * (ARIA's state reflection getters). Part of {@link ArRobot}'s API; use it through ArRobot.
  *
- * <p>Every getter reads the latest published {@link RobotStatus} and may be called from any
- * thread. To read several values from one and the same SIP, take {@link #getStatus()} once.
+ * <p>Every getter reads the latest published {@link RobotStatus} and may be called from any thread.
+ * To read several values from one and the same SIP, take {@link #getStatus()} once.
  */
 public abstract class RobotState {
 
@@ -334,8 +334,8 @@ public abstract class RobotState {
   }
 
   /**
-   * The number of the sonar with the shortest range among those facing between {@code
-   * startAngle} and {@code endAngle} (counter-clockwise, degrees); −1 if none faces there.
+   * The number of the sonar with the shortest range among those facing between {@code startAngle}
+   * and {@code endAngle} (counter-clockwise, degrees); −1 if none faces there.
    */
   public int getClosestSonarNumber(double startAngle, double endAngle) {
     List<ArSensorReading> s = status.sonars();
@@ -343,7 +343,10 @@ public abstract class RobotState {
     int bestRange = 0;
     for (int i = 0; i < s.size(); i++) {
       ArSensorReading r = s.get(i);
-      if (angleBetween(r.sensorTh(), startAngle, endAngle) && (best < 0 || r.range() < bestRange)) {
+      // Sonars that never reported (range -1) are not "closest" (ARIA would pick them).
+      if (r.range() >= 0
+          && angleBetween(r.sensorTh(), startAngle, endAngle)
+          && (best < 0 || r.range() < bestRange)) {
         best = i;
         bestRange = r.range();
       }
@@ -357,7 +360,9 @@ public abstract class RobotState {
     return n < 0 ? -1 : getSonarRange(n);
   }
 
-  /** Whether {@code angle} lies in the sector from {@code start} counter-clockwise to {@code end}. */
+  /**
+   * Whether {@code angle} lies in the sector from {@code start} counter-clockwise to {@code end}.
+   */
   static boolean angleBetween(double angle, double start, double end) {
     angle = ArMath.fixAngle(angle);
     start = ArMath.fixAngle(start);

@@ -73,16 +73,62 @@ public record RobotStatus(
   /** The status before any SIP: at the origin, nothing known. */
   public static RobotStatus initial(List<ArSensorReading> sonars) {
     return new RobotStatus(
-        -1, 0, ArPose.ORIGIN, ArPose.ORIGIN, ArPose.ORIGIN, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
-        0, 0, 0, -1, 0, false, 0, 0, sonars);
+        -1,
+        0,
+        ArPose.ORIGIN,
+        ArPose.ORIGIN,
+        ArPose.ORIGIN,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        -1,
+        0,
+        false,
+        0,
+        0,
+        sonars);
   }
 
   /** The same status with another global pose and sonar readings (after a relocalization). */
   RobotStatus withPoseAndSonars(ArPose newPose, List<ArSensorReading> newSonars) {
     return new RobotStatus(
-        counter, timeNanos, newPose, encoderPose, rawEncoderPose, vel, rotVel, leftVel,
-        rightVel, batteryVoltage, realBatteryVoltage, stallValue, control, flags, compass,
-        anPort, analog, digIn, digOut, gripState, chargeState, faultFlags, moving,
-        odometerDistance, odometerDegrees, newSonars);
+        counter,
+        timeNanos,
+        newPose,
+        encoderPose,
+        rawEncoderPose,
+        vel,
+        rotVel,
+        leftVel,
+        rightVel,
+        batteryVoltage,
+        realBatteryVoltage,
+        stallValue,
+        control,
+        flags,
+        compass,
+        anPort,
+        analog,
+        digIn,
+        digOut,
+        gripState,
+        chargeState,
+        faultFlags,
+        moving,
+        odometerDistance,
+        odometerDegrees,
+        newSonars);
   }
 }

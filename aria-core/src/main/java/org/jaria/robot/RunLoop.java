@@ -10,8 +10,8 @@ import org.slf4j.LoggerFactory;
 /**
  * Runs the robot's cycle over and over: on the caller's thread ({@link #run}) or on a thread of its
  * own ({@link #runAsync}), chained to SIP arrival (waiting at most two cycle times for one) or
- * paced by the cycle time alone. Stoppable from any thread; the thread is named after the robot
- * and joined by {@link #waitForRunExit}.
+ * paced by the cycle time alone. Stoppable from any thread; the thread is named after the robot and
+ * joined by {@link #waitForRunExit}.
  */
 final class RunLoop {
 
@@ -33,7 +33,7 @@ final class RunLoop {
     return running;
   }
 
-  void runAsync(boolean stopRunIfNotConnected) {
+  private void claim() {
     lock.lock();
     try {
       if (running) {
@@ -45,6 +45,10 @@ final class RunLoop {
     } finally {
       lock.unlock();
     }
+  }
+
+  void runAsync(boolean stopRunIfNotConnected) {
+    claim();
     Thread t = new Thread(() -> loop(stopRunIfNotConnected), "ArRobot-" + robot.getName());
     t.setDaemon(true);
     thread = t;
@@ -52,17 +56,7 @@ final class RunLoop {
   }
 
   void run(boolean stopRunIfNotConnected) {
-    lock.lock();
-    try {
-      if (running) {
-        throw new IllegalStateException(
-            robot.getName() + " is already running its cycle; call stopRunning() first");
-      }
-      running = true;
-      stopRequested = false;
-    } finally {
-      lock.unlock();
-    }
+    claim();
     loop(stopRunIfNotConnected);
   }
 

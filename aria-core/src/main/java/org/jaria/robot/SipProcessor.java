@@ -114,8 +114,7 @@ final class SipProcessor {
     if (c != null && !first) {
       dth = c.correctedDeltaTh(dx, dy, dth, nowNanos);
       // Rotate the position delta from the raw heading frame into the corrected one.
-      double rot =
-          Math.toRadians(ArMath.subAngle(encoderPose.th() + dth, rawEncoderPose.th()));
+      double rot = Math.toRadians(ArMath.subAngle(encoderPose.th() + dth, rawEncoderPose.th()));
       double cos = Math.cos(rot);
       double sin = Math.sin(rot);
       double rdx = cos * dx - sin * dy;

@@ -44,8 +44,8 @@ public final class ArArgumentParser {
   }
 
   /**
-   * Takes a flag: returns whether any of {@code names} (e.g. "-help", "-h") was given, and
-   * removes it. Names are compared without case.
+   * Takes a flag: returns whether any of {@code names} (e.g. "-help", "-h") was given, and removes
+   * it. Names are compared without case.
    */
   public boolean checkArgument(String... names) {
     boolean found = false;
@@ -59,8 +59,8 @@ public final class ArArgumentParser {
   }
 
   /**
-   * Takes an option with a value: returns the value following the last of {@code names}, or null
-   * if the option was not given. Both are removed.
+   * Takes an option with a value: returns the value following the last of {@code names}, or null if
+   * the option was not given. Both are removed.
    *
    * @throws IllegalArgumentException if the option is last, with no value after it
    */
@@ -69,8 +69,7 @@ public final class ArArgumentParser {
     for (int i = 0; i < args.size(); i++) {
       if (matches(args.get(i), names)) {
         if (i + 1 >= args.size()) {
-          throw new IllegalArgumentException(
-              "option " + args.get(i) + " needs a value after it");
+          throw new IllegalArgumentException("option " + args.get(i) + " needs a value after it");
         }
         value = args.get(i + 1);
         args.remove(i + 1);

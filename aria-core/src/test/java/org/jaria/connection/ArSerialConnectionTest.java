@@ -98,7 +98,8 @@ class ArSerialConnectionTest {
 
   @Test
   void missingPortGivesAnActionableMessage() {
-    ArSerialConnection c = new ArSerialConnection("/dev/does-not-exist-jaria", 9600, Clock.system());
+    ArSerialConnection c =
+        new ArSerialConnection("/dev/does-not-exist-jaria", 9600, Clock.system());
     IOException e = assertThrows(IOException.class, c::open);
     assertTrue(e.getMessage().contains("/dev/does-not-exist-jaria"), e.getMessage());
     assertEquals(e.getMessage(), c.getOpenMessage());

@@ -86,7 +86,8 @@ class ArRobotPacketTest {
     for (int i = 0; i < ArRobotPacket.MAX_DATA_LENGTH; i++) {
       p.uByteToBuf(i);
     }
-    IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> p.uByteToBuf(1));
+    IllegalArgumentException e =
+        assertThrows(IllegalArgumentException.class, () -> p.uByteToBuf(1));
     assertTrue(e.getMessage().contains("at most"), e.getMessage());
     assertEquals(ArRobotPacket.MAX_LENGTH, p.finalizePacket().getLength());
     assertTrue(p.verifyCheckSum());

@@ -18,8 +18,8 @@ import org.jaria.connection.ArDeviceConnection;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.connection.ArTcpConnection;
 import org.jaria.protocol.packets.StandardSip;
-import org.jaria.testing.SocatPty;
 import org.jaria.testing.FakeRobot;
+import org.jaria.testing.SocatPty;
 import org.jaria.util.ArArgumentParser;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -99,8 +99,7 @@ class ArRobotConnectorTest {
   void withoutASimulatorTheSerialPortIsUsed() throws Exception {
     AtomicBoolean stop = new AtomicBoolean();
     try (SocatPty pty = new SocatPty(dir)) {
-      ArSerialConnection robotSide =
-          new ArSerialConnection(pty.b.toString(), 9600, Clock.system());
+      ArSerialConnection robotSide = new ArSerialConnection(pty.b.toString(), 9600, Clock.system());
       robotSide.open();
       Thread server = serve(robotSide, stop);
       ArRobot robot = new ArRobot("serial");

@@ -157,11 +157,14 @@ class ArRobotCycleTest {
         robot.setDeviceConnection(
             new ArTcpConnection("127.0.0.1", server.getLocalPort(), Clock.system()));
         CountDownLatch cycled = new CountDownLatch(3);
-        robot.addUserTask("count", 1, () -> {
-          if (robot.isConnected()) {
-            cycled.countDown();
-          }
-        });
+        robot.addUserTask(
+            "count",
+            1,
+            () -> {
+              if (robot.isConnected()) {
+                cycled.countDown();
+              }
+            });
         if (connectFirst) {
           assertTrue(robot.blockingConnect(), robot.getConnectFailure());
           robot.runAsync(true);
@@ -179,8 +182,7 @@ class ArRobotCycleTest {
     Set<String> after = threadNames();
     after.removeAll(before);
     assertEquals(
-        Set.of(),
-        after.stream().filter(n -> n.startsWith("ArRobot-")).collect(Collectors.toSet()));
+        Set.of(), after.stream().filter(n -> n.startsWith("ArRobot-")).collect(Collectors.toSet()));
   }
 
   private static Set<String> threadNames() {

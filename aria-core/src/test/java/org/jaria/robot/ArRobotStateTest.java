@@ -39,12 +39,14 @@ class ArRobotStateTest {
 
   @Test
   void headingUsesTheAngleConversionFactor() {
-    rig.sip.setPos(0, 0, 1024); // a quarter turn at 2*pi/4096 per unit
+    double factor = rig.robot.getRobotParams().getAngleConvFactor();
+    rig.sip.setPos(0, 0, 1024); // about a quarter turn at 2*pi/4096 per unit
     rig.run(100);
-    assertEquals(90, rig.robot.getTh(), 0.2);
+    assertEquals(Math.toDegrees(1024 * factor), rig.robot.getTh(), 1e-9);
+    assertEquals(90, rig.robot.getTh(), 0.5);
     rig.sip.setPos(0, 0, -2048);
     rig.run(100);
-    assertEquals(180, Math.abs(rig.robot.getTh()), 0.2);
+    assertEquals(180, Math.abs(rig.robot.getTh()), 0.5);
   }
 
   @Test

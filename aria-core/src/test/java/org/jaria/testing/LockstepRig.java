@@ -21,6 +21,7 @@ public final class LockstepRig {
   public final PipeConnection.Pair pipe = PipeConnection.pair(clock, "rig");
   public final FakeRobot fake;
   public final ArRobot robot;
+
   /** The SIP the fake robot sends every {@link #sipPeriodMs} while open; tests edit it. */
   public final StandardSip sip = new StandardSip();
 

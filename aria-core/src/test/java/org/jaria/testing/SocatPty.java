@@ -25,10 +25,7 @@ public final class SocatPty implements AutoCloseable {
     a = dir.resolve("ttyA");
     b = dir.resolve("ttyB");
     process =
-        new ProcessBuilder(
-                "socat",
-                "pty,raw,echo=0,link=" + a,
-                "pty,raw,echo=0,link=" + b)
+        new ProcessBuilder("socat", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b)
             .redirectErrorStream(true)
             .redirectOutput(dir.resolve("socat.log").toFile())
             .start();

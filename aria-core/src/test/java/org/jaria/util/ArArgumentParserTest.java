@@ -34,7 +34,8 @@ class ArArgumentParserTest {
   void badValuesSayWhichOptionIsWrong() {
     ArArgumentParser p = new ArArgumentParser(new String[] {"-rb", "fast"});
     IllegalArgumentException e =
-        assertThrows(IllegalArgumentException.class, () -> p.checkParameterArgumentInteger(1, "-rb"));
+        assertThrows(
+            IllegalArgumentException.class, () -> p.checkParameterArgumentInteger(1, "-rb"));
     assertTrue(e.getMessage().contains("-rb"));
     ArArgumentParser q = new ArArgumentParser(new String[] {"-rh"});
     assertThrows(IllegalArgumentException.class, () -> q.checkParameterArgument("-rh"));

@@ -1,0 +1,118 @@
+ConfigVersion 2.0
+; JAria robot parameter file: amigo-sh
+; AmigoBot with the SH2 controller: a small two-wheel robot, 33 x 28 cm,
+; with 8 sonars (6 in front, 2 at the rear corners). ARIA describes no IR
+; sensors and no laser for it, and neither does this file.
+; Format: "Keyword value ; comment", read by org.jaria.params.ArRobotParams.
+; To adapt it to one robot, copy it to <robot name>.p in your parameter
+; folder and change only what differs: that file is loaded last.
+
+Section General settings
+Class Pioneer            ; family of the robot
+Subclass amigo-sh        ; model name; also the name of this file
+RobotRadius 180          ; mm; radius of the circle the robot sweeps when turning
+RobotDiagonal 120        ; mm; half-height to the diagonal of the octagon
+RobotWidth 279           ; mm; overall width
+RobotLength 330          ; mm; overall length
+RobotLengthFront 160     ; mm from the turning centre to the front (0 = half length)
+RobotLengthRear 170      ; mm from the turning centre to the rear (0 = half length)
+Holonomic true           ; can turn on the spot
+MaxRVelocity 300         ; deg/s; hard limit on rotation
+MaxVelocity 1000         ; mm/s; hard limit on translation
+MaxLatVelocity 0         ; mm/s; sideways motion (none on a Pioneer)
+HasMoveCommand true      ; firmware understands MOVE
+RequestIOPackets false   ; ask for IO packets right after connecting
+RequestEncoderPackets false ; ask for encoder packets right after connecting
+SwitchToBaudRate 38400   ; serial speed to change to after connecting (0 = stay)
+
+Section Conversion factors
+AngleConvFactor 0.00153  ; rad per angle unit: 2 pi / 4096 = 0.0015340, kept to 5 decimals as ARIA does
+DistConvFactor 1.0       ; mm per position unit
+VelConvFactor 1.0        ; mm/s per velocity unit
+RangeConvFactor 1.0      ; mm per sonar range unit
+DiffConvFactor 0.011     ; wheel speed difference to turn rate (old firmware only)
+Vel2Divisor 20           ; VEL2 wheel speeds are in units of this many mm/s
+GyroScaler 1.626         ; scale of the gyro rate readings
+
+Section Accessories the robot has
+TableSensingIR false     ; upward-looking table IRs fitted
+NewTableSensingIR false  ; table IR states arrive in the IO packet
+FrontBumpers false       ; front bump ring fitted
+NumFrontBumpers 5        ; segments in the front ring
+RearBumpers false        ; rear bump ring fitted
+NumRearBumpers 5         ; segments in the rear ring
+
+Section IR parameters
+IRNum 0                  ; how many IR sensors
+
+Section Movement control parameters
+SettableVelMaxes true    ; TransVelMax / RotVelMax may be sent
+TransVelMax 0            ; mm/s; 0 keeps the value in the robot FLASH
+RotVelMax 0              ; deg/s; 0 keeps the value in the robot FLASH
+SettableAccsDecs true    ; accelerations may be sent
+TransAccel 0             ; mm/s2; 0 keeps the FLASH value
+TransDecel 0             ; mm/s2; 0 keeps the FLASH value
+RotAccel 0               ; deg/s2; 0 keeps the FLASH value
+RotDecel 0               ; deg/s2; 0 keeps the FLASH value
+HasLatVel false          ; can move sideways
+LatVelMax 0              ; mm/s
+LatAccel 0               ; mm/s2
+LatDecel 0               ; mm/s2
+
+Section GPS parameters
+GPSPX 0                  ; mm; antenna position, forward
+GPSPY 0                  ; mm; antenna position, left
+GPSType standard         ; receiver kind: standard, novatel or trimble
+GPSPort COM2             ; computer port of the receiver
+GPSBaud 9600             ; receiver speed
+
+Section Compass parameters
+CompassType robot        ; robot = TCM2 data in the SIP; serialTCM = on a computer port
+CompassPort              ; computer port, only for serialTCM
+
+Section Sonar parameters
+SonarNum 8               ; how many sonar discs
+; SonarUnit <number> <x mm> <y mm> <heading deg>, from the turning centre,
+; x forward, y left, heading counter-clockwise from straight ahead
+SonarUnit 0 70 100 90
+SonarUnit 1 125 75 41
+SonarUnit 2 144 30 15
+SonarUnit 3 144 -30 -15
+SonarUnit 4 120 -75 -41
+SonarUnit 5 70 -100 -90
+SonarUnit 6 -146 -58 -145
+SonarUnit 7 -146 58 145
+
+Section Laser parameters
+LaserAutoConnect false   ; connect to this laser at start-up
+LaserX 0                 ; mm; forward of the turning centre
+LaserY 0                 ; mm; left of the turning centre
+LaserTh 0.0              ; deg; counter-clockwise rotation of the scanner
+LaserZ 0                 ; mm above the floor (0 = unknown)
+LaserFlipped false       ; mounted upside down
+LaserType                ; scanner model
+LaserPortType            ; serial or tcp
+LaserPort                ; port name or address
+LaserPowerControlled true ; serial line controls the laser power
+LaserMaxRange 0          ; mm; 0 = the scanner's own maximum
+
+Section PTZ 1 parameters
+PTZAutoConnect false     ; connect to this pan/tilt unit at start-up
+PTZType unknown          ; camera mount model
+PTZInverted false        ; mounted upside down
+PTZSerialPort none       ; computer serial port, or none
+PTZRobotAuxSerialPort -1 ; robot AUX port (1-3), or -1
+PTZAddress none          ; network address, or none
+PTZTCPPort 80            ; HTTP port for network cameras
+
+Section Video 1 parameters
+VideoAutoConnect false   ; open this video source at start-up
+VideoType unknown        ; capture driver or camera model
+VideoInverted false      ; flip the image (camera upside down)
+VideoWidth -1            ; pixels; -1 = default
+VideoHeight -1           ; pixels; -1 = default
+VideoDeviceIndex -1      ; -1 = default
+VideoDeviceName none     ; overrides VideoDeviceIndex
+VideoChannel -1          ; input channel; -1 = default
+VideoAddress none        ; network address, or none
+VideoTCPPort 80          ; HTTP port for network cameras
