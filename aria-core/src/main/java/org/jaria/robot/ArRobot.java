@@ -349,6 +349,18 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
     }
   }
 
+  /**
+   * Reads what has arrived, without waiting, and says whether a standard SIP is among it — for
+   * programs that drive {@link #loopOnce()} themselves and want ARIA's one cycle per SIP (a
+   * simulator in lockstep does this). Call it only from the thread that runs the cycles.
+   */
+  public boolean pollForSip() {
+    if (isConnected()) {
+      connection.readAvailable(clock.nanoTime());
+    }
+    return intake.hasSip();
+  }
+
   private void keepAliveWithoutLock(long now) {
     warnRarely(
         ++lockWarnings,

@@ -180,14 +180,17 @@ public abstract class RobotState {
     return (status.stallValue() & 0x100) != 0;
   }
 
-  /** Front bumper bits (bits 1..7 of the stall word, shifted down to 0..6). */
+  /**
+   * Front bumper bits: bits 9..15 of the stall word (the right motor's byte, as ARIA reads it),
+   * shifted down so that bumper 0 — the leftmost — is bit 0.
+   */
   public int getFrontBumpers() {
-    return (status.stallValue() >> 1) & 0x7F;
+    return (status.stallValue() >> 9) & 0x7F;
   }
 
-  /** Rear bumper bits (bits 9..15 of the stall word, shifted down to 0..6). */
+  /** Rear bumper bits: bits 1..7 of the stall word, shifted down so bumper 0 is bit 0. */
   public int getRearBumpers() {
-    return (status.stallValue() >> 9) & 0x7F;
+    return (status.stallValue() >> 1) & 0x7F;
   }
 
   /** Heading setpoint relative to the current heading, degrees. */

@@ -14,7 +14,7 @@ class ArBumpersTest {
     ArBumpers bumpers = new ArBumpers();
     rig.robot.addRangeDevice(bumpers);
     assertTrue(rig.connect());
-    rig.sip.setStallAndBumpers(1 << 3); // front bumper 2, the middle one of five
+    rig.sip.setStallAndBumpers(1 << 11); // front bumper 2, the middle one of five
     rig.run(100);
     assertEquals(1, bumpers.getCurrentReadings().size());
     double d = bumpers.currentReadingPolar(-30, 30);
@@ -31,7 +31,7 @@ class ArBumpersTest {
     ArBumpers bumpers = new ArBumpers();
     rig.robot.addRangeDevice(bumpers);
     assertTrue(rig.connect());
-    rig.sip.setStallAndBumpers(1 << 11); // rear bumper 2
+    rig.sip.setStallAndBumpers(1 << 3); // rear bumper 2
     rig.run(100);
     assertTrue(bumpers.currentReadingPolar(150, -150) < 400);
     assertEquals(5000, bumpers.currentReadingPolar(-60, 60));

@@ -69,7 +69,8 @@ class ArRobotStateTest {
     assertEquals(12.8, rig.robot.getBatteryVoltage(), 1e-9);
     assertTrue(rig.robot.isLeftMotorStalled());
     assertTrue(rig.robot.isRightMotorStalled());
-    assertEquals(0x02, rig.robot.getFrontBumpers());
+    assertEquals(0x02, rig.robot.getRearBumpers());
+    assertEquals(0, rig.robot.getFrontBumpers());
     assertTrue(rig.robot.areMotorsEnabled());
     assertTrue(rig.robot.isEStopPressed());
     assertFalse(rig.robot.areSonarsEnabled());

@@ -161,7 +161,7 @@ class PacketCodecsTest {
     GyroPacket gy = new GyroPacket(new int[] {512, 600}, new int[] {30, 31});
     gy.encode(p);
     assertEquals(gy, GyroPacket.decode(p));
-    Tcm2Packet t = new Tcm2Packet(-10, 20, 100, -100, 50, 25, 0, 90, 80, -3);
+    Tcm2Packet t = new Tcm2Packet(1234, -10, 20, 100, -100, 50, 25, 0, 90, 80, -3);
     t.encode(p);
     assertEquals(t, Tcm2Packet.decode(p));
     for (int port = 1; port <= 3; port++) {

@@ -23,8 +23,8 @@ import org.jaria.testing.FakeRobot;
  * {@code jaria bench protocol}: how fast the protocol code is, on one core.
  *
  * <ul>
- *   <li>SIPs received and decoded per second (framing, checksum and field decoding of a SIP with
- *       16 sonar readings and the usual tail), and decoded alone.
+ *   <li>SIPs received and decoded per second (framing, checksum and field decoding of a SIP with 16
+ *       sonar readings and the usual tail), and decoded alone.
  *   <li>Command packets and SIPs encoded per second.
  *   <li>SIP-to-command latency over loopback TCP: a scripted robot sends a SIP whose position
  *       changes; the client's cycle (packet handlers, a sensor task that changes the velocity,
@@ -71,7 +71,9 @@ public final class ProtocolBenchmark {
     out.append(String.format(Locale.ROOT, "%-46s %13.2f M/s%n", name, perSecond / 1e6));
   }
 
-  /** One benchmark body: does {@code n} operations, returns a value so nothing is optimised away. */
+  /**
+   * One benchmark body: does {@code n} operations, returns a value so nothing is optimised away.
+   */
   private interface Body {
     long run(long n);
   }
@@ -170,8 +172,7 @@ public final class ProtocolBenchmark {
   private static long[] latency(int samples) throws Exception {
     try (ServerSocket server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
       CompletableFuture<long[]> samplesDone = new CompletableFuture<>();
-      Thread robotSide =
-          new Thread(() -> serve(server, samples, samplesDone), "bench-fake-robot");
+      Thread robotSide = new Thread(() -> serve(server, samples, samplesDone), "bench-fake-robot");
       robotSide.start();
       ArRobot robot = new ArRobot("bench");
       robot.setDeviceConnection(

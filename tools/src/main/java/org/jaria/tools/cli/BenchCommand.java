@@ -11,7 +11,7 @@ import picocli.CommandLine.Spec;
 @Command(
     name = "bench",
     description = "Run a benchmark and print its table of figures.",
-    subcommands = {BenchCommand.Protocol.class})
+    subcommands = {BenchCommand.Protocol.class, BenchCommand.Sim.class, BenchCommand.Vision.class})
 final class BenchCommand implements Runnable {
 
   @Spec CommandSpec spec;
@@ -35,6 +35,39 @@ final class BenchCommand implements Runnable {
     @Override
     public Integer call() throws Exception {
       spec.commandLine().getOut().println(ProtocolBenchmark.run(quick));
+      return 0;
+    }
+  }
+
+  /** {@code jaria bench sim}. */
+  @Command(
+      name = "sim",
+      description = "Simulator real-time factors (1, 10, 100 robots) and sonar ray-cast cost.")
+  static final class Sim implements Callable<Integer> {
+
+    @Spec CommandSpec spec;
+
+    @Override
+    public Integer call() {
+      spec.commandLine().getOut().println(org.jaria.sim.bench.SimBenchmark.run());
+      return 0;
+    }
+  }
+
+  /** {@code jaria bench vision}. */
+  @Command(
+      name = "vision",
+      description = "Blob tracking per frame at three sizes and 1/8/32 channels, against OpenCV.")
+  static final class Vision implements Callable<Integer> {
+
+    @Spec CommandSpec spec;
+
+    @Option(names = "--quick", description = "Shorter runs (less precise).")
+    boolean quick;
+
+    @Override
+    public Integer call() throws Exception {
+      spec.commandLine().getOut().println(org.jaria.acts.bench.VisionBenchmark.run(quick));
       return 0;
     }
   }

@@ -18,6 +18,8 @@ import picocli.CommandLine.Command;
     subcommands = {
       VersionCommand.class,
       PacketsCommand.class,
+      org.jaria.sim.cli.SimCommand.class,
+      org.jaria.acts.cli.ActsCommand.class,
       BenchCommand.class,
       CommandLine.HelpCommand.class
     })
@@ -43,7 +45,8 @@ public final class JariaCli implements Runnable {
   /** The project version, from the build. */
   public static String projectVersion() {
     Properties p = new Properties();
-    try (InputStream in = JariaCli.class.getResourceAsStream("/org/jaria/tools/version.properties")) {
+    try (InputStream in =
+        JariaCli.class.getResourceAsStream("/org/jaria/tools/version.properties")) {
       if (in != null) {
         p.load(in);
       }
@@ -59,7 +62,11 @@ public final class JariaCli implements Runnable {
     public String[] getVersion() {
       return new String[] {
         "JAria " + projectVersion(),
-        "Java " + System.getProperty("java.version") + " (" + System.getProperty("java.vendor") + ")",
+        "Java "
+            + System.getProperty("java.version")
+            + " ("
+            + System.getProperty("java.vendor")
+            + ")",
         "OS " + System.getProperty("os.name") + " " + System.getProperty("os.arch")
       };
     }

@@ -105,8 +105,7 @@ final class PacketsCommand implements Callable<Integer> {
     if (file == null) {
       return Hex.parse(String.join(" ", hex));
     }
-    byte[] raw =
-        "-".equals(file) ? System.in.readAllBytes() : Files.readAllBytes(Path.of(file));
+    byte[] raw = "-".equals(file) ? System.in.readAllBytes() : Files.readAllBytes(Path.of(file));
     return binary ? raw : Hex.parse(new String(raw, StandardCharsets.ISO_8859_1));
   }
 }

@@ -1,0 +1,58 @@
+package org.jaria.acts.server;
+
+import org.jaria.acts.ActsProtocol;
+
+/**
+ * How an {@link ActsServer} listens and paces itself.
+ *
+ * @param bindHost address to listen on; empty for every interface (ACTS's behaviour), {@code
+ *     "127.0.0.1"} for this machine only
+ * @param port TCP port, 0 for any free port (see {@link ActsServer#getPort()})
+ * @param maxFps most frames processed per second (ACTS's {@code -R}); 0 for no limit
+ * @param maxClients most clients connected at once; more are refused (closed at once)
+ * @param quitOnRequest whether a client's quit request ({@code '1'}) stops the whole server, as it
+ *     stops ACTS; if false it only ends that client's connection
+ */
+public record ServerSettings(
+    String bindHost, int port, int maxFps, int maxClients, boolean quitOnRequest) {
+
+  /** Every interface, port 5001, 30 frames/s, 16 clients, quit requests end only the client. */
+  public static final ServerSettings DEFAULT =
+      new ServerSettings("", ActsProtocol.DEFAULT_PORT, 30, 16, false);
+
+  /** Checks the ranges. */
+  public ServerSettings {
+    if (bindHost == null) {
+      bindHost = "";
+    }
+    if (port < 0 || port > 65535) {
+      throw new IllegalArgumentException("port must be 0..65535, got " + port);
+    }
+    if (maxFps < 0 || maxFps > 10_000) {
+      throw new IllegalArgumentException("max frames per second must be 0..10000, got " + maxFps);
+    }
+    if (maxClients < 1 || maxClients > 1024) {
+      throw new IllegalArgumentException("max clients must be 1..1024, got " + maxClients);
+    }
+  }
+
+  /** These settings with another bind address and port. */
+  public ServerSettings withAddress(String host, int p) {
+    return new ServerSettings(host, p, maxFps, maxClients, quitOnRequest);
+  }
+
+  /** These settings with another frame rate limit. */
+  public ServerSettings withMaxFps(int fps) {
+    return new ServerSettings(bindHost, port, fps, maxClients, quitOnRequest);
+  }
+
+  /** These settings with another client limit. */
+  public ServerSettings withMaxClients(int n) {
+    return new ServerSettings(bindHost, port, maxFps, n, quitOnRequest);
+  }
+
+  /** These settings with quit requests stopping (or not) the server. */
+  public ServerSettings withQuitOnRequest(boolean quit) {
+    return new ServerSettings(bindHost, port, maxFps, maxClients, quit);
+  }
+}

@@ -1,0 +1,31 @@
+package org.jaria.acts.bench;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.jaria.acts.color.ChannelBank;
+import org.junit.jupiter.api.Test;
+
+class VisionBenchmarkTest {
+
+  @Test
+  void quickRunPrintsEveryRow() throws Exception {
+    String table = VisionBenchmark.run(true);
+    for (String size : new String[] {"160x120", "320x240", "640x480"}) {
+      assertEquals(3, table.lines().filter(l -> l.startsWith(size)).count(), table);
+    }
+    assertTrue(table.contains("256x256"), table);
+    assertTrue(table.contains("ACTS server round trip on loopback"), table);
+    assertTrue(table.contains("p99"), table);
+  }
+
+  @Test
+  void benchmarkChannelsAreTrained() {
+    ChannelBank bank = VisionBenchmark.bank(32, 8);
+    assertEquals(-1, bank.activeMask(), "all 32 channels can classify");
+    for (int i = 0; i < 32; i++) {
+      int[] b = VisionBenchmark.box(i);
+      assertTrue(b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5]);
+    }
+  }
+}

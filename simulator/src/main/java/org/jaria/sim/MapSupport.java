@@ -1,0 +1,60 @@
+package org.jaria.sim;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+import org.jaria.geom.ArLineSegment;
+import org.jaria.geom.ArPose;
+import org.jaria.map.ArMap;
+import org.jaria.map.ArMapPoints;
+import org.jaria.map.MapFormatException;
+import org.jaria.sim.world.WorldMap;
+
+/**
+ * Turns ArMap documents into what the simulator needs: LINES and DATA points are solid (each point
+ * blocks a disc of half the map's resolution); forbidden lines and areas are only for path planners
+ * and are ignored; robots start at the first RobotHome, else Dock, else the origin.
+ */
+public final class MapSupport {
+
+  /** Radius a DATA point blocks when the map gives no resolution, mm. */
+  public static final double DEFAULT_POINT_RADIUS = 10;
+
+  private MapSupport() {}
+
+  /** The physical content of {@code map}. */
+  public static WorldMap fromArMap(ArMap map, String source) {
+    List<ArLineSegment> lines = map.getLines();
+    ArMapPoints pts = map.getPoints();
+    int n = pts.size();
+    int[] xs = new int[n];
+    int[] ys = new int[n];
+    for (int i = 0; i < n; i++) {
+      xs[i] = pts.x(i);
+      ys[i] = pts.y(i);
+    }
+    int res = map.getResolution();
+    double radius = res > 0 ? res / 2.0 : DEFAULT_POINT_RADIUS;
+    ArPose home = map.findHomePose().orElse(ArPose.ORIGIN);
+    return new WorldMap(source, lines, xs, ys, radius, home);
+  }
+
+  /**
+   * Reads a map file.
+   *
+   * @throws IOException if the file cannot be read, or (with the parser's "file:line: what"
+   *     message) if a line is malformed
+   */
+  public static WorldMap load(Path file) throws IOException {
+    try {
+      return fromArMap(ArMap.readFile(file), file.toString());
+    } catch (MapFormatException e) {
+      throw new IOException(e.getMessage(), e);
+    }
+  }
+
+  /** One of the maps bundled with JAria ("office", "hall"). */
+  public static WorldMap bundled(String name) {
+    return fromArMap(ArMap.loadBundled(name), "bundled:" + name);
+  }
+}

@@ -1,0 +1,104 @@
+package org.jaria.sim;
+
+import java.util.concurrent.locks.LockSupport;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The thread that steps a world in real time (times a speed-up). Simulated time still advances in
+ * whole ticks; the thread only paces them against the wall clock. If the machine cannot keep up, it
+ * runs as fast as it can and says so once.
+ */
+final class RealTimeRunner {
+
+  private static final Logger log = LoggerFactory.getLogger(RealTimeRunner.class);
+
+  /** Name of the world thread. */
+  static final String THREAD_NAME = "jaria-sim-world";
+
+  private final SimWorld world;
+  private final long realTickNanos;
+  private final Thread thread;
+  private volatile boolean running = true;
+  private volatile int lastIntervalMillis;
+
+  RealTimeRunner(SimWorld world, long tickNanos, double speedup) {
+    this.world = world;
+    this.realTickNanos = speedup > 0 ? (long) (tickNanos / speedup) : 0;
+    this.thread = new Thread(this::run, THREAD_NAME);
+    thread.setDaemon(true);
+  }
+
+  void start() {
+    thread.start();
+  }
+
+  boolean isRunnerThread() {
+    return Thread.currentThread() == thread;
+  }
+
+  int realIntervalMillis() {
+    return (int) (realTickNanos / 1_000_000);
+  }
+
+  int lastIntervalMillis() {
+    return lastIntervalMillis;
+  }
+
+  private void run() {
+    long start = System.nanoTime();
+    long ticks = 0;
+    boolean warned = false;
+    while (running) {
+      long t0 = System.nanoTime();
+      try {
+        world.step();
+      } catch (IllegalStateException e) {
+        if (running) {
+          log.warn("world thread stops: {}", e.getMessage());
+        }
+        return;
+      } catch (RuntimeException e) {
+        log.error("world step failed; the simulation stops", e);
+        return;
+      }
+      ticks++;
+      long now = System.nanoTime();
+      lastIntervalMillis = (int) ((now - t0) / 1_000_000);
+      if (realTickNanos == 0) {
+        continue;
+      }
+      long target = start + ticks * realTickNanos;
+      long wait = target - now;
+      if (wait > 0) {
+        LockSupport.parkNanos(wait);
+      } else if (-wait > 1_000_000_000L) {
+        if (!warned) {
+          log.warn(
+              "the simulation cannot keep up with the requested speed; running as fast as it can");
+          warned = true;
+        }
+        start = now - ticks * realTickNanos;
+      }
+    }
+  }
+
+  void stopAndJoin() {
+    running = false;
+    LockSupport.unpark(thread);
+    if (Thread.currentThread() == thread) {
+      return;
+    }
+    boolean interrupted = false;
+    while (thread.isAlive()) {
+      try {
+        thread.join();
+      } catch (InterruptedException e) {
+        interrupted = true;
+      }
+    }
+    if (interrupted) {
+      Thread.currentThread().interrupt();
+    }
+  }
+}

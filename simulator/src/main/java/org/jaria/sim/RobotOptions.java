@@ -1,0 +1,72 @@
+package org.jaria.sim;
+
+import java.util.Locale;
+import org.jaria.geom.ArPose;
+
+/**
+ * What to put into a world with {@link SimWorld#addRobot(RobotOptions)}.
+ *
+ * @param subtype robot model, e.g. {@code p3dx-sh}, {@code p3at-sh}, {@code p2dx}, {@code amigo}
+ * @param name the robot's name in logs and the API (null: model name and number)
+ * @param startPose where it starts (null: the map's first RobotHome, else Dock, else the origin,
+ *     moved aside until it touches nothing)
+ * @param laser whether it carries a simulated laser (SIM_LRF_ENABLE streams 0x60/0x61 packets)
+ * @param gyro whether it carries a rate gyro (CONFIGpac HasGyro 1, GYROpac on request)
+ * @param gripper whether it carries a gripper (CONFIGpac HasGripper 1)
+ * @param port TCP port (-1: the world's base port plus the robot's number; 0: any free port)
+ */
+public record RobotOptions(
+    String subtype,
+    String name,
+    ArPose startPose,
+    boolean laser,
+    boolean gyro,
+    boolean gripper,
+    int port) {
+
+  /** Checks and normalises the values (the subtype is lower-cased). */
+  public RobotOptions {
+    if (subtype == null || subtype.isBlank()) {
+      throw new IllegalArgumentException("a robot needs a model subtype such as p3dx-sh");
+    }
+    subtype = subtype.trim().toLowerCase(Locale.ROOT);
+    if (port < -1 || port > 65535) {
+      throw new IllegalArgumentException("port must be -1 (automatic) or 0..65535, was " + port);
+    }
+  }
+
+  /** A robot of {@code subtype} with a gripper, no laser, no gyro, default start and port. */
+  public static RobotOptions of(String subtype) {
+    return new RobotOptions(subtype, null, null, false, false, true, -1);
+  }
+
+  /** These options with another name. */
+  public RobotOptions withName(String n) {
+    return new RobotOptions(subtype, n, startPose, laser, gyro, gripper, port);
+  }
+
+  /** These options with another start pose. */
+  public RobotOptions withStartPose(ArPose p) {
+    return new RobotOptions(subtype, name, p, laser, gyro, gripper, port);
+  }
+
+  /** These options with or without a laser. */
+  public RobotOptions withLaser(boolean on) {
+    return new RobotOptions(subtype, name, startPose, on, gyro, gripper, port);
+  }
+
+  /** These options with or without a gyro. */
+  public RobotOptions withGyro(boolean on) {
+    return new RobotOptions(subtype, name, startPose, laser, on, gripper, port);
+  }
+
+  /** These options with or without a gripper. */
+  public RobotOptions withGripper(boolean on) {
+    return new RobotOptions(subtype, name, startPose, laser, gyro, on, port);
+  }
+
+  /** These options with another TCP port. */
+  public RobotOptions withPort(int p) {
+    return new RobotOptions(subtype, name, startPose, laser, gyro, gripper, p);
+  }
+}

@@ -1,0 +1,103 @@
+package org.jaria.sim;
+
+import java.nio.channels.ServerSocketChannel;
+import java.util.SplittableRandom;
+import java.util.random.RandomGenerator;
+import org.jaria.geom.ArPose;
+import org.jaria.protocol.DropCounters;
+import org.jaria.sim.robot.RobotBody;
+import org.jaria.sim.robot.RobotModel;
+import org.jaria.sim.server.ArcosSession;
+
+/** A robot in a world with its server side: TCP port, current client session, drop counters. */
+final class RobotSlot {
+
+  final RobotBody body;
+  final RobotOptions options;
+  final DropCounters drops;
+  final SimRobot handle;
+
+  /** Port asked for (-1 automatic, 0 any free). */
+  final int requestedPort;
+
+  ServerSocketChannel server;
+  int boundPort = -1;
+  ArcosSession session;
+  long sessionsStarted;
+
+  RobotSlot(SimWorld world, RobotBody body, RobotOptions options, int requestedPort) {
+    this.body = body;
+    this.options = options;
+    this.requestedPort = requestedPort;
+    this.drops = new DropCounters(body.name());
+    this.handle = new SimRobot(world, this);
+  }
+
+  /**
+   * A new robot number {@code index}: its body, with one random stream per noisy part derived from
+   * the world's seed and the robot's number (so adding robots in the same order gives the same
+   * noise), and its port.
+   */
+  static RobotSlot create(
+      SimWorld world,
+      int index,
+      RobotOptions o,
+      SimOptions options,
+      RobotModel model,
+      String name,
+      ArPose start) {
+    RandomGenerator[] rngs = new RandomGenerator[4];
+    for (int k = 0; k < rngs.length; k++) {
+      long seed =
+          options.seed() ^ (0x9E3779B97F4A7C15L * (index + 1)) ^ (0xC2B2AE3D27D4EB4FL * (k + 1));
+      rngs[k] = new SplittableRandom(seed);
+    }
+    RobotBody body =
+        new RobotBody(
+            index,
+            name,
+            model,
+            start,
+            options.sonar(),
+            options.odometryError(),
+            rngs,
+            o.laser(),
+            o.gyro(),
+            o.gripper());
+    int base = options.basePort();
+    int port = o.port() >= 0 ? o.port() : (base == 0 ? 0 : base + index);
+    return new RobotSlot(world, body, o, port);
+  }
+
+  /** Lets the session read and execute what its client sent; forgets it if the client left. */
+  void poll(long now) {
+    ArcosSession ses = session;
+    if (ses != null) {
+      ses.poll(now);
+      forgetIfEnded(ses);
+    }
+  }
+
+  /** Lets the session send what is due after the tick's physics. */
+  void afterPhysics(long now) {
+    ArcosSession ses = session;
+    if (ses != null) {
+      ses.afterPhysics(now);
+      forgetIfEnded(ses);
+    }
+  }
+
+  private void forgetIfEnded(ArcosSession ses) {
+    if (ses.state() == ArcosSession.State.ENDED && session == ses) {
+      session = null;
+    }
+  }
+
+  /** Ends the current session, if any. */
+  void endSession(String why) {
+    if (session != null) {
+      session.end(why);
+      session = null;
+    }
+  }
+}

@@ -1,0 +1,551 @@
+package org.jaria.sim;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.BitSet;
+import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.IntConsumer;
+import org.jaria.clock.Clock;
+import org.jaria.clock.VirtualClock;
+import org.jaria.geom.ArLineSegment;
+import org.jaria.geom.ArPose;
+import org.jaria.map.ArMap;
+import org.jaria.sim.robot.RobotModel;
+import org.jaria.sim.world.WorldGeometry;
+import org.jaria.sim.world.WorldMap;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * A simulated world (a MobileSim analogue): a map, robots that drive and sense in it, and an ARCOS
+ * server per robot that any ARIA client can connect to, over TCP (port 8101, 8102, ...) or an
+ * in-memory connection.
+ *
+ * <p>Time is virtual: {@link #step()} advances exactly one tick (10 ms by default) and {@link
+ * #advance(Duration)} many, so a JUnit test runs a minute of robot time in well under a second, and
+ * the same seed and commands always give the same run. {@link #startRealTime(double)} instead lets
+ * a world thread step in step with the wall clock (times a speed-up), for external clients.
+ *
+ * <p>Each tick: new TCP clients are attached, every session reads and executes what its client
+ * sent, every robot moves and senses, every session sends what is due (SIPs every SIP cycle and the
+ * packets requested), then the step listeners run. All methods are thread-safe: they take the
+ * world's lock, which a step holds while it runs.
+ *
+ * <pre>{@code
+ * try (SimWorld world = SimWorld.create(ArMap.loadBundled("office"), SimOptions.defaults())) {
+ *   SimRobot robot = world.addRobot("p3dx-sh");
+ *   ArDeviceConnection conn = robot.connectInMemory(); // hand it to an ArRobot
+ *   world.advance(Duration.ofSeconds(60));
+ * }
+ * }</pre>
+ */
+public final class SimWorld implements AutoCloseable {
+
+  private static final Logger log = LoggerFactory.getLogger(SimWorld.class);
+
+  final ReentrantLock lock = new ReentrantLock();
+  private final SimOptions options;
+  private final VirtualClock clock;
+  private final long tickNanos;
+  private final WorldGeometry geometry = new WorldGeometry();
+  private final List<RobotSlot> slots = new ArrayList<>();
+  private final WorldStatics statics;
+  private final List<Runnable> stepListeners = new CopyOnWriteArrayList<>();
+  private final BitSet unknownLogged = new BitSet(256);
+  private final WorldHost host = new WorldHost(this);
+  private TcpServers servers;
+  private RealTimeRunner runner;
+  private volatile IntConsumer exitHandler =
+      code -> log.warn("a client asked the simulator to exit with code {}; no exit handler", code);
+  private long steps;
+  private double maxSpeed;
+  private boolean closed;
+
+  private SimWorld(WorldMap map, SimOptions options, VirtualClock clock) {
+    this.statics = new WorldStatics(map, geometry);
+    this.options = options;
+    this.clock = clock;
+    this.tickNanos = options.tick().toNanos();
+  }
+
+  // ---------------------------------------------------------------- creation
+
+  /** A world on the map {@code map}, advanced by the caller on {@code clock} (lockstep). */
+  public static SimWorld create(ArMap map, SimOptions options, VirtualClock clock) {
+    return new SimWorld(MapSupport.fromArMap(map, "map"), options, clock);
+  }
+
+  /** A world on {@code map} with its own virtual clock. */
+  public static SimWorld create(ArMap map, SimOptions options) {
+    return create(map, options, new VirtualClock());
+  }
+
+  /** A world on an already converted map (lines and points), with its own virtual clock. */
+  public static SimWorld create(WorldMap map, SimOptions options, VirtualClock clock) {
+    return new SimWorld(map, options, clock);
+  }
+
+  /**
+   * A world on a map file.
+   *
+   * @throws IOException if the file cannot be read or parsed (the message names file and line)
+   */
+  public static SimWorld load(Path mapFile, SimOptions options) throws IOException {
+    return new SimWorld(MapSupport.load(mapFile), options, new VirtualClock());
+  }
+
+  /** A world on one of the maps bundled with JAria ("office", "hall"). */
+  public static SimWorld bundled(String name, SimOptions options) {
+    return new SimWorld(MapSupport.bundled(name), options, new VirtualClock());
+  }
+
+  /** A world without walls. */
+  public static SimWorld empty(SimOptions options) {
+    return new SimWorld(WorldMap.EMPTY, options, new VirtualClock());
+  }
+
+  /** A world with only the given walls; robots start at {@code home}. */
+  public static SimWorld ofLines(List<ArLineSegment> walls, ArPose home, SimOptions options) {
+    return new SimWorld(WorldMap.ofLines("lines", walls, home), options, new VirtualClock());
+  }
+
+  // ---------------------------------------------------------------- robots
+
+  /** Adds a robot of model {@code subtype} at the map's start position. */
+  public SimRobot addRobot(String subtype) {
+    return addRobot(RobotOptions.of(subtype));
+  }
+
+  /**
+   * Adds a robot. If the world is listening ({@link #listen()}), its TCP port opens at once.
+   *
+   * @throws IllegalStateException if the world is closed
+   * @throws java.io.UncheckedIOException if its TCP port cannot be opened
+   */
+  public SimRobot addRobot(RobotOptions o) {
+    lock.lock();
+    try {
+      requireOpen();
+      statics.rebuild();
+      int index = slots.size();
+      RobotModel model = RobotModels.forSubtype(o.subtype());
+      String name = o.name() != null ? o.name() : o.subtype() + "_" + (index + 1);
+      ArPose start =
+          o.startPose() != null
+              ? o.startPose()
+              : Placement.freeSpot(statics.map().home(), model, geometry);
+      RobotSlot slot = RobotSlot.create(this, index, o, options, model, name, start);
+      int added = geometry.addRobot(slot.body.footprint());
+      if (added != index) {
+        throw new IllegalStateException("robot numbering out of step: " + added + " vs " + index);
+      }
+      maxSpeed = Math.max(maxSpeed, model.getTransVelTop());
+      slots.add(slot);
+      if (servers != null) {
+        servers.bindLate(slot);
+      }
+      log.info("added robot {} ({}) at {}", name, model.getSubtype(), start);
+      return slot.handle;
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** The robots, in the order they were added. */
+  public List<SimRobot> getRobots() {
+    lock.lock();
+    try {
+      List<SimRobot> out = new ArrayList<>(slots.size());
+      for (RobotSlot s : slots) {
+        out.add(s.handle);
+      }
+      return out;
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** Robot number {@code index}. */
+  public SimRobot getRobot(int index) {
+    lock.lock();
+    try {
+      return slots.get(index).handle;
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** The robot named {@code name}, if any. */
+  public Optional<SimRobot> findRobot(String name) {
+    lock.lock();
+    try {
+      return slots.stream().filter(s -> s.body.name().equals(name)).map(s -> s.handle).findFirst();
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  // ---------------------------------------------------------------- time
+
+  /**
+   * Advances the world by exactly one tick, then runs the step listeners.
+   *
+   * @throws IllegalStateException if a real-time thread is stepping the world
+   */
+  public void step() {
+    lock.lock();
+    try {
+      if (runner != null && !runner.isRunnerThread()) {
+        throw new IllegalStateException(
+            "the world runs in real time; stop it with stopRealTime() before stepping by hand");
+      }
+      requireOpen();
+      stepLocked();
+    } finally {
+      lock.unlock();
+    }
+    for (Runnable r : stepListeners) {
+      r.run();
+    }
+  }
+
+  /** Advances the world by {@code d} (rounded up to whole ticks). */
+  public void advance(Duration d) {
+    long n = (d.toNanos() + tickNanos - 1) / tickNanos;
+    for (long i = 0; i < n; i++) {
+      step();
+    }
+  }
+
+  /** Advances the world by {@code ms} milliseconds. */
+  public void advanceMillis(long ms) {
+    advance(Duration.ofMillis(ms));
+  }
+
+  private void stepLocked() {
+    long now = clock.nanoTime();
+    statics.rebuild();
+    if (servers != null) {
+      servers.acceptPending((slot, c) -> TcpServers.attach(slot, c, clock, host));
+    }
+    for (RobotSlot s : slots) {
+      s.poll(now);
+      if (closed) {
+        return;
+      }
+    }
+    long after = now + tickNanos;
+    double dt = tickNanos / 1e9;
+    geometry.indexRobots(maxSpeed * dt + 1);
+    for (RobotSlot s : slots) {
+      s.body.physics(dt, geometry, after);
+    }
+    clock.advanceTo(after);
+    for (RobotSlot s : slots) {
+      s.afterPhysics(after);
+    }
+    steps++;
+  }
+
+  /** Calls {@code r} after every tick (on the stepping thread, outside the world's lock). */
+  public void addStepListener(Runnable r) {
+    stepListeners.add(r);
+  }
+
+  /** Stops calling {@code r}. */
+  public void removeStepListener(Runnable r) {
+    stepListeners.remove(r);
+  }
+
+  /** The world's clock (virtual: it moves only when the world steps). */
+  public Clock getClock() {
+    return clock;
+  }
+
+  /** The world's clock as a {@link VirtualClock}. */
+  public VirtualClock getVirtualClock() {
+    return clock;
+  }
+
+  /** Simulated time of one tick. */
+  public Duration getTick() {
+    return options.tick();
+  }
+
+  /** Ticks run so far. */
+  public long getStepCount() {
+    lock.lock();
+    try {
+      return steps;
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** The options the world was made with. */
+  public SimOptions getOptions() {
+    return options;
+  }
+
+  // ---------------------------------------------------------------- real time and TCP
+
+  /**
+   * Opens a TCP server for every robot (and for robots added later): the first on the base port,
+   * the next on the following one, unless a robot asked for its own. Idempotent.
+   *
+   * @throws IOException if a port is in use (the message says which and what to do)
+   */
+  public void listen() throws IOException {
+    lock.lock();
+    try {
+      requireOpen();
+      if (servers != null) {
+        return;
+      }
+      servers = TcpServers.openAll(slots);
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /**
+   * Starts a thread ("jaria-sim-world") that steps the world in real time times {@code speedup} (≤
+   * 0: as fast as it can). Idempotent while running.
+   */
+  public void startRealTime(double speedup) {
+    lock.lock();
+    try {
+      requireOpen();
+      if (runner == null) {
+        runner = new RealTimeRunner(this, tickNanos, speedup);
+        runner.start();
+      }
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** Stops the real-time thread and waits for it to end; the world can then be stepped by hand. */
+  public void stopRealTime() {
+    RealTimeRunner r;
+    lock.lock();
+    try {
+      r = runner;
+    } finally {
+      lock.unlock();
+    }
+    if (r != null) {
+      r.stopAndJoin();
+      lock.lock();
+      try {
+        runner = null;
+      } finally {
+        lock.unlock();
+      }
+    }
+  }
+
+  /** Whether a real-time thread is stepping the world. */
+  public boolean isRealTime() {
+    lock.lock();
+    try {
+      return runner != null;
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** Real milliseconds a tick should take (0 when stepped by hand or unthrottled). */
+  int realIntervalMillis() {
+    RealTimeRunner r = runner;
+    return r == null ? 0 : r.realIntervalMillis();
+  }
+
+  /** Real milliseconds the last tick took (0 when stepped by hand). */
+  int lastIntervalMillis() {
+    RealTimeRunner r = runner;
+    return r == null ? 0 : r.lastIntervalMillis();
+  }
+
+  /**
+   * What to do when a client sends SIM_EXIT (the command line ends its run). The handler runs on
+   * the stepping thread in the middle of a tick: it should only signal another thread (which may
+   * then close the world), never block or close the world itself.
+   */
+  public void setExitHandler(IntConsumer handler) {
+    exitHandler = handler;
+  }
+
+  IntConsumer exitHandler() {
+    return exitHandler;
+  }
+
+  // ---------------------------------------------------------------- map and obstacles
+
+  /** Replaces the map; robots move to free spots near the new map's start position. */
+  public void loadMap(ArMap newMap, String source) {
+    setMap(MapSupport.fromArMap(newMap, source));
+  }
+
+  void setMap(WorldMap m) {
+    lock.lock();
+    try {
+      statics.setMap(m);
+      Placement.replaceAll(slots, m.home(), geometry);
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** Whether the world has a map with anything solid in it. */
+  boolean haveMap() {
+    return !statics.map().isEmpty();
+  }
+
+  /** The current map's physical content. */
+  public WorldMap getMap() {
+    lock.lock();
+    try {
+      return statics.map();
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** Adds a wall that robots bump into and sensors see. */
+  public SimObstacle injectObstacle(ArLineSegment wall) {
+    return injectObstacle(List.of(wall));
+  }
+
+  /** Adds an obstacle made of several walls. */
+  public SimObstacle injectObstacle(List<ArLineSegment> walls) {
+    lock.lock();
+    try {
+      return statics.add(walls);
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** Adds a rectangular box centred at (cx, cy), {@code w} × {@code h} mm, turned {@code thDeg}. */
+  public SimObstacle injectBox(double cx, double cy, double w, double h, double thDeg) {
+    return injectObstacle(WorldStatics.box(cx, cy, w, h, thDeg));
+  }
+
+  /** Removes an injected obstacle; returns whether it was there. */
+  public boolean removeObstacle(SimObstacle o) {
+    lock.lock();
+    try {
+      return statics.remove(o);
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** The injected obstacles. */
+  public List<SimObstacle> getObstacles() {
+    lock.lock();
+    try {
+      return statics.list();
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /**
+   * Ground truth: the distance from (x, y) along {@code thDeg} to the nearest wall, obstacle or
+   * robot, or {@link Double#POSITIVE_INFINITY} beyond {@code maxRange}.
+   */
+  public double castRay(double x, double y, double thDeg, double maxRange) {
+    lock.lock();
+    try {
+      statics.rebuild();
+      org.jaria.sim.world.RayHit hit = new org.jaria.sim.world.RayHit();
+      double r = Math.toRadians(thDeg);
+      geometry.cast(x, y, Math.cos(r), Math.sin(r), maxRange, -1, hit);
+      return hit.distance;
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  // ---------------------------------------------------------------- inspection
+
+  /** A consistent picture of every robot and obstacle, safe to use from any thread. */
+  public SimSnapshot snapshot() {
+    lock.lock();
+    try {
+      List<SimSnapshot.RobotView> views = new ArrayList<>(slots.size());
+      for (RobotSlot s : slots) {
+        views.add(Views.robot(s));
+      }
+      return new SimSnapshot(clock.nanoTime(), views, statics.list());
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** Number of robots with a client connected. */
+  public int connectedClientCount() {
+    lock.lock();
+    try {
+      return (int) slots.stream().filter(s -> s.session != null).count();
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  WorldHost host() {
+    return host;
+  }
+
+  WorldGeometry geometry() {
+    return geometry;
+  }
+
+  boolean logUnknownOnce(int command) {
+    if (unknownLogged.get(command)) {
+      return false;
+    }
+    unknownLogged.set(command);
+    return true;
+  }
+
+  List<RobotSlot> slots() {
+    return slots;
+  }
+
+  void requireOpen() {
+    if (closed) {
+      throw new IllegalStateException("the simulated world was closed; create a new one");
+    }
+  }
+
+  /** Stops the real-time thread, disconnects every client, closes every TCP port. Idempotent. */
+  @Override
+  public void close() {
+    stopRealTime();
+    lock.lock();
+    try {
+      if (closed) {
+        return;
+      }
+      closed = true;
+      for (RobotSlot s : slots) {
+        s.endSession("the simulator is shutting down");
+        TcpServers.unbind(s);
+      }
+      if (servers != null) {
+        servers.close();
+        servers = null;
+      }
+    } finally {
+      lock.unlock();
+    }
+  }
+}

@@ -1,0 +1,116 @@
+package org.jaria.sim;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import org.jaria.clock.Clock;
+import org.jaria.protocol.ArRobotPacket;
+import org.jaria.sim.server.ServerPackets;
+import org.jaria.sim.server.SessionHost;
+import org.jaria.sim.world.WorldGeometry;
+import org.jaria.sim.world.WorldMap;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/** The world as its robots' sessions see it; every call comes from the stepping thread. */
+final class WorldHost implements SessionHost {
+
+  private static final Logger log = LoggerFactory.getLogger(WorldHost.class);
+
+  private final SimWorld world;
+
+  WorldHost(SimWorld world) {
+    this.world = world;
+  }
+
+  @Override
+  public Clock clock() {
+    return world.getClock();
+  }
+
+  @Override
+  public WorldGeometry world() {
+    return world.geometry();
+  }
+
+  @Override
+  public int sipCycleMillis() {
+    return world.getOptions().sipCycleMillis();
+  }
+
+  @Override
+  public int watchdogMillis() {
+    return world.getOptions().watchdogMillis();
+  }
+
+  @Override
+  public boolean watchdogWarnOnly() {
+    return world.getOptions().watchdogWarnOnly();
+  }
+
+  @Override
+  public void unknownCommand(int command, String robotName) {
+    if (world.logUnknownOnce(command)) {
+      log.warn(
+          "{}: command {} is not supported by the simulator and is ignored (logged once)",
+          robotName,
+          command);
+    }
+  }
+
+  @Override
+  public void loadMapRequested(String path, String robotName) {
+    int status;
+    String name = path;
+    try {
+      WorldMap m = MapSupport.load(Path.of(path));
+      world.setMap(m);
+      status = 1;
+      log.info("{}: client loaded map {}", robotName, path);
+    } catch (IOException | RuntimeException e) {
+      status = -1;
+      log.warn(
+          "{}: client asked for map {} which cannot be loaded: {}",
+          robotName,
+          path,
+          e.getMessage());
+    }
+    ArRobotPacket p = new ArRobotPacket();
+    for (RobotSlot s : world.slots()) {
+      if (s.session != null) {
+        ServerPackets.mapChanged(p, false, status, name);
+        s.session.sendPacket(p);
+      }
+    }
+  }
+
+  @Override
+  public void exitRequested(int code, String robotName) {
+    log.info("{}: client asks the simulator to exit with code {}", robotName, code);
+    world.exitHandler().accept(code);
+  }
+
+  @Override
+  public void ghostRequested(int robotIndex) {
+    world.geometry().setSolid(robotIndex, false);
+  }
+
+  @Override
+  public boolean haveMap() {
+    return world.haveMap();
+  }
+
+  @Override
+  public int simIntervalMillis() {
+    return (int) world.getTick().toMillis();
+  }
+
+  @Override
+  public int realIntervalMillis() {
+    return world.realIntervalMillis();
+  }
+
+  @Override
+  public int lastIntervalMillis() {
+    return world.lastIntervalMillis();
+  }
+}

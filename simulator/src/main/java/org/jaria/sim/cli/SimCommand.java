@@ -1,0 +1,227 @@
+package org.jaria.sim.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.jaria.sim.OdometryError;
+import org.jaria.sim.RobotOptions;
+import org.jaria.sim.SimOptions;
+import org.jaria.sim.SimRobot;
+import org.jaria.sim.SimWorld;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code ./jaria sim}: a headless simulator that any ARIA client can connect to, like MobileSim.
+ * Prints where each robot listens, runs until Ctrl-C (or a client's SIM_EXIT) and then closes every
+ * port.
+ */
+@Command(
+    name = "sim",
+    mixinStandardHelpOptions = true,
+    description = {
+      "Runs a simulated world with ARCOS robots on TCP ports 8101, 8102, ... (a MobileSim analogue).",
+      "Connect any ARIA client (e.g. -remoteHost localhost -remoteRobotTcpPort 8101). Ctrl-C stops."
+    })
+public final class SimCommand implements Callable<Integer> {
+
+  @Spec private CommandSpec spec;
+
+  @Option(
+      names = "--map",
+      paramLabel = "FILE",
+      description = "ArMap .map file, or a bundled map name (office, hall); default: office")
+  String map = "office";
+
+  @Option(
+      names = "--robot",
+      paramLabel = "MODEL",
+      description = "robot model to add (repeatable): p3dx-sh, p3at-sh, p2dx, amigo, ...")
+  List<String> robots = new ArrayList<>();
+
+  @Option(
+      names = "--robots",
+      paramLabel = "N",
+      description = "number of robots (of the last --robot model, p3dx-sh by default)")
+  Integer robotCount;
+
+  @Option(names = "--port", description = "TCP port of the first robot (default ${DEFAULT-VALUE})")
+  int port = SimOptions.DEFAULT_PORT;
+
+  @Option(names = "--speedup", paramLabel = "X", description = "run X times faster than real time")
+  Double speedup;
+
+  @Option(
+      names = "--lockstep",
+      description = "no wall-clock pacing: ticks run back to back on virtual time")
+  boolean lockstep;
+
+  @Option(names = "--seed", description = "random seed (default ${DEFAULT-VALUE})")
+  long seed = 1;
+
+  @Option(
+      names = "--odometry-error",
+      paramLabel = "SPEC",
+      description =
+          "none, constant:T,R or random:T,R (per metre, per radian), e.g. random:0.02,0.05")
+  String odometryError = "none";
+
+  @Option(names = "--sip-cycle", paramLabel = "MS", description = "SIP cycle, ms (default 100)")
+  int sipCycle = 100;
+
+  @Option(names = "--watchdog-warn-only", description = "the watchdog warns instead of stopping")
+  boolean watchdogWarnOnly;
+
+  @Option(names = "--no-specular", description = "sonar sees walls at any angle")
+  boolean noSpecular;
+
+  @Option(names = "--laser", description = "give every robot a simulated laser (SIM_LRF_ENABLE)")
+  boolean laser;
+
+  private final CountDownLatch stop = new CountDownLatch(1);
+  private final AtomicInteger exitCode = new AtomicInteger();
+
+  /**
+   * Builds the world the options describe (not listening, not running).
+   *
+   * @throws ParameterException if an option value is wrong (the message says what to use)
+   * @throws IOException if the map file cannot be read or parsed
+   */
+  public SimWorld createWorld() throws IOException {
+    SimOptions options = buildOptions();
+    SimWorld world;
+    Path file = Path.of(map);
+    if (Files.exists(file)) {
+      world = SimWorld.load(file, options);
+    } else if (!map.contains("/") && !map.contains("\\") && !map.endsWith(".map")) {
+      try {
+        world = SimWorld.bundled(map, options);
+      } catch (RuntimeException e) {
+        throw new ParameterException(
+            spec.commandLine(),
+            "no map file '" + map + "' and no bundled map of that name: " + e.getMessage());
+      }
+    } else {
+      throw new ParameterException(spec.commandLine(), "map file " + map + " does not exist");
+    }
+    for (String model : robotModels()) {
+      try {
+        world.addRobot(RobotOptions.of(model).withLaser(laser));
+      } catch (IllegalArgumentException e) {
+        world.close();
+        throw new ParameterException(spec.commandLine(), e.getMessage());
+      }
+    }
+    return world;
+  }
+
+  /** The robot models to add, in order. */
+  List<String> robotModels() {
+    List<String> models = new ArrayList<>(robots.isEmpty() ? List.of("p3dx-sh") : robots);
+    if (robotCount != null) {
+      if (robotCount < 1 || robotCount > 1000) {
+        throw new ParameterException(
+            spec.commandLine(), "--robots must be 1..1000, was " + robotCount);
+      }
+      String last = models.get(models.size() - 1);
+      while (models.size() < robotCount) {
+        models.add(last);
+      }
+    }
+    return models;
+  }
+
+  /** The world options the command line describes. */
+  SimOptions buildOptions() {
+    if (lockstep && speedup != null) {
+      throw new ParameterException(spec.commandLine(), "choose either --speedup or --lockstep");
+    }
+    if (speedup != null && !(speedup > 0)) {
+      throw new ParameterException(
+          spec.commandLine(), "--speedup must be positive, was " + speedup);
+    }
+    OdometryError err;
+    try {
+      err = OdometryError.parse(odometryError);
+    } catch (IllegalArgumentException e) {
+      throw new ParameterException(spec.commandLine(), e.getMessage());
+    }
+    try {
+      return SimOptions.builder()
+          .seed(seed)
+          .basePort(port)
+          .sipCycleMillis(sipCycle)
+          .watchdogWarnOnly(watchdogWarnOnly)
+          .odometryError(err)
+          .sonar(SimOptions.defaults().sonar().withSpecular(!noSpecular))
+          .build();
+    } catch (IllegalArgumentException e) {
+      throw new ParameterException(spec.commandLine(), e.getMessage());
+    }
+  }
+
+  /** Speed-up of the world thread (0 = unthrottled). */
+  double pacing() {
+    return lockstep ? 0 : (speedup != null ? speedup : 1);
+  }
+
+  @Override
+  public Integer call() throws IOException {
+    PrintWriter out = spec.commandLine().getOut();
+    SimWorld world = createWorld();
+    // On Ctrl-C the JVM exits once the hooks end, so the hook itself closes the world.
+    Thread hook =
+        new Thread(
+            () -> {
+              stop.countDown();
+              world.close();
+            },
+            "jaria-sim-shutdown");
+    try {
+      world.setExitHandler(
+          code -> {
+            exitCode.set(code);
+            stop.countDown();
+          });
+      world.listen();
+      for (SimRobot r : world.getRobots()) {
+        out.printf(
+            "robot %s (%s) listening on TCP port %d%n",
+            r.getName(), r.getModel().getSubtype(), r.getPort());
+      }
+      out.printf(
+          "map %s, %s; Ctrl-C stops%n",
+          map, lockstep ? "lockstep (unthrottled)" : "speed-up " + pacing());
+      out.flush();
+      Runtime.getRuntime().addShutdownHook(hook);
+      world.startRealTime(pacing());
+      stop.await();
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+    } finally {
+      world.close();
+      try {
+        Runtime.getRuntime().removeShutdownHook(hook);
+      } catch (IllegalStateException shuttingDown) {
+        // the JVM is exiting through Ctrl-C: the hook is running, nothing to remove
+      }
+      out.println("simulator stopped");
+      out.flush();
+    }
+    return exitCode.get();
+  }
+
+  /** Asks a running {@link #call()} to stop (as Ctrl-C does). */
+  public void requestStop() {
+    stop.countDown();
+  }
+}

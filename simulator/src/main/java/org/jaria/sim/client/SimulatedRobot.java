@@ -1,0 +1,149 @@
+package org.jaria.sim.client;
+
+import java.time.Duration;
+import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
+import org.jaria.robot.ArRobot;
+import org.jaria.sim.SimRobot;
+import org.jaria.sim.SimWorld;
+
+/**
+ * An {@link ArRobot} connected to a simulated robot in lockstep: both run on the world's virtual
+ * clock, and the robot's cycle runs inside the world's steps, once per SIP (or after two cycle
+ * times without one), exactly as it would on a real robot. Nothing runs unless the test advances
+ * time, so every run with the same seed is identical, and a minute of robot time takes a few
+ * milliseconds.
+ *
+ * <pre>{@code
+ * try (SimulatedRobot sim = SimulatedRobot.start("office", "p3dx-sh", 1)) {
+ *   ArRobot robot = sim.robot();
+ *   robot.enableMotors();
+ *   robot.move(1000);
+ *   assertTrue(sim.runUntil(robot::isMoveDone, Duration.ofSeconds(10)));
+ * }
+ * }</pre>
+ *
+ * <p>This is the only part of the simulator that uses the client's ArRobot; the server side knows
+ * nothing of it.
+ */
+public final class SimulatedRobot implements AutoCloseable {
+
+  private final SimWorld world;
+  private final SimRobot simRobot;
+  private final ArRobot robot;
+  private final boolean ownsWorld;
+  private final Runnable driver = this::afterStep;
+  private long lastCycleNanos;
+
+  private SimulatedRobot(SimWorld world, SimRobot simRobot, ArRobot robot, boolean ownsWorld) {
+    this.world = world;
+    this.simRobot = simRobot;
+    this.robot = robot;
+    this.ownsWorld = ownsWorld;
+  }
+
+  /**
+   * Connects a new ArRobot (named after the simulated one) to {@code simRobot} in lockstep and runs
+   * the world until the handshake is done.
+   *
+   * @throws IllegalStateException if the robot does not connect within 30 s of virtual time
+   */
+  public static SimulatedRobot connect(SimWorld world, SimRobot simRobot) {
+    return connect(world, simRobot, new ArRobot(simRobot.getName(), world.getClock(), true), false);
+  }
+
+  /** As {@link #connect(SimWorld, SimRobot)}, with an ArRobot you made (on the world's clock). */
+  public static SimulatedRobot connect(SimWorld world, SimRobot simRobot, ArRobot robot) {
+    return connect(world, simRobot, robot, false);
+  }
+
+  private static SimulatedRobot connect(
+      SimWorld world, SimRobot simRobot, ArRobot robot, boolean ownsWorld) {
+    if (robot.getClock() != world.getClock()) {
+      throw new IllegalArgumentException(
+          "the ArRobot must run on the world's clock: new ArRobot(name, world.getClock(), true)");
+    }
+    robot.setDeviceConnection(simRobot.connectInMemory());
+    SimulatedRobot s = new SimulatedRobot(world, simRobot, robot, ownsWorld);
+    world.addStepListener(s.driver);
+    robot.asyncConnect();
+    if (!s.runUntil(() -> !robot.isConnecting(), Duration.ofSeconds(30)) || !robot.isConnected()) {
+      s.close();
+      throw new IllegalStateException(
+          "simulated robot did not connect: " + robot.getConnectFailure());
+    }
+    return s;
+  }
+
+  /**
+   * A new world on a bundled map ("office", "hall") with one robot of the given model, seeded, and
+   * an ArRobot connected to it. Closing the SimulatedRobot closes the world.
+   */
+  public static SimulatedRobot start(String bundledMap, String model, long seed) {
+    SimWorld world =
+        SimWorld.bundled(bundledMap, org.jaria.sim.SimOptions.builder().seed(seed).build());
+    SimRobot r = world.addRobot(model);
+    return connect(world, r, new ArRobot(r.getName(), world.getClock(), true), true);
+  }
+
+  private void afterStep() {
+    long now = world.getClock().nanoTime();
+    long fallback = TimeUnit.MILLISECONDS.toNanos(2 * robot.getCycleTime());
+    if (robot.isConnecting() || robot.pollForSip() || now - lastCycleNanos >= fallback) {
+      lastCycleNanos = now;
+      robot.loopOnce();
+    }
+  }
+
+  /** The client robot: use it as in any ARIA program. */
+  public ArRobot robot() {
+    return robot;
+  }
+
+  /** The simulated robot: true pose, sensor ground truth, dropping the connection. */
+  public SimRobot sim() {
+    return simRobot;
+  }
+
+  /** The world. */
+  public SimWorld world() {
+    return world;
+  }
+
+  /** Runs {@code d} of virtual time. */
+  public void run(Duration d) {
+    world.advance(d);
+  }
+
+  /** Runs {@code ms} of virtual time. */
+  public void runMillis(long ms) {
+    world.advanceMillis(ms);
+  }
+
+  /**
+   * Runs until {@code done} is true (checked after every tick) or {@code max} of virtual time has
+   * passed.
+   *
+   * @return whether {@code done} became true
+   */
+  public boolean runUntil(BooleanSupplier done, Duration max) {
+    long end = world.getClock().nanoTime() + max.toNanos();
+    while (!done.getAsBoolean()) {
+      if (world.getClock().nanoTime() >= end) {
+        return false;
+      }
+      world.step();
+    }
+    return true;
+  }
+
+  /** Disconnects the robot and stops driving it; closes the world if this object created it. */
+  @Override
+  public void close() {
+    world.removeStepListener(driver);
+    robot.close();
+    if (ownsWorld) {
+      world.close();
+    }
+  }
+}

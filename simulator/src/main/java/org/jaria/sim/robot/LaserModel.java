@@ -1,0 +1,138 @@
+package org.jaria.sim.robot;
+
+import java.util.random.RandomGenerator;
+import org.jaria.geom.ArMath;
+import org.jaria.sim.world.RayHit;
+import org.jaria.sim.world.WorldGeometry;
+
+/**
+ * A simulated laser range finder (a SICK LMS-200 as MobileSim models it): one ray per reading over
+ * the field of view (default −90° to +90° at 1°, 181 readings), nearest hit or the maximum range,
+ * small seeded noise. Scans are taken on request (once per SIP cycle while streaming).
+ *
+ * <p>Not thread-safe: used by the world thread.
+ */
+public final class LaserModel {
+
+  /** Standard deviation of the range noise, mm. */
+  public static final double NOISE_MM = 5;
+
+  private final RobotModel model;
+  private final RandomGenerator rng;
+  private final RayHit hit = new RayHit();
+  private double startDeg = -90;
+  private double endDeg = 90;
+  private double incDeg = 1;
+  private int[] ranges = new int[0];
+  private boolean[] echo = new boolean[0];
+  private double originX;
+  private double originY;
+  private double originTh;
+
+  /** A laser mounted as {@code model} says. */
+  public LaserModel(RobotModel model, RandomGenerator rng) {
+    this.model = model;
+    this.rng = rng;
+  }
+
+  /** Returns to the default field of view and resolution. */
+  public void resetSettings() {
+    startDeg = -90;
+    endDeg = 90;
+    incDeg = 1;
+  }
+
+  /** Sets the start of the field of view, degrees. */
+  public void setStart(double deg) {
+    startDeg = ArMath.clamp(deg, -180, 180);
+  }
+
+  /** Sets the end of the field of view, degrees. */
+  public void setEnd(double deg) {
+    endDeg = ArMath.clamp(deg, -180, 180);
+  }
+
+  /** Sets the angle between readings, degrees (at least 0.1). */
+  public void setIncrement(double deg) {
+    incDeg = Math.max(0.1, Math.abs(deg));
+  }
+
+  /** Number of readings per scan. */
+  public int readingCount() {
+    return (int) Math.floor(Math.abs(endDeg - startDeg) / incDeg + 1e-9) + 1;
+  }
+
+  /** First reading's angle relative to the laser, degrees. */
+  public double getStart() {
+    return Math.min(startDeg, endDeg);
+  }
+
+  /** Angle between readings, degrees. */
+  public double getIncrement() {
+    return incDeg;
+  }
+
+  /** Scans from the robot's true pose (x, y mm, thRad). */
+  public void scan(double x, double y, double thRad, WorldGeometry world, int self) {
+    int count = readingCount();
+    if (ranges.length != count) {
+      ranges = new int[count];
+      echo = new boolean[count];
+    }
+    double c = Math.cos(thRad);
+    double s = Math.sin(thRad);
+    originX = x + c * model.getLaserX() - s * model.getLaserY();
+    originY = y + s * model.getLaserX() + c * model.getLaserY();
+    originTh = Math.toDegrees(thRad) + model.getLaserTh();
+    double max = model.getLaserMaxRange();
+    double first = Math.toRadians(originTh + getStart());
+    double inc = Math.toRadians(incDeg);
+    for (int k = 0; k < count; k++) {
+      double a = first + k * inc;
+      world.cast(originX, originY, Math.cos(a), Math.sin(a), max, self, hit);
+      if (hit.hit()) {
+        double r = hit.distance + rng.nextGaussian() * NOISE_MM;
+        ranges[k] = (int) Math.round(ArMath.clamp(r, 0, max));
+        echo[k] = true;
+      } else {
+        ranges[k] = (int) Math.round(max);
+        echo[k] = false;
+      }
+    }
+  }
+
+  /** Ranges of the last scan, mm (a copy). */
+  public int[] ranges() {
+    return ranges.clone();
+  }
+
+  /** Range {@code k} of the last scan, mm. */
+  public int range(int k) {
+    return ranges[k];
+  }
+
+  /** Whether reading {@code k} of the last scan hit something. */
+  public boolean echo(int k) {
+    return echo[k];
+  }
+
+  /** Readings in the last scan. */
+  public int lastCount() {
+    return ranges.length;
+  }
+
+  /** World x of the laser at the last scan. */
+  public double originX() {
+    return originX;
+  }
+
+  /** World y of the laser at the last scan. */
+  public double originY() {
+    return originY;
+  }
+
+  /** World heading of the laser at the last scan, degrees. */
+  public double originTh() {
+    return originTh;
+  }
+}

@@ -1,0 +1,169 @@
+package org.jaria.sim.robot;
+
+import java.util.random.RandomGenerator;
+import org.jaria.geom.ArMath;
+import org.jaria.sim.OdometryError;
+
+/**
+ * The wheel encoders and the position integration of the robot's controller: what the robot
+ * believes about its own motion. The true motion of each tick goes in; the configured {@link
+ * OdometryError}, the DRIFTFACTOR, TICKSMM and REVCOUNT settings bend it on the way to the encoder
+ * counts and the odometry pose.
+ *
+ * <p>With the default settings and no error, odometry equals the true motion exactly. Changing
+ * TICKSMM or REVCOUNT away from the simulated hardware's values scales distances or turns, as it
+ * would on a real robot.
+ *
+ * <p>Not thread-safe: used by the world thread.
+ */
+public final class Odometry {
+
+  /** Encoder ticks per mm of wheel travel of the simulated hardware. */
+  public static final double TICKS_PER_MM = 32;
+
+  private final OdometryError error;
+  private final RandomGenerator rng;
+  private final double track;
+  private final double trueRevCount;
+
+  private double ticksMmSetting;
+  private double revCountSetting;
+  private int driftFactor;
+
+  private double x;
+  private double y;
+  private double th;
+  private double encLeft;
+  private double encRight;
+  private double lastMeasured;
+
+  /**
+   * Odometry for wheels {@code trackWidth} mm apart.
+   *
+   * @param rng source of the random error (only drawn from while the robot moves)
+   */
+  public Odometry(double trackWidth, OdometryError error, RandomGenerator rng) {
+    this.track = trackWidth;
+    this.error = error;
+    this.rng = rng;
+    this.trueRevCount = Math.PI * trackWidth * TICKS_PER_MM;
+    resetSettings();
+  }
+
+  /** Returns TICKSMM, REVCOUNT and DRIFTFACTOR to the hardware values. */
+  public void resetSettings() {
+    ticksMmSetting = TICKS_PER_MM;
+    revCountSetting = trueRevCount;
+    driftFactor = 0;
+  }
+
+  /** SETO: sets the odometry pose (mm, mm, degrees). */
+  public void setPose(double px, double py, double thDeg) {
+    x = px;
+    y = py;
+    th = ArMath.fixAngle(thDeg);
+  }
+
+  /**
+   * Measures the true motion of one tick ({@code ds} mm forward along the arc, {@code dthDeg}
+   * turned) and integrates it.
+   */
+  public void update(double ds, double dthDeg) {
+    if (ds == 0 && dthDeg == 0) {
+      lastMeasured = 0;
+      return;
+    }
+    double dth = Math.toRadians(dthDeg);
+    switch (error.mode()) {
+      case NONE -> {}
+      case CONSTANT -> {
+        ds *= 1 + error.transPerMetre();
+        dth *= 1 + error.rotPerRadian();
+      }
+      case RANDOM -> {
+        ds += rng.nextGaussian() * error.transPerMetre() * Math.sqrt(Math.abs(ds) * 1000);
+        dth += rng.nextGaussian() * error.rotPerRadian() * Math.sqrt(Math.abs(dth));
+      }
+    }
+    double left = (ds - dth * track / 2) * (1 + driftFactor / 8192.0);
+    double right = ds + dth * track / 2;
+    encLeft += left * TICKS_PER_MM;
+    encRight += right * TICKS_PER_MM;
+    double dsOdo = (left + right) / 2 * TICKS_PER_MM / ticksMmSetting;
+    double dthOdo = (right - left) * TICKS_PER_MM * Math.PI / revCountSetting;
+    double mid = Math.toRadians(th) + dthOdo / 2;
+    x += dsOdo * Math.cos(mid);
+    y += dsOdo * Math.sin(mid);
+    th = ArMath.fixAngle(th + Math.toDegrees(dthOdo));
+    lastMeasured = dsOdo;
+  }
+
+  /** Distance the odometry measured in the last update, mm (feeds MOVE). */
+  public double lastMeasured() {
+    return lastMeasured;
+  }
+
+  /** Odometry x, mm. */
+  public double getX() {
+    return x;
+  }
+
+  /** Odometry y, mm. */
+  public double getY() {
+    return y;
+  }
+
+  /** Odometry heading, degrees (−180, 180]. */
+  public double getTh() {
+    return th;
+  }
+
+  /** Left encoder count. */
+  public int getLeftEncoder() {
+    return (int) (long) Math.floor(encLeft);
+  }
+
+  /** Right encoder count. */
+  public int getRightEncoder() {
+    return (int) (long) Math.floor(encRight);
+  }
+
+  /** TICKSMM: encoder ticks per mm the controller assumes. */
+  public void setTicksMm(int ticks) {
+    if (ticks > 0) {
+      ticksMmSetting = ticks;
+    }
+  }
+
+  /** REVCOUNT: encoder tick difference the controller assumes for a 180° turn. */
+  public void setRevCount(int ticks) {
+    if (ticks > 0) {
+      revCountSetting = ticks;
+    }
+  }
+
+  /** DRIFTFACTOR: left-wheel correction in 1/8192 units. */
+  public void setDriftFactor(int f) {
+    driftFactor = f;
+  }
+
+  /** TICKSMM as reported in CONFIGpac. */
+  public int getTicksMm() {
+    return (int) Math.round(ticksMmSetting);
+  }
+
+  /** REVCOUNT as reported in CONFIGpac. */
+  public int getRevCount() {
+    return (int) Math.min(65535, Math.round(revCountSetting));
+  }
+
+  /** DRIFTFACTOR as reported in CONFIGpac. */
+  public int getDriftFactor() {
+    return driftFactor;
+  }
+
+  /** The configured error model. */
+  public OdometryError getError() {
+    return error;
+  }
+}

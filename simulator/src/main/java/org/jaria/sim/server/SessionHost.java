@@ -1,0 +1,51 @@
+package org.jaria.sim.server;
+
+import org.jaria.clock.Clock;
+import org.jaria.sim.world.WorldGeometry;
+
+/**
+ * What a robot's ARCOS session needs from the world it lives in: time, world-wide settings and the
+ * simulator meta-operations (map loading, exit, statistics). Implemented by the world; called on
+ * the world thread only.
+ */
+public interface SessionHost {
+
+  /** The simulated clock. */
+  Clock clock();
+
+  /** Everything solid in the world (for the laser scans sent with the SIPs). */
+  WorldGeometry world();
+
+  /** SIP cycle, ms. */
+  int sipCycleMillis();
+
+  /** Watchdog time, ms (0 = no watchdog). */
+  int watchdogMillis();
+
+  /** Whether the watchdog only warns instead of stopping the robot. */
+  boolean watchdogWarnOnly();
+
+  /** Logs an unsupported command once per command number for the whole simulator. */
+  void unknownCommand(int command, String robotName);
+
+  /** SIM_CTRL load map: loads {@code path} and tells every client (SIM_MAP_CHANGED). */
+  void loadMapRequested(String path, String robotName);
+
+  /** SIM_EXIT: a client asks the simulator to exit with {@code code}. */
+  void exitRequested(int code, String robotName);
+
+  /** SIM_CTRL ghost mode: the robot stops being seen or touched by others. */
+  void ghostRequested(int robotIndex);
+
+  /** Whether a map is loaded (SIMSTAT flag bit 0). */
+  boolean haveMap();
+
+  /** Simulated milliseconds per world tick (SIMSTAT SimInterval). */
+  int simIntervalMillis();
+
+  /** Real milliseconds a tick should take (SIMSTAT RealInterval; 0 in lockstep). */
+  int realIntervalMillis();
+
+  /** Real milliseconds the last tick took (SIMSTAT LastInterval; 0 in lockstep). */
+  int lastIntervalMillis();
+}
