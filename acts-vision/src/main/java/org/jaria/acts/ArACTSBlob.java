@@ -113,4 +113,15 @@ public class ArACTSBlob {
         top,
         bottom);
   }
+
+  /** Makes this blob a copy of {@code other} (to keep a blob while reusing the other). */
+  public void copyFrom(ArACTSBlob other) {
+    setArea(other.getArea());
+    setXCG(other.getXCG());
+    setYCG(other.getYCG());
+    setLeft(other.getLeft());
+    setRight(other.getRight());
+    setTop(other.getTop());
+    setBottom(other.getBottom());
+  }
 }

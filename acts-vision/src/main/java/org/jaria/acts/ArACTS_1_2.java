@@ -160,6 +160,34 @@ public class ArACTS_1_2 implements AutoCloseable {
     return true;
   }
 
+  /**
+   * ARIA's {@code openPort(ArRobot*)}: connects to ACTS on this machine (port 5001) and has the
+   * robot run {@link #actsHandler()} every cycle, so {@link #getNumBlobs} and {@link #getBlob}
+   * always hold the latest frame's blobs when actions fire.
+   */
+  public boolean openPort(org.jaria.robot.ArRobot robot) {
+    return openPort(robot, "localhost", ActsProtocol.DEFAULT_PORT);
+  }
+
+  /** As {@link #openPort(org.jaria.robot.ArRobot)}, to ACTS at {@code host:port}. */
+  public boolean openPort(org.jaria.robot.ArRobot robot, String host, int port) {
+    return openPort(host, port) && attach(robot);
+  }
+
+  /**
+   * As {@link #openPort(org.jaria.robot.ArRobot)}, over a connection you made (an in-memory pipe in
+   * lockstep tests, where reads must not wait: use {@code setReadTimeouts(0, 0)}).
+   */
+  public boolean openPort(org.jaria.robot.ArRobot robot, ArDeviceConnection connection) {
+    return openPort(connection) && attach(robot);
+  }
+
+  private boolean attach(org.jaria.robot.ArRobot robot) {
+    // Before the actions (position 50+ are range devices): blobs are fresh when actions fire.
+    robot.addSensorInterpTask("ACTS", 60, this::actsHandler);
+    return true;
+  }
+
   /** Why the last {@code openPort} failed, or an empty string. */
   public String getOpenMessage() {
     return openMessage;

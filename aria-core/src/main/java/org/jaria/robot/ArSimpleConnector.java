@@ -13,6 +13,11 @@ public class ArSimpleConnector extends ArRobotConnector {
     super(new ArArgumentParser(args), null);
   }
 
+  /** A connector taking options from {@code parser}; pass the robot to {@code connectRobot}. */
+  public ArSimpleConnector(ArArgumentParser parser) {
+    super(parser, null);
+  }
+
   /** A connector for {@code robot} taking options from {@code parser}. */
   public ArSimpleConnector(ArArgumentParser parser, ArRobot robot) {
     super(parser, robot);

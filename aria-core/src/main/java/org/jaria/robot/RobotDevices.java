@@ -146,6 +146,25 @@ public abstract class RobotDevices extends RobotMotion {
     return best;
   }
 
+  /**
+   * Sets how each odometry heading change is corrected (ARIA's {@code
+   * setEncoderCorrectionCallback}): a gyro replaces the wheels' turn with its own. Null removes the
+   * correction. Called on the cycle thread for every SIP.
+   */
+  public void setEncoderCorrectionCallback(HeadingCorrection correction) {
+    processor.setHeadingCorrection(correction == null ? null : correction::correctedDeltaTh);
+  }
+
+  /** Corrects one odometry heading change (see {@link #setEncoderCorrectionCallback}). */
+  @FunctionalInterface
+  public interface HeadingCorrection {
+    /**
+     * The heading change to use, degrees, given the odometry's change in x, y (mm) and heading
+     * (degrees) since the last SIP, and the clock time of this SIP.
+     */
+    double correctedDeltaTh(double deltaX, double deltaY, double deltaTh, long timeNanos);
+  }
+
   // ================================================================ actions
 
   /**

@@ -56,6 +56,8 @@ public final class SimWorld implements AutoCloseable {
   private final List<RobotSlot> slots = new ArrayList<>();
   private final WorldStatics statics;
   private final List<Runnable> stepListeners = new CopyOnWriteArrayList<>();
+  private final org.jaria.sim.camera.ColoredObjects colored =
+      new org.jaria.sim.camera.ColoredObjects(this);
   private final BitSet unknownLogged = new BitSet(256);
   private final WorldHost host = new WorldHost(this);
   private TcpServers servers;
@@ -77,7 +79,13 @@ public final class SimWorld implements AutoCloseable {
 
   /** A world on the map {@code map}, advanced by the caller on {@code clock} (lockstep). */
   public static SimWorld create(ArMap map, SimOptions options, VirtualClock clock) {
-    return new SimWorld(MapSupport.fromArMap(map, "map"), options, clock);
+    return of(map, "map", options, clock);
+  }
+
+  private static SimWorld of(ArMap map, String source, SimOptions options, VirtualClock clock) {
+    SimWorld w = new SimWorld(MapSupport.fromArMap(map, source), options, clock);
+    w.colored.replaceFromMap(map);
+    return w;
   }
 
   /** A world on {@code map} with its own virtual clock. */
@@ -96,12 +104,16 @@ public final class SimWorld implements AutoCloseable {
    * @throws IOException if the file cannot be read or parsed (the message names file and line)
    */
   public static SimWorld load(Path mapFile, SimOptions options) throws IOException {
-    return new SimWorld(MapSupport.load(mapFile), options, new VirtualClock());
+    try {
+      return of(ArMap.readFile(mapFile), mapFile.toString(), options, new VirtualClock());
+    } catch (org.jaria.map.MapFormatException e) {
+      throw new IOException(e.getMessage(), e);
+    }
   }
 
   /** A world on one of the maps bundled with JAria ("office", "hall"). */
   public static SimWorld bundled(String name, SimOptions options) {
-    return new SimWorld(MapSupport.bundled(name), options, new VirtualClock());
+    return of(ArMap.loadBundled(name), "bundled:" + name, options, new VirtualClock());
   }
 
   /** A world without walls. */
@@ -390,6 +402,7 @@ public final class SimWorld implements AutoCloseable {
   /** Replaces the map; robots move to free spots near the new map's start position. */
   public void loadMap(ArMap newMap, String source) {
     setMap(MapSupport.fromArMap(newMap, source));
+    colored.replaceFromMap(newMap);
   }
 
   void setMap(WorldMap m) {
@@ -462,16 +475,30 @@ public final class SimWorld implements AutoCloseable {
    * robot, or {@link Double#POSITIVE_INFINITY} beyond {@code maxRange}.
    */
   public double castRay(double x, double y, double thDeg, double maxRange) {
+    return castRay(x, y, thDeg, maxRange, null);
+  }
+
+  /**
+   * As {@link #castRay(double, double, double, double)}, ignoring the robot {@code self} (for
+   * sensors that sit inside their own robot's outline, such as a camera).
+   */
+  public double castRay(double x, double y, double thDeg, double maxRange, SimRobot self) {
     lock.lock();
     try {
       statics.rebuild();
       org.jaria.sim.world.RayHit hit = new org.jaria.sim.world.RayHit();
       double r = Math.toRadians(thDeg);
-      geometry.cast(x, y, Math.cos(r), Math.sin(r), maxRange, -1, hit);
+      geometry.cast(
+          x, y, Math.cos(r), Math.sin(r), maxRange, self == null ? -1 : self.getIndex(), hit);
       return hit.distance;
     } finally {
       lock.unlock();
     }
+  }
+
+  /** The coloured objects cameras see (from the map, or added). */
+  public org.jaria.sim.camera.ColoredObjects coloredObjects() {
+    return colored;
   }
 
   // ---------------------------------------------------------------- inspection

@@ -18,8 +18,10 @@ import picocli.CommandLine.Command;
     subcommands = {
       VersionCommand.class,
       PacketsCommand.class,
+      MapCommand.class,
       org.jaria.sim.cli.SimCommand.class,
       org.jaria.acts.cli.ActsCommand.class,
+      org.jaria.tools.demo.DemoCommand.class,
       BenchCommand.class,
       CommandLine.HelpCommand.class
     })

@@ -1,0 +1,121 @@
+package org.jaria.tools.demo;
+
+import java.io.PrintWriter;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.concurrent.TimeUnit;
+import org.jaria.geom.ArPose;
+import org.jaria.robot.ArRobot;
+import org.jaria.tools.examples.GotoActionExample;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code jaria demo}: the thesis's applications, each against an embedded simulator unless a robot
+ * address is given. Without a subcommand it runs {@code wander}.
+ */
+@Command(
+    name = "demo",
+    description = {
+      "Run one of the thesis's applications (default: wander) against an embedded simulator,",
+      "or against a robot or simulator given with --remote."
+    },
+    subcommands = {DemoCommand.Wander.class, ChaseDemo.class})
+public final class DemoCommand extends DemoOptions implements Callable<Integer> {
+
+  @Spec CommandSpec spec;
+
+  /** Without a subcommand: wander, with the options given to {@code demo}. */
+  @Override
+  public Integer call() throws Exception {
+    Wander w = new Wander();
+    w.spec = spec;
+    w.map = map;
+    w.model = model;
+    w.seconds = seconds;
+    w.seed = seed;
+    w.remote = remote;
+    return w.call();
+  }
+
+  /** {@code jaria demo wander}: obstacle avoidance (gotoActionExample). */
+  @Command(
+      name = "wander",
+      description =
+          "Obstacle avoidance (thesis §6.3): wander with five actions, printing progress.")
+  static final class Wander extends DemoOptions implements Callable<Integer> {
+
+    @Spec CommandSpec spec;
+
+    @Override
+    public Integer call() throws Exception {
+      PrintWriter out = spec.commandLine().getOut();
+      if (remote != null) {
+        return GotoActionExample.run(remoteArgs(), robot -> watch(robot, null, out));
+      }
+      try (EmbeddedSimulator sim = new EmbeddedSimulator(map, model, seed)) {
+        out.printf(
+            Locale.ROOT,
+            "Simulator: %s map, a %s on tcp port %d (real time).%n",
+            map,
+            model,
+            sim.port());
+        out.flush();
+        int status = GotoActionExample.run(sim.connectArgs(), robot -> watch(robot, sim, out));
+        ArPose truth = sim.robot.getTruePose();
+        out.printf(Locale.ROOT, "Finished; the simulator's true pose of the robot is %s.%n", truth);
+        out.flush();
+        return status;
+      }
+    }
+
+    /** Prints a status line every second and stops the robot after the time limit. */
+    void watch(ArRobot robot, EmbeddedSimulator sim, PrintWriter out) {
+      Thread t =
+          new Thread(
+              () -> {
+                long start = System.nanoTime();
+                try {
+                  for (int s = 1; seconds == 0 || s <= seconds; s++) {
+                    TimeUnit.NANOSECONDS.sleep(
+                        start + TimeUnit.SECONDS.toNanos(s) - System.nanoTime());
+                    if (!robot.isRunning()) {
+                      return;
+                    }
+                    out.println(statusLine(s, robot, sim));
+                    out.flush();
+                  }
+                } catch (InterruptedException e) {
+                  Thread.currentThread().interrupt();
+                }
+                robot.stopRunning();
+              },
+              "demo-status");
+      t.setDaemon(true);
+      t.start();
+    }
+  }
+
+  static String statusLine(int second, ArRobot robot, EmbeddedSimulator sim) {
+    int front = robot.getClosestSonarRange(-45, 45);
+    StringBuilder sb =
+        new StringBuilder(
+            String.format(
+                Locale.ROOT,
+                "t=%3ds  pose %-26s vel %4.0f mm/s  rot %4.0f deg/s  front sonar %5s  driven %6.1f m",
+                second,
+                robot.getPose(),
+                robot.getVel(),
+                robot.getRotVel(),
+                front < 0 ? "-" : front + "mm",
+                robot.getOdometerDistance() / 1000));
+    if (robot.isLeftMotorStalled() || robot.isRightMotorStalled()) {
+      sb.append("  STALLED");
+    }
+    if (sim != null) {
+      sb.append("  true ").append(sim.robot.getTruePose());
+    }
+    return sb.toString();
+  }
+}
