@@ -34,8 +34,10 @@ class CollisionTest {
       c.comInt(11, 300);
       w.advanceMillis(6000);
       double front = r.getModel().getLengthFront();
-      assertEquals(1000 - front, r.getTruePose().x(), 5, "stops at the wall");
-      assertTrue(r.getTruePose().x() + front <= 1000 + 1e-9, "never inside the wall");
+      double x = r.getTruePose().x();
+      assertTrue(
+          x >= 1000 - front - RobotBody.BUMPER_TRAVEL && x <= 1000 - front,
+          "stops against the wall, the bump ring pressed in: " + x);
       assertTrue(r.isStalled());
       assertEquals(0, r.getVel(), 1e-9);
       int bits = r.getStallAndBumpers();
@@ -50,7 +52,7 @@ class CollisionTest {
       c.comInt(11, -300);
       w.advanceMillis(500);
       assertFalse(r.isStalled(), "backing away clears the stall");
-      assertTrue(r.getTruePose().x() < 1000 - front - 20);
+      assertTrue(r.getTruePose().x() < x - 20, "backed away");
     }
   }
 
@@ -61,7 +63,9 @@ class CollisionTest {
       ArcosTestClient c = new ArcosTestClient(w, r).open();
       c.comInt(11, -300);
       w.advanceMillis(6000);
-      assertEquals(-1000 + r.getModel().getLengthRear(), r.getTruePose().x(), 5);
+      double x = r.getTruePose().x();
+      double rear = r.getModel().getLengthRear();
+      assertTrue(x <= -1000 + rear + RobotBody.BUMPER_TRAVEL && x >= -1000 + rear, "x " + x);
       assertTrue(r.isStalled());
       assertEquals(1 << 2, r.getRearBumpers());
       assertEquals(0, r.getFrontBumpers());
@@ -78,7 +82,10 @@ class CollisionTest {
       c.comInt(11, 200);
       w.advanceMillis(8000);
       assertTrue(r.isStalled());
-      assertEquals(1, r.getFrontBumpers(), "leftmost front segment (bumper 0)");
+      int bumpers = r.getFrontBumpers();
+      assertTrue(
+          bumpers != 0 && (bumpers & ~0b11) == 0,
+          "a left front segment (bumper 0 or 1): " + Integer.toBinaryString(bumpers));
     }
   }
 
@@ -93,7 +100,7 @@ class CollisionTest {
       assertTrue(a.isStalled());
       double gap = b.getTruePose().x() - a.getTruePose().x();
       double touching = a.getModel().getLengthFront() + b.getModel().getLengthFront();
-      assertEquals(touching, gap, 5);
+      assertTrue(gap >= touching && gap <= touching + RobotBody.BUMPER_TRAVEL, "gap " + gap);
       assertEquals(ArPose.ORIGIN.withX(1500).withTh(180), b.getTruePose(), "b was not pushed");
     }
   }

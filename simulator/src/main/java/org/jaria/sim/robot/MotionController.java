@@ -305,6 +305,22 @@ public final class MotionController {
     return target > cur ? Math.min(target, cur + step) : Math.max(target, cur - step);
   }
 
+  /**
+   * A bump ring is being pressed: its spring and the motors' current limit slow the robot at the
+   * top deceleration for this tick, while the setpoint stays (the program decides what to do).
+   */
+  public void cushioned(double dt) {
+    double d = model.getTransAccTop() * dt;
+    vel = vel > 0 ? Math.max(0, vel - d) : Math.min(0, vel + d);
+  }
+
+  /** Whether the motors are driving towards a speed the robot is not making (pushing). */
+  public boolean isPushing() {
+    boolean wants =
+        transMode == TransMode.VELOCITY ? Math.abs(velTarget) > 1 : Math.abs(moveRemaining) > 1;
+    return motorsEnabled && !held && !eStop && wants && Math.abs(vel) < 5;
+  }
+
   /** The wheels could not move: the translational (and maybe rotational) speed drops to zero. */
   public void blocked(boolean translation, boolean rotation) {
     if (translation) {

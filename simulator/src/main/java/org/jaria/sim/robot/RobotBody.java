@@ -31,6 +31,9 @@ public final class RobotBody {
    */
   public static final int FRONT_BUMPER_SHIFT = 9;
 
+  /** How far a bump ring gives before the robot's body touches, mm. */
+  public static final double BUMPER_TRAVEL = 40;
+
   /** First bit of the rear bumper ring. */
   public static final int REAR_BUMPER_SHIFT = 1;
 
@@ -42,6 +45,14 @@ public final class RobotBody {
   private final RobotModel model;
   private final Footprint footprint;
   private final Footprint candidate;
+
+  /** The footprint with the front ring's travel added: contact there presses it going forward. */
+  private final Footprint frontZone;
+
+  /** The same for the rear ring, going backwards. */
+  private final Footprint rearZone;
+
+  private int latchedBits;
   private final Contact contact = new Contact();
   private final Contact here = new Contact();
   private final MotionController motion;
@@ -86,6 +97,12 @@ public final class RobotBody {
     this.model = model;
     this.footprint = new Footprint(model.getLengthFront(), model.getLengthRear(), model.getWidth());
     this.candidate = footprint.copy();
+    this.frontZone =
+        new Footprint(
+            model.getLengthFront() + BUMPER_TRAVEL, model.getLengthRear(), model.getWidth());
+    this.rearZone =
+        new Footprint(
+            model.getLengthFront(), model.getLengthRear() + BUMPER_TRAVEL, model.getWidth());
     this.motion = new MotionController(model);
     this.odometry = new Odometry(model.getTrackWidth(), odometryError, rngs[0]);
     this.sonar = new SonarModel(model, sonarOptions, rngs[1]);
@@ -124,6 +141,20 @@ public final class RobotBody {
         }
         stallBits = STALL_LEFT | STALL_RIGHT | bumperBits(contact.x, contact.y);
         applyBumpStall();
+      } else if (ds != 0) {
+        // The bump ring gives before the body touches: its switches close while the robot still
+        // moves, as on a real robot, so bumper-driven behaviours see the speed of the impact.
+        Footprint zone = ds > 0 ? frontZone : rearZone;
+        zone.place(nx, ny, Math.toRadians(th + dth));
+        if (world.collides(zone, index, contact) && !escaping(world)) {
+          stallBits = bumperBits(contact.x, contact.y);
+          motion.cushioned(dt);
+          if (motion.isPushing()) {
+            // Pressed against it and not getting anywhere: the motors stall.
+            stallBits |= STALL_LEFT | STALL_RIGHT;
+          }
+          applyBumpStall();
+        }
       }
       if (ds != 0 || dth != 0) {
         double m = Math.toRadians(th + dth / 2);
@@ -133,6 +164,7 @@ public final class RobotBody {
         footprint.place(x, y, Math.toRadians(th));
       }
     }
+    latchedBits |= stallBits;
     lastDs = ds;
     lastDth = dth;
     odometry.update(ds, dth);
@@ -270,7 +302,17 @@ public final class RobotBody {
     return new ArPose(odometry.getX(), odometry.getY(), odometry.getTh());
   }
 
-  /** Stall and bumper bits of the last tick, as in the SIP. */
+  /**
+   * Stall and bumper bits seen in any tick since the last call, then forgotten: what the next SIP
+   * reports, so a bump between two SIPs is not missed.
+   */
+  public int takeLatchedStallBits() {
+    int b = latchedBits | stallBits;
+    latchedBits = 0;
+    return b;
+  }
+
+  /** Stall and bumper bits of the last tick. */
   public int getStallBits() {
     return stallBits;
   }

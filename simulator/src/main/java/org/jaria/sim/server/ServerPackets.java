@@ -84,7 +84,7 @@ public final class ServerPackets {
         (int) Math.round((v - half) / m.getVelConvFactor()),
         (int) Math.round((v + half) / m.getVelConvFactor()));
     sip.setBattery(Math.min(255, io.getBattery()));
-    sip.setStallAndBumpers(b.getStallBits());
+    sip.setStallAndBumpers(b.takeLatchedStallBits());
     // The heading setpoint travels in angle units like THPOS (ARIA reads it that way).
     sip.setControl(
         (int) Math.round(Math.toRadians(mc.getControlHeading(o.getTh())) / m.getAngleConvFactor()));

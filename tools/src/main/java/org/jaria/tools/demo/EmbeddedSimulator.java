@@ -21,8 +21,12 @@ final class EmbeddedSimulator implements AutoCloseable {
   final SimRobot robot;
 
   EmbeddedSimulator(String map, String model, long seed) throws IOException {
+    this(map, RobotOptions.of(model), seed);
+  }
+
+  EmbeddedSimulator(String map, RobotOptions robotOptions, long seed) throws IOException {
     world = SimWorld.create(loadMap(map), SimOptions.builder().seed(seed).basePort(0).build());
-    robot = world.addRobot(RobotOptions.of(model));
+    robot = world.addRobot(robotOptions);
     world.listen();
     world.startRealTime(1.0);
   }
