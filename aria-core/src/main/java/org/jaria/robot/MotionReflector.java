@@ -50,10 +50,9 @@ final class MotionReflector {
   private boolean doStateReflection = true;
   private long refreshNanos = TimeUnit.MILLISECONDS.toNanos(500);
   private long precedenceMs;
-  private boolean settableVelMaxes = true;
-  private boolean settableAccsDecs = true;
   private boolean hasMoveCommand = true;
   private double vel2Divisor = 20;
+  private final MotionLimits limits = new MotionLimits();
 
   private TransType transType = TransType.NONE;
   private double transVal;
@@ -63,22 +62,6 @@ final class MotionReflector {
   private RotType rotType = RotType.NONE;
   private double rotVal;
   private long rotSetTime;
-
-  private double absMaxTransVel = 5000;
-  private double absMaxRotVel = 500;
-  private double transVelMax;
-  private double rotVelMax;
-  private double transAccel;
-  private double transDecel;
-  private double rotAccel;
-  private double rotDecel;
-
-  private double lastSentTransVelMax;
-  private double lastSentRotVelMax;
-  private double lastSentTransAccel;
-  private double lastSentTransDecel;
-  private double lastSentRotAccel;
-  private double lastSentRotDecel;
 
   private int lastTransVal;
   private int lastTransVal2;
@@ -112,8 +95,7 @@ final class MotionReflector {
 
   synchronized void configure(
       boolean velMaxes, boolean accsDecs, boolean moveCommand, double vel2Div) {
-    settableVelMaxes = velMaxes;
-    settableAccsDecs = accsDecs;
+    limits.configure(velMaxes, accsDecs);
     hasMoveCommand = moveCommand;
     vel2Divisor = vel2Div <= 0 ? 20 : vel2Div;
   }
@@ -144,12 +126,7 @@ final class MotionReflector {
     rotType = RotType.NONE;
     lastTransType = TransType.NONE;
     lastRotType = RotType.NONE;
-    lastSentTransVelMax = 0;
-    lastSentRotVelMax = 0;
-    lastSentTransAccel = 0;
-    lastSentTransDecel = 0;
-    lastSentRotAccel = 0;
-    lastSentRotDecel = 0;
+    limits.forgetSent();
     lastActionTransVal = 0;
     lastActionRotVal = 0;
     lastActionRotStopped = false;
@@ -160,84 +137,9 @@ final class MotionReflector {
     lastPulseSent = now;
   }
 
-  // ---------------------------------------------------------------- limits
-
-  synchronized void setAbsoluteMaxTransVel(double v) {
-    absMaxTransVel = Math.abs(v);
-    if (transVelMax > absMaxTransVel) {
-      transVelMax = absMaxTransVel;
-    }
-  }
-
-  synchronized double getAbsoluteMaxTransVel() {
-    return absMaxTransVel;
-  }
-
-  synchronized void setAbsoluteMaxRotVel(double v) {
-    absMaxRotVel = Math.abs(v);
-    if (rotVelMax > absMaxRotVel) {
-      rotVelMax = absMaxRotVel;
-    }
-  }
-
-  synchronized double getAbsoluteMaxRotVel() {
-    return absMaxRotVel;
-  }
-
-  synchronized boolean setTransVelMax(double v) {
-    if (v <= 0 || v > absMaxTransVel) {
-      return false;
-    }
-    transVelMax = v;
-    return true;
-  }
-
-  synchronized double getTransVelMax() {
-    return transVelMax;
-  }
-
-  synchronized boolean setRotVelMax(double v) {
-    if (v <= 0 || v > absMaxRotVel) {
-      return false;
-    }
-    rotVelMax = v;
-    return true;
-  }
-
-  synchronized double getRotVelMax() {
-    return rotVelMax;
-  }
-
-  synchronized void setTransAccel(double a) {
-    transAccel = Math.abs(a);
-  }
-
-  synchronized double getTransAccel() {
-    return transAccel;
-  }
-
-  synchronized void setTransDecel(double a) {
-    transDecel = Math.abs(a);
-  }
-
-  synchronized double getTransDecel() {
-    return transDecel;
-  }
-
-  synchronized void setRotAccel(double a) {
-    rotAccel = Math.abs(a);
-  }
-
-  synchronized double getRotAccel() {
-    return rotAccel;
-  }
-
-  synchronized void setRotDecel(double a) {
-    rotDecel = Math.abs(a);
-  }
-
-  synchronized double getRotDecel() {
-    return rotDecel;
+  /** The speed and acceleration limits (thread-safe on their own). */
+  MotionLimits limits() {
+    return limits;
   }
 
   // ---------------------------------------------------------------- direct motion
@@ -439,39 +341,10 @@ final class MotionReflector {
     }
   }
 
-  private void sendTransLimits(double velMax, double accel, double decel) {
-    if (settableVelMaxes && Math.abs(lastSentTransVelMax - velMax) >= 1) {
-      sender.comInt(ArCommands.SETV.getNumber(), clampShort(velMax));
-      lastSentTransVelMax = velMax;
-    }
-    if (settableAccsDecs && Math.abs(accel) > 1 && Math.abs(lastSentTransAccel - accel) >= 1) {
-      sender.comInt(ArCommands.SETA.getNumber(), clampShort(accel));
-      lastSentTransAccel = accel;
-    }
-    if (settableAccsDecs && Math.abs(decel) > 1 && Math.abs(lastSentTransDecel - decel) >= 1) {
-      sender.comInt(ArCommands.SETA.getNumber(), -clampShort(decel));
-      lastSentTransDecel = decel;
-    }
-  }
-
-  private void sendRotLimits(double velMax, double accel, double decel) {
-    if (settableVelMaxes && Math.abs(lastSentRotVelMax - velMax) >= 1) {
-      sender.comInt(ArCommands.SETRV.getNumber(), clampShort(velMax));
-      lastSentRotVelMax = velMax;
-    }
-    if (settableAccsDecs && Math.abs(accel) > 1 && Math.abs(lastSentRotAccel - accel) >= 1) {
-      sender.comInt(ArCommands.SETRA.getNumber(), clampShort(accel));
-      lastSentRotAccel = accel;
-    }
-    if (settableAccsDecs && Math.abs(decel) > 1 && Math.abs(lastSentRotDecel - decel) >= 1) {
-      sender.comInt(ArCommands.SETRA.getNumber(), -clampShort(decel));
-      lastSentRotDecel = decel;
-    }
-  }
-
   private void reflectDirectTrans(long now, RobotStatus s) {
     actionTransSet = false;
-    sendTransLimits(transVelMax, transAccel, transDecel);
+    double transVelMax = limits.getTransVelMax();
+    limits.sendTrans(sender, transVelMax, limits.getTransAccel(), limits.getTransDecel());
     int val = clampShort(transVal);
     int val2 = 0;
     boolean refresh = now - lastTransSent >= refreshNanos;
@@ -518,7 +391,7 @@ final class MotionReflector {
         return;
       }
       tryingToMove = true;
-      double v = Math.min(Math.sqrt(toGo * 200 * 2), transVelMax);
+      double v = Math.min(Math.sqrt(toGo * 200 * 2), limits.getTransVelMax());
       sender.comInt(ArCommands.VEL.getNumber(), clampShort(transVal < 0 ? -v : v));
       lastTransSent = now;
     } else if (transType == TransType.DIST_NEW) {
@@ -537,12 +410,13 @@ final class MotionReflector {
     double accel =
         d.getTransAccelStrength() >= ArActionDesired.MIN_STRENGTH
             ? Math.round(d.getTransAccel())
-            : transAccel;
+            : limits.getTransAccel();
     double decel =
         d.getTransDecelStrength() >= ArActionDesired.MIN_STRENGTH
             ? Math.round(d.getTransDecel())
-            : transDecel;
-    sendTransLimits(transVelMax, accel, decel);
+            : limits.getTransDecel();
+    double transVelMax = limits.getTransVelMax();
+    limits.sendTrans(sender, transVelMax, accel, decel);
     double maxVel =
         d.getMaxVelStrength() >= ArActionDesired.MIN_STRENGTH
             ? Math.min(d.getMaxVel(), transVelMax)
@@ -570,7 +444,7 @@ final class MotionReflector {
 
   private void reflectDirectRot(long now, RobotStatus s, double encoderTransformTh) {
     actionRotSet = false;
-    sendRotLimits(rotVelMax, rotAccel, rotDecel);
+    limits.sendRot(sender, limits.getRotVelMax(), limits.getRotAccel(), limits.getRotDecel());
     int val = clampShort(rotVal);
     boolean refresh = now - lastRotSent >= refreshNanos;
     if (rotType == RotType.HEADING) {
@@ -597,21 +471,16 @@ final class MotionReflector {
     double accel =
         d.getRotAccelStrength() >= ArActionDesired.MIN_STRENGTH
             ? Math.round(d.getRotAccel())
-            : rotAccel;
+            : limits.getRotAccel();
     double decel =
         d.getRotDecelStrength() >= ArActionDesired.MIN_STRENGTH
             ? Math.round(d.getRotDecel())
-            : rotDecel;
-    double velMax = rotVelMax;
+            : limits.getRotDecel();
+    double velMax = limits.getRotVelMax();
     if (d.getMaxRotVelStrength() >= ArActionDesired.MIN_STRENGTH) {
-      // An action's limit is sent even when the robot's own maxima are not settable.
-      velMax = Math.round(Math.min(d.getMaxRotVel(), absMaxRotVel));
-      if (Math.abs(lastSentRotVelMax - velMax) >= 1) {
-        lastSentRotVelMax = velMax;
-        sender.comInt(ArCommands.SETRV.getNumber(), clampShort(velMax));
-      }
+      velMax = limits.sendActionRotVelMax(sender, d.getMaxRotVel());
     }
-    sendRotLimits(velMax, accel, decel);
+    limits.sendRot(sender, velMax, accel, decel);
     boolean stopped;
     boolean heading;
     int val;
@@ -678,7 +547,7 @@ final class MotionReflector {
     return (int) Math.max(-128, Math.min(127, b));
   }
 
-  private static int clampShort(double v) {
+  static int clampShort(double v) {
     long r = Math.round(v);
     return (int) Math.max(-32767, Math.min(32767, r));
   }

@@ -144,82 +144,82 @@ public abstract class RobotMotion extends RobotState {
 
   /** Maximum translational velocity for motion commands and actions, mm/s. */
   public boolean setTransVelMax(double mmPerSec) {
-    return motion.setTransVelMax(mmPerSec);
+    return motion.limits().setTransVelMax(mmPerSec);
   }
 
   /** The maximum translational velocity, mm/s. */
   public double getTransVelMax() {
-    return motion.getTransVelMax();
+    return motion.limits().getTransVelMax();
   }
 
   /** Maximum rotational velocity, deg/s. */
   public boolean setRotVelMax(double degPerSec) {
-    return motion.setRotVelMax(degPerSec);
+    return motion.limits().setRotVelMax(degPerSec);
   }
 
   /** The maximum rotational velocity, deg/s. */
   public double getRotVelMax() {
-    return motion.getRotVelMax();
+    return motion.limits().getRotVelMax();
   }
 
   /** Translational acceleration, mm/s². */
   public void setTransAccel(double a) {
-    motion.setTransAccel(a);
+    motion.limits().setTransAccel(a);
   }
 
   /** The translational acceleration, mm/s². */
   public double getTransAccel() {
-    return motion.getTransAccel();
+    return motion.limits().getTransAccel();
   }
 
   /** Translational deceleration, mm/s². */
   public void setTransDecel(double a) {
-    motion.setTransDecel(a);
+    motion.limits().setTransDecel(a);
   }
 
   /** The translational deceleration, mm/s². */
   public double getTransDecel() {
-    return motion.getTransDecel();
+    return motion.limits().getTransDecel();
   }
 
   /** Rotational acceleration, deg/s². */
   public void setRotAccel(double a) {
-    motion.setRotAccel(a);
+    motion.limits().setRotAccel(a);
   }
 
   /** The rotational acceleration, deg/s². */
   public double getRotAccel() {
-    return motion.getRotAccel();
+    return motion.limits().getRotAccel();
   }
 
   /** Rotational deceleration, deg/s². */
   public void setRotDecel(double a) {
-    motion.setRotDecel(a);
+    motion.limits().setRotDecel(a);
   }
 
   /** The rotational deceleration, deg/s². */
   public double getRotDecel() {
-    return motion.getRotDecel();
+    return motion.limits().getRotDecel();
   }
 
   /** The top translational velocity this robot allows, mm/s (from CONFIGpac or parameters). */
   public double getAbsoluteMaxTransVel() {
-    return motion.getAbsoluteMaxTransVel();
+    return motion.limits().getAbsoluteMaxTransVel();
   }
 
   /** Lowers (or raises) the top translational velocity. */
   public void setAbsoluteMaxTransVel(double mmPerSec) {
-    motion.setAbsoluteMaxTransVel(mmPerSec);
+    motion.limits().setAbsoluteMaxTransVel(mmPerSec);
   }
 
   /** The top rotational velocity this robot allows, deg/s. */
   public double getAbsoluteMaxRotVel() {
-    return motion.getAbsoluteMaxRotVel();
+    return motion.limits().getAbsoluteMaxRotVel();
   }
 
   /** Lowers (or raises) the top rotational velocity. */
   public void setAbsoluteMaxRotVel(double degPerSec) {
-    motion.setAbsoluteMaxRotVel(degPerSec);
+    motion.limits().setAbsoluteMaxRotVel(degPerSec);
   }
 
   // ---------------------------------------------------------------- direct commands

@@ -42,8 +42,8 @@ class VirtualClockTest {
     VirtualClock c = new VirtualClock();
     List<String> woke = new CopyOnWriteArrayList<>();
     CountDownLatch done = new CountDownLatch(2);
-    Thread a = sleeper(c, 300, "a", woke, done);
-    Thread b = sleeper(c, 100, "b", woke, done);
+    Thread a = sleepingThread(c, 300, "a", woke, done);
+    Thread b = sleepingThread(c, 100, "b", woke, done);
     a.start();
     b.start();
     awaitWaiters(c, 2);
@@ -63,7 +63,7 @@ class VirtualClockTest {
     b.join();
   }
 
-  private static Thread sleeper(
+  private static Thread sleepingThread(
       VirtualClock c, long ms, String name, List<String> woke, CountDownLatch done) {
     return new Thread(
         () -> {
