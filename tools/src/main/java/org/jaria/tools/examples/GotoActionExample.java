@@ -55,9 +55,12 @@ public final class GotoActionExample {
     }
 
     System.out.println(
-        "This program will make the robot wander around. It uses some avoidance\n"
-            + "actions if obstacles are detected, otherwise it just has a constant forward\n"
-            + "velocity.\n\nPress CTRL-C to exit.");
+        """
+        This program will make the robot wander around. It uses some avoidance
+        actions if obstacles are detected, otherwise it just has a constant forward
+        velocity.
+
+        Press CTRL-C to exit.""");
 
     ArSonarDevice sonar = new ArSonarDevice();
     robot.addRangeDevice(sonar);
