@@ -137,6 +137,90 @@ public final class SimulatedRobot implements AutoCloseable {
     return true;
   }
 
+  /** What became of a program run with {@link #runProgram}. */
+  public enum ProgramResult {
+    /** The program returned. */
+    FINISHED,
+    /** Simulated time ran out while the program was still going. */
+    TIMED_OUT,
+    /** The program stopped advancing: it runs without ever waiting on the robot's clock. */
+    STUCK,
+    /** The program threw; see {@link #lastProgramFailure()}. */
+    FAILED
+  }
+
+  private volatile Throwable programFailure;
+  private volatile long stuckNanos = TimeUnit.SECONDS.toNanos(5);
+
+  /**
+   * How long {@link #runProgram} waits, in real time, for a program that neither waits on the clock
+   * nor ends before calling it stuck (default 5 s).
+   */
+  public void setStuckTimeout(Duration d) {
+    stuckNanos = d.toNanos();
+  }
+
+  /**
+   * Runs a sequential program — one that commands the robot and waits, like {@code move(1000);
+   * while (!robot.isMoveDone()) robot.getClock().sleepMillis(50);} — on virtual time. The program
+   * runs on a thread of its own; whenever it waits on the robot's clock the world advances a tick,
+   * so simulated time passes only while the program waits, and a run is still deterministic and
+   * fast.
+   *
+   * @param program the program, given the connected robot
+   * @param max the most simulated time to allow
+   * @return how the program ended; a program that busy-waits without the clock is {@link
+   *     ProgramResult#STUCK} after {@link #setStuckTimeout} of real time
+   */
+  public ProgramResult runProgram(java.util.function.Consumer<ArRobot> program, Duration max) {
+    org.jaria.clock.VirtualClock clock = world.getVirtualClock();
+    programFailure = null;
+    Thread t =
+        new Thread(
+            () -> {
+              try {
+                program.accept(robot);
+              } catch (RuntimeException | Error e) {
+                programFailure = e;
+              }
+            },
+            "program-" + simRobot.getName());
+    t.setDaemon(true);
+    long end = clock.nanoTime() + max.toNanos();
+    t.start();
+    try {
+      while (true) {
+        long realDeadline = System.nanoTime() + stuckNanos;
+        while (t.isAlive() && clock.waitingCount() == 0) {
+          if (System.nanoTime() > realDeadline) {
+            t.interrupt();
+            return ProgramResult.STUCK;
+          }
+          Thread.onSpinWait();
+        }
+        if (!t.isAlive()) {
+          t.join();
+          return programFailure == null ? ProgramResult.FINISHED : ProgramResult.FAILED;
+        }
+        if (clock.nanoTime() >= end) {
+          t.interrupt();
+          t.join(TimeUnit.SECONDS.toMillis(5));
+          return ProgramResult.TIMED_OUT;
+        }
+        world.step();
+      }
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+      t.interrupt();
+      return ProgramResult.TIMED_OUT;
+    }
+  }
+
+  /** What the last {@link #runProgram} program threw, or null. */
+  public Throwable lastProgramFailure() {
+    return programFailure;
+  }
+
   /** Disconnects the robot and stops driving it; closes the world if this object created it. */
   @Override
   public void close() {
