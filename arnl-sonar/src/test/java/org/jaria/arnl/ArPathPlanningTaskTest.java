@@ -1,0 +1,279 @@
+package org.jaria.arnl;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import org.jaria.arnl.ArPathPlanningTask.PathPlanningState;
+import org.jaria.arnl.ArPathPlanningTask.PlanMode;
+import org.jaria.config.ArConfigException;
+import org.jaria.geom.ArPose;
+import org.jaria.map.ArMap;
+import org.jaria.robot.ArRobot;
+import org.jaria.sim.client.SimulatedRobot;
+import org.junit.jupiter.api.Test;
+
+class ArPathPlanningTaskTest {
+
+  private static final ArMap OFFICE = ArMap.loadBundled("office");
+
+  /** A robot localized at home with synchronous localization and planning. */
+  private record Rig(SimulatedRobot sim, ArSonarLocalizationTask loc, ArPathPlanningTask path) {
+    ArRobot robot() {
+      return sim.robot();
+    }
+
+    /** Runs until the goal is no longer active; returns whether that happened in time. */
+    boolean finish(Duration max) {
+      return sim.runUntil(() -> !path.isActive(), max);
+    }
+
+    void close() {
+      path.close();
+      loc.close();
+      SimSetup.stop(sim);
+    }
+  }
+
+  private static Rig rig(ArMap map, long seed, PlanMode mode) {
+    SimulatedRobot sim = SimSetup.start(map, seed);
+    ArSonarLocalizationTask loc =
+        ArSonarLocalizationTask.builder(sim.robot(), map)
+            .mode(ArSonarLocalizationTask.UpdateMode.SYNCHRONOUS)
+            .seed(seed)
+            .build();
+    ArPathPlanningTask path = ArPathPlanningTask.builder(sim.robot(), map).mode(mode).build();
+    sim.runMillis(1000);
+    assertTrue(loc.localizeRobotAtHomeBlocking(), "localized at home");
+    return new Rig(sim, loc, path);
+  }
+
+  @Test
+  void everyReachableColumbiaGoalIsReachedAndTheImpossibleOnesFailFast() {
+    ArMap columbia = SimSetup.columbia();
+    Rig r = rig(columbia, 1, PlanMode.SYNCHRONOUS);
+    try {
+      List<ArPose> done = new ArrayList<>();
+      List<ArPose> failed = new ArrayList<>();
+      r.path().addGoalDoneCB(done::add);
+      r.path().addGoalFailedCB(failed::add);
+      List<String> reachable =
+          List.of(
+              "Goal 3",
+              "Goal 1",
+              "Goal 2",
+              "Hallway 1",
+              "Hallway 2",
+              "Side door",
+              "Workshop",
+              "Lobby door");
+      for (String g : reachable) {
+        assertTrue(r.path().pathPlanToGoal(g), g + ": " + r.path().getStatusString());
+        assertTrue(r.finish(Duration.ofMinutes(5)), g + " finished");
+        assertEquals(
+            PathPlanningState.REACHED_GOAL, r.path().getState(), r.path().getStatusString());
+        ArPose goal = columbia.findMapObject(g).orElseThrow().pose();
+        assertTrue(
+            r.sim().sim().getTruePose().findDistanceTo(goal) < 350,
+            g + ": stopped at " + r.sim().sim().getTruePose());
+      }
+      assertEquals(reachable.size(), done.size());
+      assertEquals(0, failed.size());
+      // Every goal of the map is either reached above or refused below.
+      assertEquals(reachable.size() + 2, columbia.getGoals().size());
+
+      long before = r.robot().getClock().nanoTime();
+      assertFalse(r.path().pathPlanToGoal("impossible goal"), "case-insensitive name");
+      assertEquals(PathPlanningState.FAILED_PLAN, r.path().getState());
+      assertTrue(r.path().getStatusString().contains("no path"), r.path().getStatusString());
+      assertFalse(r.path().pathPlanToGoal("Inside Forbidden Area"));
+      assertEquals(PathPlanningState.GOAL_IN_OBSTACLE, r.path().getState());
+      assertTrue(r.path().getStatusString().contains("forbidden area"), r.path().getStatusString());
+      assertEquals(before, r.robot().getClock().nanoTime(), "refused without driving");
+      assertEquals(2, failed.size());
+      assertTrue(r.path().getLastPlanMillis() < 2000, "fails fast");
+    } finally {
+      r.close();
+    }
+  }
+
+  @Test
+  void aGoalBehindADoorIsReachedThroughTheDoor() {
+    Rig r = rig(OFFICE, 2, PlanMode.SYNCHRONOUS);
+    try {
+      assertTrue(r.path().pathPlanToGoal("Lab Entrance"));
+      assertEquals(PathPlanningState.MOVING_TO_GOAL, r.path().getState());
+      List<ArPose> path = r.path().getCurrentPath();
+      assertFalse(path.isEmpty());
+      // The lab's door is the gap 10750..11750 in the wall at y = 8500.
+      boolean throughDoor = false;
+      for (int i = 1; i < path.size(); i++) {
+        ArPose a = path.get(i - 1);
+        ArPose b = path.get(i);
+        if ((a.y() - 8500) * (b.y() - 8500) <= 0) {
+          throughDoor = a.x() > 10900 && a.x() < 11600;
+        }
+      }
+      assertTrue(throughDoor, "the path crosses the wall line inside the door");
+      double[] closest = {Double.MAX_VALUE};
+      r.robot()
+          .addUserTask(
+              "doorClearance",
+              5,
+              () -> {
+                ArPose t = r.sim().sim().getTruePose();
+                if (Math.abs(t.y() - 8500) < 300) {
+                  closest[0] = Math.min(closest[0], Math.min(t.x() - 10750, 11750 - t.x()));
+                }
+              });
+      assertTrue(r.finish(Duration.ofMinutes(3)));
+      assertEquals(PathPlanningState.REACHED_GOAL, r.path().getState());
+      ArPose t = r.sim().sim().getTruePose();
+      assertTrue(t.findDistanceTo(new ArPose(11250, 7700)) < 350, "at " + t);
+      assertTrue(Math.abs(t.th() - -90) < 15, "turned to the goal's heading: " + t);
+      assertTrue(closest[0] > 212, "kept clear of the door frame: " + closest[0]);
+    } finally {
+      r.close();
+    }
+  }
+
+  @Test
+  void anObstacleAcrossThePathIsDrivenAround() {
+    Rig r = rig(OFFICE, 3, PlanMode.SYNCHRONOUS);
+    try {
+      // A 0.4 m x 1 m box against the north wall of the corridor, right on the path: a 1 m gap.
+      r.sim().world().injectBox(12000, 10000, 400, 1000, 0);
+      double[] closest = {Double.MAX_VALUE};
+      r.robot()
+          .addUserTask(
+              "boxClearance",
+              5,
+              () -> {
+                ArPose t = r.sim().sim().getTruePose();
+                double dx = Math.max(0, Math.max(11800 - t.x(), t.x() - 12200));
+                double dy = Math.max(0, Math.max(9500 - t.y(), t.y() - 10500));
+                closest[0] = Math.min(closest[0], Math.hypot(dx, dy));
+              });
+      assertTrue(r.path().pathPlanToGoal("Corridor East"));
+      assertTrue(r.finish(Duration.ofMinutes(4)));
+      assertEquals(PathPlanningState.REACHED_GOAL, r.path().getState(), r.path().getStatusString());
+      assertTrue(closest[0] > 212, "the robot's centre came within " + closest[0] + " mm");
+      assertFalse(r.path().getSensedObstacles().isEmpty() && closest[0] < 400);
+    } finally {
+      r.close();
+    }
+  }
+
+  @Test
+  void manyIntermediateGoalsDoNotDegradeLocalization() {
+    // The thesis's robot got lost when given many intermediate goals (§7.1): here a goal never
+    // touches localization, so eight short legs are as good as one long one.
+    Rig r = rig(OFFICE, 8, PlanMode.SYNCHRONOUS);
+    try {
+      double worst = 0;
+      for (double x = 4500; x <= 25500; x += 3000) {
+        assertTrue(r.path().pathPlanToPose(new ArPose(x, 9500, 0), false));
+        assertTrue(r.finish(Duration.ofMinutes(1)));
+        assertEquals(
+            PathPlanningState.REACHED_GOAL, r.path().getState(), r.path().getStatusString());
+        worst = Math.max(worst, r.sim().sim().getTruePose().findDistanceTo(r.robot().getPose()));
+      }
+      assertTrue(worst < 150, "localization error at the goals reached " + worst + " mm");
+      assertEquals(LockState.LOCKED, r.loc().getLockState());
+    } finally {
+      r.close();
+    }
+  }
+
+  @Test
+  void cancellingAndReplacingGoalsInterruptThem() {
+    Rig r = rig(OFFICE, 4, PlanMode.SYNCHRONOUS);
+    try {
+      List<ArPose> interrupted = new ArrayList<>();
+      List<ArPose> fresh = new ArrayList<>();
+      int[] finished = {0};
+      r.path().addGoalInterruptedCB(interrupted::add);
+      r.path().addNewGoalCB(fresh::add);
+      r.path().addGoalFinishedCB(() -> finished[0]++);
+      assertTrue(r.path().pathPlanToGoal("Corridor East"));
+      r.sim().runMillis(3000);
+      assertTrue(r.robot().getVel() > 100, "moving");
+      assertTrue(r.path().pathPlanToPose(new ArPose(4000, 9500, 180), true));
+      assertEquals(1, interrupted.size(), "the first goal was replaced");
+      assertEquals(26000, interrupted.get(0).x(), 1);
+      r.sim().runMillis(2000);
+      r.path().cancelPathPlan();
+      assertEquals(PathPlanningState.ABORTED_PATHPLAN, r.path().getState());
+      assertEquals(2, interrupted.size());
+      assertEquals(2, fresh.size());
+      assertEquals(2, finished[0]);
+      r.sim().runMillis(3000);
+      assertEquals(0, r.robot().getVel(), 20, "stopped after the cancel");
+      assertTrue(r.path().getLocalSearchArea().size() == 4);
+    } finally {
+      r.close();
+    }
+  }
+
+  @Test
+  void refusesGoalsOffTheMapAndUnknownNames() {
+    Rig r = rig(OFFICE, 5, PlanMode.SYNCHRONOUS);
+    try {
+      assertFalse(r.path().pathPlanToPose(new ArPose(90_000, 0, 0), false));
+      assertEquals(PathPlanningState.GOAL_OUT_OF_BOUNDS, r.path().getState());
+      assertTrue(r.path().getFailureString().contains("outside the map"));
+      assertFalse(r.path().pathPlanToPose(new ArPose(13500, 6500, 0), false));
+      assertEquals(PathPlanningState.GOAL_IN_OBSTACLE, r.path().getState());
+      assertFalse(r.path().pathPlanToPose(new ArPose(3000, 8500, 0), false), "on a wall");
+      assertEquals(PathPlanningState.GOAL_IN_OBSTACLE, r.path().getState());
+      assertTrue(r.path().getStatusString().contains("too close"), r.path().getStatusString());
+      assertFalse(r.path().pathPlanToGoal("Room 999"));
+      assertTrue(r.path().getStatusString().contains("Room 101"), "lists the goals");
+    } finally {
+      r.close();
+    }
+  }
+
+  @Test
+  void threadedPlanningReachesTheGoalToo() {
+    Rig r = rig(OFFICE, 6, PlanMode.THREADED);
+    try {
+      assertTrue(r.path().pathPlanToGoal("Room 101"));
+      assertTrue(r.finish(Duration.ofMinutes(3)));
+      assertEquals(PathPlanningState.REACHED_GOAL, r.path().getState(), r.path().getStatusString());
+    } finally {
+      r.close();
+    }
+  }
+
+  @Test
+  void parametersLoadFromAnArnlStyleFile() throws Exception {
+    Rig r = rig(OFFICE, 7, PlanMode.SYNCHRONOUS);
+    try {
+      r.path()
+          .getConfig()
+          .parseText("Section Path planning\nMaxSpeed 250\nGoalDistanceTolerance 150\n", "arnl.p");
+      assertEquals(250, r.path().getParams().getMaxSpeed());
+      assertTrue(r.path().pathPlanToGoal("Corridor West"));
+      double[] top = {0};
+      r.robot().addUserTask("speed", 5, () -> top[0] = Math.max(top[0], r.robot().getVel()));
+      assertTrue(r.finish(Duration.ofMinutes(2)));
+      assertEquals(PathPlanningState.REACHED_GOAL, r.path().getState());
+      assertTrue(top[0] <= 280, "kept to MaxSpeed: " + top[0]);
+      ArConfigException e =
+          org.junit.jupiter.api.Assertions.assertThrows(
+              ArConfigException.class,
+              () ->
+                  r.path()
+                      .getConfig()
+                      .parseText("Section Path planning\nMaxSpeed fast\n", "bad.p"));
+      assertEquals(2, e.getLine());
+      assertEquals(250, r.path().getParams().getMaxSpeed());
+    } finally {
+      r.close();
+    }
+  }
+}
