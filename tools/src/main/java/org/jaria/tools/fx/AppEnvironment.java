@@ -1,0 +1,33 @@
+package org.jaria.tools.fx;
+
+import java.util.function.Function;
+import javafx.stage.Window;
+
+/**
+ * What an app gets from whoever starts it: where its settings live and how it asks the user things.
+ * The command line passes the user's settings and real dialogs; tests and {@code jaria screenshot}
+ * pass in-memory settings and scripted answers.
+ *
+ * @param prefs the app's remembered settings
+ * @param prompts makes the dialogs for a window
+ * @param interactive false when nobody uses the window ({@code jaria screenshot}): apps then open
+ *     no network ports and start no servers
+ */
+public record AppEnvironment(
+    AppPrefs prefs, Function<Window, Prompts> prompts, boolean interactive) {
+
+  /** The user's settings of {@code appName} and real dialogs. */
+  public static AppEnvironment forUser(String appName) {
+    return new AppEnvironment(AppPrefs.forApp(appName), FxPrompts::new, true);
+  }
+
+  /** In-memory settings and the given answers (tests). */
+  public static AppEnvironment scripted(Prompts prompts) {
+    return new AppEnvironment(AppPrefs.inMemory(), w -> prompts, true);
+  }
+
+  /** In-memory settings, collected errors, no ports or servers ({@code jaria screenshot}). */
+  public static AppEnvironment headless(HeadlessPrompts prompts) {
+    return new AppEnvironment(AppPrefs.inMemory(), w -> prompts, false);
+  }
+}

@@ -1,0 +1,24 @@
+package org.jaria.tools.mapper;
+
+/**
+ * Something wrong with a map, found by {@link MapValidator} before saving.
+ *
+ * @param severity how bad it is
+ * @param message what is wrong and what to do, for people
+ * @param itemId the editor number of the object concerned, or -1
+ */
+public record MapProblem(Severity severity, String message, long itemId) {
+
+  /** How bad a problem is. */
+  public enum Severity {
+    /** The map will not work as intended (a goal no robot can reach). */
+    ERROR,
+    /** Probably a mistake (a goal without a name). */
+    WARNING
+  }
+
+  @Override
+  public String toString() {
+    return (severity == Severity.ERROR ? "Error: " : "Warning: ") + message;
+  }
+}

@@ -1,0 +1,158 @@
+package org.jaria.tools.mapper;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.jaria.map.ArMapObject;
+import org.jaria.map.ArMapPoints;
+import org.jaria.tools.mapper.MapProblem.Severity;
+
+/**
+ * Checks a map before it is saved, the way a navigation program will use it: the home and goals
+ * must be where a robot can stand (not inside a forbidden area, not in a wall), goals need unique
+ * names, areas need a size.
+ */
+public final class MapValidator {
+
+  /** A Pioneer 3-DX's radius, mm: a goal closer than this to a wall cannot be reached. */
+  public static final double DEFAULT_ROBOT_RADIUS = 250;
+
+  private final double robotRadius;
+
+  /** A validator for robots of {@link #DEFAULT_ROBOT_RADIUS}. */
+  public MapValidator() {
+    this(DEFAULT_ROBOT_RADIUS);
+  }
+
+  /** A validator for robots of radius {@code robotRadius} mm. */
+  public MapValidator(double robotRadius) {
+    this.robotRadius = robotRadius;
+  }
+
+  /** Every problem of {@code content}, errors first, in map order. */
+  public List<MapProblem> validate(MapContent content) {
+    List<MapProblem> errors = new ArrayList<>();
+    List<MapProblem> warnings = new ArrayList<>();
+    List<MapObjectEntry> areas = new ArrayList<>();
+    boolean home = false;
+    Map<String, Integer> goalNames = new HashMap<>();
+    for (MapObjectEntry e : content.objects()) {
+      ArMapObject o = e.object();
+      if (o.isAreaType() && o.type().equals(ObjectKind.FORBIDDEN_AREA.type())) {
+        areas.add(e);
+      }
+      if (o.isGoal() && !o.name().isBlank()) {
+        goalNames.merge(o.name().toLowerCase(Locale.ROOT), 1, Integer::sum);
+      }
+    }
+    for (MapObjectEntry e : content.objects()) {
+      ArMapObject o = e.object();
+      ObjectKind kind = ObjectKind.of(o.type());
+      if (kind == ObjectKind.HOME) {
+        home = true;
+      }
+      if (o.isAreaType()) {
+        double[] size = MapGeometry.areaSize(o);
+        if (size[0] < 1 || size[1] < 1) {
+          warnings.add(
+              new MapProblem(
+                  Severity.WARNING,
+                  describe(o)
+                      + " has no area ("
+                      + fmt(size[0])
+                      + " × "
+                      + fmt(size[1])
+                      + " mm)"
+                      + ": draw it again or delete it",
+                  e.id()));
+        }
+        continue;
+      }
+      if (kind == null || o.hasFromTo()) {
+        continue;
+      }
+      double x = o.pose().x();
+      double y = o.pose().y();
+      for (MapObjectEntry a : areas) {
+        if (a.object().contains(x, y)) {
+          errors.add(
+              new MapProblem(
+                  Severity.ERROR,
+                  describe(o)
+                      + " is inside a forbidden area: a robot may not go there; move it out or"
+                      + " shrink the area",
+                  e.id()));
+          break;
+        }
+      }
+      double wall = nearestObstacle(content, x, y);
+      if (wall < robotRadius) {
+        errors.add(
+            new MapProblem(
+                Severity.ERROR,
+                describe(o)
+                    + " is "
+                    + fmt(wall)
+                    + " mm from a wall: a robot of radius "
+                    + fmt(robotRadius)
+                    + " mm cannot stand there; move it into free space",
+                e.id()));
+      }
+      if (kind.isGoal()) {
+        if (o.name().isBlank()) {
+          warnings.add(
+              new MapProblem(
+                  Severity.WARNING,
+                  describe(o) + " has no name: clients list goals by name; rename it",
+                  e.id()));
+        } else if (goalNames.getOrDefault(o.name().toLowerCase(Locale.ROOT), 0) > 1) {
+          warnings.add(
+              new MapProblem(
+                  Severity.WARNING,
+                  describe(o) + ": another goal has the same name; give each goal its own",
+                  e.id()));
+        }
+      }
+    }
+    if (!home && !content.objects().isEmpty()) {
+      warnings.add(
+          new MapProblem(
+              Severity.WARNING,
+              "the map has no home: localization will start at the origin; add a home with the"
+                  + " Home tool",
+              -1));
+    }
+    errors.addAll(warnings);
+    return errors;
+  }
+
+  /** Distance from (x, y) to the nearest wall line or sensor point, mm (infinite if none). */
+  static double nearestObstacle(MapContent content, double x, double y) {
+    double best = Double.POSITIVE_INFINITY;
+    for (MapLine l : content.lines()) {
+      best = Math.min(best, MapGeometry.segmentDistance(l.segment(), x, y));
+    }
+    ArMapPoints p = content.points();
+    double best2 = best * best;
+    for (int i = 0; i < p.size(); i++) {
+      double dx = p.x(i) - x;
+      double dy = p.y(i) - y;
+      best2 = Math.min(best2, dx * dx + dy * dy);
+    }
+    return Math.sqrt(best2);
+  }
+
+  /** "goal 'Lobby' at (-1860, -22440)". */
+  static String describe(ArMapObject o) {
+    String what = ObjectKind.describe(o.type());
+    String name = o.name().isBlank() ? "" : " '" + o.name() + "'";
+    double[] c = MapGeometry.center(o);
+    return what + name + " at (" + fmt(c[0]) + ", " + fmt(c[1]) + ")";
+  }
+
+  private static String fmt(double v) {
+    return String.format(Locale.ROOT, "%.0f", v);
+  }
+}

@@ -1,0 +1,76 @@
+package org.jaria.tools.simview;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.util.concurrent.Callable;
+import org.jaria.sim.SimRobot;
+import org.jaria.sim.SimWorld;
+import org.jaria.sim.cli.SimCommand;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Model.OptionSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code jaria sim [--gui] ...}: the simulator command with a window. Every option of {@link
+ * SimCommand} works as before; with {@code --gui} the world is also drawn live in the simulator
+ * view (the robots still listen on TCP), and closing the window ends the simulator.
+ *
+ * <p>Register this class instead of {@link SimCommand} to give {@code jaria sim} its {@code --gui}
+ * option.
+ */
+@Command(
+    name = "sim",
+    description = {
+      "Runs a simulated world with ARCOS robots on TCP ports 8101, 8102, ... (a MobileSim analogue).",
+      "Connect any ARIA client (e.g. -remoteHost localhost -remoteRobotTcpPort 8101). Ctrl-C stops;"
+          + " with --gui, closing the window stops."
+    })
+public final class SimGuiCommand implements Callable<Integer> {
+
+  @Spec CommandSpec spec;
+
+  @Mixin SimCommand sim = new SimCommand();
+
+  @Option(names = "--gui", description = "Show the world in a window (the simulator view).")
+  boolean gui;
+
+  @Override
+  public Integer call() throws Exception {
+    if (!gui) {
+      return sim.call();
+    }
+    PrintWriter out = spec.commandLine().getOut();
+    PrintWriter err = spec.commandLine().getErr();
+    SimWorld world = sim.createWorld();
+    try {
+      world.listen();
+      for (SimRobot r : world.getRobots()) {
+        out.printf(
+            "robot %s (%s) listening on TCP port %d%n",
+            r.getName(), r.getModel().getSubtype(), r.getPort());
+      }
+      out.println("close the window to stop the simulator");
+      out.flush();
+      return SimViewCommand.showUntilClosed(world, speedup(), err);
+    } catch (IOException e) {
+      err.println("sim: " + e.getMessage());
+      return 1;
+    } finally {
+      world.close();
+    }
+  }
+
+  /** The pacing the options ask for: --lockstep runs unthrottled, else --speedup (default 1). */
+  double speedup() {
+    OptionSpec lockstep = spec.findOption("--lockstep");
+    if (lockstep != null && Boolean.TRUE.equals(lockstep.getValue())) {
+      return 0;
+    }
+    OptionSpec s = spec.findOption("--speedup");
+    Object v = s == null ? null : s.getValue();
+    return v instanceof Double d ? d : 1;
+  }
+}

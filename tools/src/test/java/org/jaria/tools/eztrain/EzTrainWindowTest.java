@@ -1,0 +1,330 @@
+package org.jaria.tools.eztrain;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.Semaphore;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
+import javafx.geometry.Point2D;
+import javafx.scene.Node;
+import javafx.scene.input.KeyCode;
+import javafx.scene.input.MouseButton;
+import javafx.stage.Stage;
+import org.jaria.acts.ArACTSBlob;
+import org.jaria.acts.ArACTS_1_2;
+import org.jaria.acts.blob.Blob;
+import org.jaria.acts.color.Channel;
+import org.jaria.acts.color.ChannelLutFile;
+import org.jaria.acts.color.ColorPlane;
+import org.jaria.acts.color.PlaneLimits;
+import org.jaria.acts.image.ImageSource;
+import org.jaria.acts.image.TestScene;
+import org.jaria.tools.fx.AppEnvironment;
+import org.jaria.tools.fx.FxRuntime;
+import org.jaria.tools.fx.ScriptedPrompts;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
+import org.junit.jupiter.api.io.TempDir;
+import org.testfx.api.FxRobot;
+import org.testfx.framework.junit5.ApplicationExtension;
+import org.testfx.framework.junit5.Start;
+import org.testfx.util.WaitForAsyncUtils;
+
+/**
+ * EZ-Train driven like the thesis's tutorial (§5.3.12): load the tutorial image, select channel 1,
+ * drag a rectangle over the red book, look at the Thresh view and the blob stats, save the channel
+ * and load it again; a robot program sees the blobs through the ACTS server meanwhile.
+ */
+@ExtendWith(ApplicationExtension.class)
+class EzTrainWindowTest {
+
+  @TempDir Path dir;
+
+  private final ScriptedPrompts prompts = new ScriptedPrompts();
+  private EzTrainWindow window;
+
+  @Start
+  void start(Stage stage) {
+    EzTrainOptions o = EzTrainOptions.defaults().withPort(0).withBaseDir(dir);
+    window = new EzTrainWindow(stage, AppEnvironment.scripted(prompts), o);
+    window.show();
+  }
+
+  @AfterEach
+  void close() {
+    FxRuntime.run(() -> window.stage().hide(), 10);
+    window.close();
+  }
+
+  /** The first image is shown and laid out (the training image has its size and place). */
+  private void awaitReady() throws Exception {
+    window.ready().get(20, TimeUnit.SECONDS);
+    WaitForAsyncUtils.waitForFxEvents();
+  }
+
+  private void settle() throws Exception {
+    assertTrue(window.work().awaitIdle(30, TimeUnit.SECONDS), "worker idle");
+    window.refresh().get(20, TimeUnit.SECONDS);
+    WaitForAsyncUtils.waitForFxEvents();
+  }
+
+  private static String read(Path p) {
+    try {
+      return Files.readString(p);
+    } catch (IOException e) {
+      return e.toString();
+    }
+  }
+
+  /** Screen point of image pixel (x, y) of the training image. */
+  private Point2D pixel(FxRobot robot, int x, int y) {
+    Node pane = robot.lookup("#training-image").query();
+    int m = 3;
+    return pane.localToScreen((x + 0.5) * m, (y + 0.5) * m);
+  }
+
+  @Test
+  void tutorialTrainThreshStatsSaveReload(FxRobot robot) throws Exception {
+    awaitReady();
+    Path image = dir.resolve("test.ppm");
+    try (InputStream in = getClass().getResourceAsStream(TestScene.PPM_RESOURCE)) {
+      Files.copy(in, image);
+    }
+    // Step 2: File → Load Image.
+    prompts.files.add(image);
+    robot.clickOn("File").clickOn("Load Image…");
+    settle();
+    assertTrue(window.outputText().contains("test.ppm"), window::outputText);
+
+    // Step 3: channel 1 (after visiting channel 2), two blobs tracked.
+    robot.clickOn("#channel-btn-2");
+    robot.clickOn("#channel-btn-1");
+    robot.clickOn("#tracked-blobs .decrement-arrow-button");
+    settle();
+    assertEquals(1, window.session().channel());
+    assertEquals(2, window.session().bank().getTrackedBlobs(1));
+
+    // Step 4: Add, drag a rectangle inside the red book (160x120 coordinates).
+    TestScene.Box book = TestScene.BOOK.scaled(160, 120);
+    robot.clickOn("#tool-add");
+    robot
+        .drag(pixel(robot, book.x0() + 1, book.y0() + 1), MouseButton.PRIMARY)
+        .dropTo(pixel(robot, book.x1() - 1, book.y1() - 1));
+    settle();
+    assertFalse(window.session().bank().copyOf(1).isEmpty());
+
+    // Step 6: Thresh view with key 2: channel pixels white, the rest black.
+    robot.moveTo(pixel(robot, 80, 20)).type(KeyCode.DIGIT2);
+    settle();
+    Rendered r = window.lastRendered();
+    assertEquals(ViewMode.THRESH, r.mode());
+    int w = r.frame().width();
+    int cx = (book.x0() + book.x1()) / 2;
+    int cy = (book.y0() + book.y1()) / 2;
+    assertEquals(0xFFFFFFFF, r.viewArgb()[cy * w + cx], "book centre is white");
+    assertEquals(0xFF000000, r.viewArgb()[5 * w + 5], "background is black");
+
+    // Step 7: Info → Blob stats: the book is the largest blob, inside its extent.
+    robot.press(KeyCode.CONTROL).type(KeyCode.B).release(KeyCode.CONTROL);
+    WaitForAsyncUtils.waitForFxEvents();
+    assertTrue(window.outputText().contains("Channel 1: 2 blob(s)"), window::outputText);
+    List<Blob> blobs = r.blobs();
+    assertEquals(2, blobs.size());
+    Blob biggest = blobs.get(0);
+    TestScene.Box extent = TestScene.BOOK_EXTENT.scaled(160, 120);
+    assertTrue(extent.contains(biggest.xcg(), biggest.ycg()), biggest::toString);
+    assertTrue(
+        biggest.area() > (book.x1() - book.x0()) * (book.y1() - book.y0()), biggest::toString);
+
+    // A robot program sees the same blobs through the ACTS server.
+    assertTrue(window.awaitServerFrames(20_000), "the server tracks frames");
+    try (ArACTS_1_2 acts = new ArACTS_1_2()) {
+      assertTrue(acts.openPort("localhost", window.serverPort()), acts::getOpenMessage);
+      acts.setReadTimeouts(10_000, 10_000); // a loaded machine must not fail the test
+      assertTrue(acts.requestPacket(), "request sent");
+      assertTrue(acts.receiveBlobInfo(), "reply received");
+      assertEquals(2, acts.getNumBlobs(1));
+      ArACTSBlob b = new ArACTSBlob();
+      assertTrue(acts.getBlob(1, 1, b));
+      assertEquals(biggest.area(), b.getArea());
+    }
+
+    // Step 8: save the channel (channel1.lut in the working folder).
+    robot.clickOn("#channel-save");
+    settle();
+    Path lut = dir.resolve("channel1.lut");
+    assertTrue(Files.isRegularFile(lut), window::outputText);
+    Channel saved = ChannelLutFile.read(lut);
+    assertTrue(saved.contentEquals(window.session().bank().copyOf(1)), "saved = trained");
+
+    // Step 9: File → Save Runtime Config lists the channel and its two blobs.
+    Path cfg = dir.resolve("actsconfig");
+    prompts.files.add(cfg);
+    robot.clickOn("File").clickOn("Save Runtime Config…");
+    settle();
+    assertTrue(Files.readString(cfg).contains("Channel 1 channel1.lut 2"), () -> read(cfg));
+
+    // Clear the training (confirmed), then load the channel back.
+    robot.clickOn("#clear-training");
+    settle();
+    assertTrue(window.session().bank().copyOf(1).isEmpty(), "cleared");
+    assertTrue(window.lastRendered().blobs().isEmpty(), "no blobs once cleared");
+    robot.clickOn("#channel-load");
+    settle();
+    assertTrue(window.session().bank().copyOf(1).contentEquals(saved), "loaded = saved");
+    assertEquals(blobs, window.lastRendered().blobs());
+    assertTrue(prompts.errors.isEmpty(), prompts.errors::toString);
+  }
+
+  @Test
+  void rightClickCyclesViewsAndUndoRevertsTraining(FxRobot robot) throws Exception {
+    awaitReady();
+    TestScene.Box cup = TestScene.CUP.scaled(160, 120);
+    robot
+        .drag(pixel(robot, cup.x0(), cup.y0()), MouseButton.PRIMARY)
+        .dropTo(pixel(robot, cup.x1(), cup.y1()));
+    settle();
+    assertFalse(window.session().bank().copyOf(1).isEmpty());
+    robot.clickOn(pixel(robot, 10, 10), MouseButton.SECONDARY);
+    settle();
+    assertEquals(ViewMode.THRESH, window.lastRendered().mode());
+    robot.clickOn(pixel(robot, 10, 10), MouseButton.SECONDARY);
+    settle();
+    assertEquals(ViewMode.RAW, window.lastRendered().mode());
+    robot.clickOn("#undo");
+    settle();
+    assertTrue(window.session().bank().copyOf(1).isEmpty());
+    // Pick prints the pixel's colour.
+    robot.clickOn("#tool-pick");
+    robot.clickOn(pixel(robot, (cup.x0() + cup.x1()) / 2, (cup.y0() + cup.y1()) / 2));
+    WaitForAsyncUtils.waitForFxEvents();
+    assertTrue(window.outputText().matches("(?s).*Pick \\(\\d+, \\d+\\): R \\d+ G \\d+ B \\d+.*"));
+  }
+
+  @Test
+  void manualTrainingPlanesAndSliders(FxRobot robot) throws Exception {
+    awaitReady();
+    TestScene.Box book = TestScene.BOOK.scaled(160, 120);
+    robot
+        .drag(pixel(robot, book.x0(), book.y0()), MouseButton.PRIMARY)
+        .dropTo(pixel(robot, book.x1(), book.y1()));
+    settle();
+    robot.clickOn("Manual training");
+    settle();
+    Rendered r = window.lastRendered();
+    assertEquals(3, r.planes().length);
+    assertEquals(256, r.planeSize());
+    int trained = 0;
+    for (int p : r.planes()[0]) {
+      trained += p == 0xFFFFFFFF ? 1 : 0;
+    }
+    assertEquals(window.session().bank().copyOf(1).trainedCells(ColorPlane.RG), trained);
+
+    // High Bright down with the keyboard: dark red stays, nothing bright is left.
+    robot.clickOn("#plane-rg-high");
+    for (int i = 0; i < 3; i++) {
+      robot.type(KeyCode.LEFT);
+    }
+    settle();
+    PlaneLimits l = window.session().bank().copyOf(1).getLimits(ColorPlane.RG);
+    assertTrue(l.highBright() < PlaneLimits.MAX_BRIGHT, l::toString);
+    robot.clickOn("#plane-rg-reset");
+    settle();
+    assertEquals(PlaneLimits.NONE, window.session().bank().copyOf(1).getLimits(ColorPlane.RG));
+
+    robot.clickOn("#plane-bg-clear");
+    settle();
+    assertEquals(0, window.session().bank().copyOf(1).trainedCells(ColorPlane.BG));
+    assertTrue(
+        window.lastRendered().blobs().isEmpty(), "a channel with an empty plane sees nothing");
+    robot.clickOn("#plane-bg-fill");
+    settle();
+    assertEquals(256 * 256, window.session().bank().copyOf(1).trainedCells(ColorPlane.BG));
+    assertFalse(window.lastRendered().blobs().isEmpty());
+  }
+
+  @Test
+  void liveVideoFromAnyImageSourceAndSingleFrameGrabs(FxRobot robot) throws Exception {
+    awaitReady();
+    CountingSource src = new CountingSource(160, 120);
+    FxRuntime.run(() -> window.useVideoSource(src), 10);
+    assertTrue(src.frames.tryAcquire(3, 10, TimeUnit.SECONDS), "continuous video");
+    assertEquals(160, window.session().frame().width());
+    robot.clickOn("#grab-single");
+    WaitForAsyncUtils.waitForFxEvents();
+    src.frames.drainPermits();
+    robot.clickOn("#grab-frame");
+    assertTrue(src.frames.tryAcquire(1, 10, TimeUnit.SECONDS), "one grabbed frame");
+    int shade = window.session().frame().get(0, 0) & 0xFF;
+    assertEquals(src.count.get() & 0xFF, shade);
+    robot.press(KeyCode.CONTROL).type(KeyCode.T).release(KeyCode.CONTROL);
+    WaitForAsyncUtils.waitForFxEvents();
+    assertTrue(window.outputText().contains("frames/s"), window::outputText);
+    FxRuntime.run(window::close, 10);
+    assertTrue(src.closed.get(), "the source is closed with the window");
+  }
+
+  @Test
+  void missingCameraAndSimulatorCameraSayWhatToDo(FxRobot robot) throws Exception {
+    awaitReady();
+    prompts.texts.add(dir.resolve("no-such-camera").toString());
+    robot.clickOn("File").clickOn("Live Video (Camera)…");
+    assertTrue(window.work().awaitIdle(20, TimeUnit.SECONDS));
+    WaitForAsyncUtils.waitForFxEvents();
+    assertEquals(1, prompts.errors.size(), prompts.errors::toString);
+    assertTrue(prompts.errors.get(0).contains("no camera or video file"), prompts.errors::toString);
+    assertTrue(prompts.errors.get(0).contains("Load Image"), prompts.errors::toString);
+    robot.clickOn("File").clickOn("Simulator Camera");
+    assertTrue(window.work().awaitIdle(20, TimeUnit.SECONDS));
+    WaitForAsyncUtils.waitForFxEvents();
+    assertEquals(2, prompts.errors.size());
+    assertTrue(prompts.errors.get(1).contains("simulator's camera"), prompts.errors::toString);
+  }
+
+  /** A source whose frames are all one shade that changes every frame. */
+  static final class CountingSource implements ImageSource {
+    final Semaphore frames = new Semaphore(0);
+    final AtomicInteger count = new AtomicInteger();
+    final AtomicBoolean closed = new AtomicBoolean();
+    private final int w;
+    private final int h;
+
+    CountingSource(int w, int h) {
+      this.w = w;
+      this.h = h;
+    }
+
+    @Override
+    public int width() {
+      return w;
+    }
+
+    @Override
+    public int height() {
+      return h;
+    }
+
+    @Override
+    public boolean nextFrame(int[] rgb) {
+      int n = count.incrementAndGet();
+      Arrays.fill(rgb, 0, w * h, n & 0xFF);
+      frames.release();
+      return true;
+    }
+
+    @Override
+    public void close() {
+      closed.set(true);
+    }
+  }
+}

@@ -1,0 +1,253 @@
+package org.jaria.tools.mapper;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import javafx.geometry.Point2D;
+import javafx.scene.input.KeyCode;
+import javafx.scene.input.MouseButton;
+import javafx.stage.Stage;
+import org.jaria.acts.image.ImageFiles;
+import org.jaria.acts.image.RgbImage;
+import org.jaria.map.ArMap;
+import org.jaria.map.ArMapObject;
+import org.jaria.tools.fx.AppEnvironment;
+import org.jaria.tools.fx.FxRuntime;
+import org.jaria.tools.fx.ScriptedPrompts;
+import org.jaria.tools.fx.TestFiles;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
+import org.junit.jupiter.api.io.TempDir;
+import org.testfx.api.FxRobot;
+import org.testfx.framework.junit5.ApplicationExtension;
+import org.testfx.framework.junit5.Start;
+import org.testfx.util.WaitForAsyncUtils;
+
+/** The map editor driven like a user: open a real map, draw, save, reload. */
+@ExtendWith(ApplicationExtension.class)
+class MapperWindowTest {
+
+  @TempDir Path dir;
+
+  private final ScriptedPrompts prompts = new ScriptedPrompts();
+  private MapperWindow window;
+
+  @Start
+  void start(Stage stage) {
+    window = new MapperWindow(stage, AppEnvironment.scripted(prompts));
+  }
+
+  @AfterEach
+  void closeWindow() {
+    FxRuntime.run(() -> window.stage().hide(), 10);
+    window.close();
+  }
+
+  private void openAndWait(Path file) throws Exception {
+    FxRuntime.run(() -> window.show(file), 10);
+    window.ready().get(30, TimeUnit.SECONDS);
+    WaitForAsyncUtils.waitForFxEvents();
+  }
+
+  private Point2D onMap(double mapX, double mapY) {
+    MapView v = window.view();
+    return v.localToScreen(v.viewport().toScreenX(mapX), v.viewport().toScreenY(mapY));
+  }
+
+  @Test
+  void drawForbiddenAreaSaveReloadCompare(FxRobot robot) throws Exception {
+    Path file = TestFiles.columbiaCopy(dir);
+    ArMap original = ArMap.readFile(file);
+    List<String> originalLines = Files.readAllLines(file);
+    openAndWait(file);
+    assertEquals(63311, window.document().content().points().size());
+
+    // Snapping to a 500 mm grid makes the drawn corners exact map coordinates.
+    FxRuntime.run(
+        () -> {
+          window.view().setOptions(window.view().options().withGridSize(500));
+          window.view().setSnapping(true);
+          window.view().viewport().setScale(0.08);
+          window.view().centerOn(6000, 0);
+          window.view().paint();
+        },
+        10);
+    robot.clickOn("#tool-forbidden-area");
+    robot.drag(onMap(4000, 1000), MouseButton.PRIMARY).dropTo(onMap(7500, -2000));
+    WaitForAsyncUtils.waitForFxEvents();
+    assertTrue(window.document().isModified());
+    assertEquals("Add forbidden area", window.document().undoName());
+
+    robot.press(KeyCode.CONTROL).type(KeyCode.S).release(KeyCode.CONTROL);
+    assertTrue(window.work().awaitIdle(30, TimeUnit.SECONDS));
+    WaitForAsyncUtils.waitForFxEvents();
+    assertFalse(window.document().isModified());
+    assertTrue(prompts.errors.isEmpty(), () -> prompts.errors.toString());
+    // columbia.map has a goal inside a forbidden area: the editor listed it before saving.
+    assertEquals(1, prompts.problemLists.size());
+    assertTrue(prompts.problemLists.get(0).get(0).contains("Inside Forbidden Area"));
+
+    ArMap reloaded = ArMap.readFile(file);
+    List<ArMapObject> objects = new ArrayList<>(reloaded.getMapObjects());
+    ArMapObject added = objects.remove(objects.size() - 1);
+    assertEquals(original.getMapObjects(), objects);
+    assertEquals(original.getLines(), reloaded.getLines());
+    assertEquals(original.getPoints(), reloaded.getPoints());
+    assertEquals(original.getMapInfo(), reloaded.getMapInfo());
+    assertEquals(original.getOtherHeaderLines(), reloaded.getOtherHeaderLines());
+    assertEquals(ArMapObject.forbiddenArea(4000, -2000, 7500, 1000), added);
+    // Every line of the original is still there, in order; one Cairn line was added.
+    List<String> saved = Files.readAllLines(file);
+    assertEquals(originalLines.size() + 1, saved.size());
+    List<String> withoutNew = new ArrayList<>(saved);
+    withoutNew.remove(added.toMapLine());
+    assertEquals(originalLines, withoutNew);
+  }
+
+  @Test
+  void unchangedRealMapIsWrittenBackByteForByte(FxRobot robot) throws Exception {
+    Path file = TestFiles.columbiaCopy(dir);
+    Path copy = dir.resolve("copy.map");
+    openAndWait(file);
+    prompts.files.add(copy);
+    robot.clickOn("#status"); // the window has the keyboard
+    robot
+        .press(KeyCode.CONTROL, KeyCode.SHIFT)
+        .type(KeyCode.S)
+        .release(KeyCode.SHIFT, KeyCode.CONTROL);
+    assertTrue(window.work().awaitIdle(30, TimeUnit.SECONDS));
+    assertArrayEquals(Files.readAllBytes(file), Files.readAllBytes(copy));
+    assertEquals(ArMap.readFile(file), ArMap.readFile(copy));
+  }
+
+  @Test
+  void placeGoalThenUndoRedoAndRename(FxRobot robot) throws Exception {
+    openAndWait(null);
+    robot.clickOn("#map-view");
+    robot.type(KeyCode.G);
+    Point2D p = onMap(1000, 2000);
+    robot.moveTo(p).clickOn(MouseButton.PRIMARY);
+    WaitForAsyncUtils.waitForFxEvents();
+    assertEquals(1, window.document().content().objects().size());
+    ArMapObject goal = window.document().content().objects().get(0).object();
+    assertEquals("Goal", goal.type());
+    assertEquals("Goal 1", goal.name());
+    double pixel = 1 / window.view().viewport().scale();
+    assertEquals(1000, goal.pose().x(), 2 * pixel);
+    assertEquals(2000, goal.pose().y(), 2 * pixel);
+
+    robot.press(KeyCode.CONTROL).type(KeyCode.Z).release(KeyCode.CONTROL);
+    assertTrue(window.document().content().objects().isEmpty());
+    robot.press(KeyCode.CONTROL).type(KeyCode.Y).release(KeyCode.CONTROL);
+    assertEquals(1, window.document().content().objects().size());
+
+    // Double-click with the select tool renames.
+    robot.type(KeyCode.S);
+    prompts.texts.add("Charging corner");
+    robot.moveTo(p).doubleClickOn(MouseButton.PRIMARY);
+    WaitForAsyncUtils.waitForFxEvents();
+    assertEquals("Charging corner", window.document().content().objects().get(0).object().name());
+  }
+
+  @Test
+  void selectMoveRotateAndDeleteAnArea(FxRobot robot) throws Exception {
+    openAndWait(null);
+    FxRuntime.run(
+        () -> {
+          window
+              .document()
+              .execute(MapCommands.addObject(ArMapObject.forbiddenArea(0, 0, 4000, 2000)));
+          window.view().viewport().setScale(0.05);
+          window.view().centerOn(2000, 1000);
+          window.view().paint();
+        },
+        10);
+    robot.clickOn("#tool-select");
+    robot.clickOn(onMap(2000, 1000));
+    assertEquals(1, window.selection().size());
+
+    // Drag the area by its inside 1 m to the right (snapping off: about 1000 mm).
+    robot.drag(onMap(2000, 1000), MouseButton.PRIMARY).dropTo(onMap(3000, 1000));
+    WaitForAsyncUtils.waitForFxEvents();
+    ArMapObject moved = window.document().content().objects().get(0).object();
+    double pixel = 1 / window.view().viewport().scale();
+    assertEquals(3000, MapGeometry.center(moved)[0], 2 * pixel);
+    assertEquals(1000, MapGeometry.center(moved)[1], 2 * pixel);
+
+    // Rotate with the round handle: drag it to the left of the centre, a quarter turn.
+    double[] h = MapRenderer.rotationHandle(window.view().viewport(), moved);
+    Point2D handle = window.view().localToScreen(h[0], h[1]);
+    double[] c = MapGeometry.center(moved);
+    robot.drag(handle, MouseButton.PRIMARY).dropTo(onMap(c[0] - 3000, c[1]));
+    WaitForAsyncUtils.waitForFxEvents();
+    ArMapObject turned = window.document().content().objects().get(0).object();
+    assertEquals(90, turned.pose().th(), 1.01);
+    assertArrayEquals(MapGeometry.areaSize(moved), MapGeometry.areaSize(turned), 1e-6);
+    assertEquals("Rotate", window.document().undoName());
+
+    robot.type(KeyCode.DELETE);
+    assertTrue(window.document().content().objects().isEmpty());
+    robot.press(KeyCode.CONTROL).type(KeyCode.Z).release(KeyCode.CONTROL);
+    assertEquals(1, window.document().content().objects().size());
+  }
+
+  @Test
+  void boxSelectMeasureAndExport(FxRobot robot) throws Exception {
+    Path file = TestFiles.columbiaCopy(dir);
+    openAndWait(file);
+    FxRuntime.run(
+        () -> {
+          window.view().viewport().setScale(0.05);
+          window.view().centerOn(0, 0);
+          window.view().paint();
+        },
+        10);
+    robot.clickOn("#tool-select");
+    robot.drag(onMap(-6000, 3000), MouseButton.PRIMARY).dropTo(onMap(4000, -3000));
+    WaitForAsyncUtils.waitForFxEvents();
+    assertTrue(window.selection().points().cardinality() > 100);
+    assertFalse(window.document().isModified(), "a box selection moves nothing");
+
+    robot.clickOn("#map-view");
+    robot.type(KeyCode.M);
+    robot.drag(onMap(0, 0), MouseButton.PRIMARY).dropTo(onMap(3000, 4000));
+    WaitForAsyncUtils.waitForFxEvents();
+    MeasureTool m = (MeasureTool) window.view().tool();
+    double pixel = 1 / window.view().viewport().scale();
+    assertEquals(5000, m.length(), 3 * pixel);
+    String status = robot.lookup("#status").queryLabeled().getText();
+    assertTrue(status.contains("at 53°"), status);
+
+    Path png = dir.resolve("columbia.png");
+    prompts.files.add(png);
+    robot.press(KeyCode.CONTROL).type(KeyCode.E).release(KeyCode.CONTROL);
+    assertTrue(window.work().awaitIdle(30, TimeUnit.SECONDS));
+    RgbImage img = ImageFiles.read(png);
+    assertTrue(img.height() <= 4000 && img.height() > 2000, () -> img.width() + "x" + img.height());
+    int dark = 0;
+    for (int p : img.pixels()) {
+      dark += (p & 0xFF) < 0x60 ? 1 : 0;
+    }
+    assertTrue(dark > 20_000, "walls and points are drawn: " + dark);
+  }
+
+  @Test
+  void openingGarbageShowsTheFileAndLine(FxRobot robot) throws Exception {
+    Path bad = dir.resolve("bad.map");
+    Files.writeString(bad, "this is not a map\n");
+    FxRuntime.run(() -> window.show(bad), 10);
+    assertTrue(window.work().awaitIdle(20, TimeUnit.SECONDS));
+    WaitForAsyncUtils.waitForFxEvents();
+    assertEquals(1, prompts.errors.size());
+    assertTrue(prompts.errors.get(0).contains("bad.map:1"), prompts.errors::toString);
+    assertTrue(window.ready().isCompletedExceptionally());
+  }
+}

@@ -1,0 +1,47 @@
+package org.jaria.tools.simview;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import org.junit.jupiter.api.Test;
+import picocli.CommandLine;
+
+/** {@code jaria sim --gui}: every option of the simulator command plus --gui. */
+class SimGuiCommandTest {
+
+  @Test
+  void keepsTheSimulatorsOptionsAndAddsGui() {
+    SimGuiCommand c = new SimGuiCommand();
+    CommandLine cl = new CommandLine(c);
+    cl.parseArgs("--gui", "--map", "hall", "--speedup", "2.5", "--robots", "2");
+    assertTrue(c.gui);
+    assertEquals(2.5, c.speedup());
+    StringWriter usage = new StringWriter();
+    cl.usage(new PrintWriter(usage));
+    for (String o : new String[] {"--gui", "--map", "--robot", "--port", "--lockstep", "--laser"}) {
+      assertTrue(usage.toString().contains(o), o);
+    }
+  }
+
+  @Test
+  void lockstepMeansAsFastAsPossible() {
+    SimGuiCommand c = new SimGuiCommand();
+    new CommandLine(c).parseArgs("--gui", "--lockstep");
+    assertEquals(0, c.speedup());
+    SimGuiCommand d = new SimGuiCommand();
+    new CommandLine(d).parseArgs();
+    assertEquals(1, d.speedup());
+  }
+
+  @Test
+  void simviewBuildsTheWorldItsOptionsDescribe() throws Exception {
+    SimViewCommand c = new SimViewCommand();
+    new CommandLine(c).parseArgs("--map", "hall", "--robot", "p3at-sh", "--robots", "3", "--laser");
+    try (var w = c.createWorld()) {
+      assertEquals(3, w.getRobots().size());
+      assertEquals("p3at-sh", w.getRobot(2).getModel().getSubtype());
+    }
+  }
+}
