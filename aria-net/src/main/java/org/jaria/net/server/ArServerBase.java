@@ -1,0 +1,556 @@
+package org.jaria.net.server;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.security.SecureRandom;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Supplier;
+import org.jaria.net.ArNetPacket;
+import org.jaria.net.ArNetPacketException;
+import org.jaria.net.data.DataInfo;
+import org.jaria.net.protocol.Frames;
+import org.jaria.net.protocol.Kind;
+import org.jaria.net.protocol.NetError;
+import org.jaria.net.protocol.PasswordHash;
+import org.jaria.robot.ArRobot;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The robot program's network server (ArNetworking's {@code ArServerBase}): clients such as a
+ * monitor connect over TCP, log in, and then ask for data once, subscribe to published data at a
+ * rate, or send commands. Services ({@code ArServerInfoRobot}, {@code ArServerHandlerMap}, the
+ * server modes ...) register their data with {@link #addData} and {@link #addPublishedData}.
+ *
+ * <pre>{@code
+ * try (ArServerBase server = new ArServerBase(ServerOptions.builder().port(7272).build(), robot)) {
+ *   new ArServerInfoRobot(server, robot);
+ *   new ArServerModeStop(server, robot).addAsDefaultMode();
+ *   server.open();
+ *   robot.waitForRunExit();
+ * }
+ * }</pre>
+ *
+ * <p><b>Threads.</b> The robot's cycle is never blocked by the network: the server's user task on
+ * the cycle only applies queued commands (at most {@link ServerOptions#maxCommandsPerCycle()}) and
+ * runs the services' snapshot tasks, which store immutable records. One I/O thread
+ * ("jaria-net-io-PORT") reads and writes every socket without blocking; one publisher thread
+ * ("jaria-net-publish-PORT") serves subscriptions; a fixed pool of workers
+ * ("jaria-net-worker-PORT-N") runs request handlers. Every queue between them is bounded; {@link
+ * #close()} stops and joins every thread.
+ *
+ * <p><b>Protection.</b> At most {@link ServerOptions#maxClients()} connections; a connection must
+ * log in within the login timeout; a frame that is too long or not well-formed closes that
+ * connection only; a client that reads too slowly has its subscription updates coalesced (newest
+ * wins) and is dropped when its replies exceed {@link ServerOptions#maxQueuedBytes()} or its socket
+ * takes nothing for the stall timeout. See {@code aria-net/PROTOCOL.md}.
+ */
+public class ArServerBase implements AutoCloseable {
+
+  private static final Logger log = LoggerFactory.getLogger(ArServerBase.class);
+
+  /** Name (and position) of the server's user task on the robot's cycle. */
+  public static final String USER_TASK = "ArServerBase";
+
+  private static final int USER_TASK_POSITION = 10;
+
+  private record CycleTask(String name, Runnable task) {}
+
+  private final ServerOptions options;
+  private final ArRobot robot;
+  final ServerStats stats = new ServerStats();
+  final SecureRandom random = new SecureRandom();
+  final byte[] serverKey = PasswordHash.randomBytes(random, 32);
+  private final List<DataEntry> entries = new CopyOnWriteArrayList<>();
+  private final Map<String, DataEntry> byName = new ConcurrentHashMap<>();
+  private final List<ArServerClient> clients = new CopyOnWriteArrayList<>();
+  private final List<ServerListener> listeners = new CopyOnWriteArrayList<>();
+  private final List<CycleTask> cycleTasks = new CopyOnWriteArrayList<>();
+  private final Map<Class<?>, Object> services = new ConcurrentHashMap<>();
+  private final ArrayBlockingQueue<Runnable> cycleQueue;
+  private final Dispatcher dispatcher;
+  private final Publisher publisher;
+  private IoLoop io;
+  private ThreadPoolExecutor workers;
+  private Thread ioThread;
+  private Thread publisherThread;
+  private volatile boolean open;
+  private boolean closed;
+  private long cycleFailures;
+
+  /** A server without a robot (all handlers run on workers). */
+  public ArServerBase(ServerOptions options) {
+    this(options, null);
+  }
+
+  /**
+   * A server for {@code robot}: {@link Where#CYCLE} handlers and the services' snapshot tasks run
+   * on the robot's cycle.
+   */
+  public ArServerBase(ServerOptions options, ArRobot robot) {
+    this.options = Objects.requireNonNull(options, "options");
+    this.robot = robot;
+    this.cycleQueue = new ArrayBlockingQueue<>(options.cycleQueue());
+    this.dispatcher = new Dispatcher(this, options);
+    this.publisher = new Publisher(this);
+  }
+
+  // ------------------------------------------------------------------ lifecycle
+
+  /**
+   * Starts listening and serving.
+   *
+   * @throws IOException if the port cannot be opened (the message says what to do)
+   * @throws IllegalStateException if already opened or closed
+   */
+  public synchronized void open() throws IOException {
+    if (open || closed) {
+      throw new IllegalStateException("a server can be opened once; make a new one");
+    }
+    io = new IoLoop(this, options, dispatcher);
+    int port = io.port();
+    AtomicInteger n = new AtomicInteger();
+    workers =
+        new ThreadPoolExecutor(
+            options.workerThreads(),
+            options.workerThreads(),
+            0,
+            TimeUnit.MILLISECONDS,
+            new ArrayBlockingQueue<>(options.workerQueue()),
+            r -> {
+              Thread t = new Thread(r, "jaria-net-worker-" + port + "-" + n.incrementAndGet());
+              t.setDaemon(true);
+              return t;
+            });
+    ioThread = new Thread(io, "jaria-net-io-" + port);
+    ioThread.setDaemon(true);
+    publisherThread = new Thread(publisher, "jaria-net-publish-" + port);
+    publisherThread.setDaemon(true);
+    open = true;
+    if (robot != null) {
+      robot.addUserTask(USER_TASK, USER_TASK_POSITION, this::cycle);
+    }
+    ioThread.start();
+    publisherThread.start();
+    log.info(
+        "server '{}' listening on {}:{} ({})",
+        options.serverName(),
+        io.address(),
+        port,
+        options.authenticator().isOpen() ? "no login needed" : "login required");
+  }
+
+  /** Whether the server is open. */
+  public boolean isOpen() {
+    return open;
+  }
+
+  /** The port the server listens on (useful with port 0). */
+  public int getPort() {
+    IoLoop l = io;
+    if (l == null) {
+      throw new IllegalStateException("the server is not open yet; call open() first");
+    }
+    return l.port();
+  }
+
+  /**
+   * Closes every connection (telling logged-in clients the server is shutting down), removes the
+   * user task and stops and joins every thread. Safe to call more than once.
+   */
+  @Override
+  public void close() {
+    synchronized (this) {
+      if (closed) {
+        return;
+      }
+      closed = true;
+      if (!open) {
+        return;
+      }
+      open = false;
+    }
+    if (robot != null) {
+      robot.remUserTask(USER_TASK);
+    }
+    publisher.stop();
+    io.stop();
+    workers.shutdown();
+    join(publisherThread);
+    join(ioThread);
+    try {
+      if (!workers.awaitTermination(5, TimeUnit.SECONDS)) {
+        workers.shutdownNow();
+        log.warn("a request handler did not finish within 5 s of closing; interrupted it");
+        workers.awaitTermination(5, TimeUnit.SECONDS);
+      }
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+    }
+    cycleQueue.clear();
+    log.info("server '{}' closed ({})", options.serverName(), stats);
+  }
+
+  private static void join(Thread t) {
+    try {
+      t.join(TimeUnit.SECONDS.toMillis(5));
+      if (t.isAlive()) {
+        log.warn("thread {} did not stop within 5 s", t.getName());
+      }
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+    }
+  }
+
+  // ------------------------------------------------------------------ data
+
+  /**
+   * Registers a request (ArNetworking's {@code addData}): clients call it by name with arguments
+   * and get one reply.
+   *
+   * @param name unique name clients use
+   * @param description what it does, for people
+   * @param argumentDescription the arguments in order, e.g. "double x, double y" ("none")
+   * @param returnDescription the reply in order ("none" for a command)
+   * @param commandGroup the group a user needs ("" for anybody)
+   * @param where where the handler runs
+   * @return the entry as clients see it
+   * @throws IllegalArgumentException if the name is taken
+   */
+  public DataInfo addData(
+      String name,
+      String description,
+      String argumentDescription,
+      String returnDescription,
+      String commandGroup,
+      Where where,
+      RequestHandler handler) {
+    Objects.requireNonNull(handler, "handler");
+    Objects.requireNonNull(where, "where");
+    return register(
+        name,
+        description,
+        argumentDescription,
+        returnDescription,
+        commandGroup,
+        where,
+        handler,
+        null);
+  }
+
+  /**
+   * Registers published data: clients subscribe to it at a rate (or ask for it once) and receive
+   * the publication's latest value, encoded once per version for all of them.
+   *
+   * @return the entry as clients see it
+   * @throws IllegalArgumentException if the name is taken
+   */
+  public DataInfo addPublishedData(
+      String name,
+      String description,
+      String returnDescription,
+      String commandGroup,
+      Publication publication) {
+    Objects.requireNonNull(publication, "publication");
+    return register(
+        name,
+        description,
+        "none",
+        returnDescription,
+        commandGroup,
+        Where.WORKER,
+        null,
+        publication);
+  }
+
+  private synchronized DataInfo register(
+      String name,
+      String description,
+      String argDesc,
+      String retDesc,
+      String group,
+      Where where,
+      RequestHandler handler,
+      Publication publication) {
+    if (name == null || name.isEmpty()) {
+      throw new IllegalArgumentException("data needs a name");
+    }
+    if (byName.containsKey(name)) {
+      throw new IllegalArgumentException("data '" + name + "' is already registered");
+    }
+    DataInfo info =
+        new DataInfo(
+            entries.size() + 1,
+            name,
+            Objects.toString(description, ""),
+            Objects.toString(argDesc, "none"),
+            Objects.toString(retDesc, "none"),
+            Objects.toString(group, ""),
+            publication != null);
+    DataEntry e = new DataEntry(info, where, handler, publication);
+    entries.add(e);
+    byName.put(name, e);
+    return info;
+  }
+
+  /** Every registered data, in registration order. */
+  public List<DataInfo> dataList() {
+    List<DataInfo> l = new ArrayList<>(entries.size());
+    for (DataEntry e : entries) {
+      l.add(e.info);
+    }
+    return l;
+  }
+
+  /** Whether data of this name is registered (ArNetworking's {@code dataExists}). */
+  public boolean dataExists(String name) {
+    return byName.containsKey(name);
+  }
+
+  DataEntry entry(int id) {
+    List<DataEntry> l = entries;
+    return id >= 1 && id <= l.size() ? l.get(id - 1) : null;
+  }
+
+  // ------------------------------------------------------------------ the robot's cycle
+
+  /** The robot the server serves, or null. */
+  public ArRobot getRobot() {
+    return robot;
+  }
+
+  /**
+   * Runs {@code task} on the robot's cycle (from the server's user task), or at once on a server
+   * without a robot.
+   *
+   * @return false if the cycle's queue is full (the task is not run)
+   */
+  public boolean runOnCycle(Runnable task) {
+    if (robot == null) {
+      task.run();
+      return true;
+    }
+    return cycleQueue.offer(task);
+  }
+
+  /**
+   * Adds (or replaces, by name) a task run on every robot cycle inside the server's user task,
+   * after queued commands: services use it to snapshot state and modes to do their work. Tasks must
+   * be quick and must not block.
+   */
+  public void addCycleTask(String name, Runnable task) {
+    remCycleTask(name);
+    cycleTasks.add(new CycleTask(name, task));
+  }
+
+  /** Removes a cycle task by name. */
+  public void remCycleTask(String name) {
+    cycleTasks.removeIf(t -> t.name().equals(name));
+  }
+
+  private void cycle() {
+    int max = options.maxCommandsPerCycle();
+    Runnable r;
+    for (int i = 0; i < max && (r = cycleQueue.poll()) != null; i++) {
+      runSafely(r, "a queued command");
+    }
+    for (CycleTask t : cycleTasks) {
+      runSafely(t.task(), t.name());
+    }
+  }
+
+  private void runSafely(Runnable r, String what) {
+    try {
+      r.run();
+    } catch (RuntimeException e) {
+      if (++cycleFailures == 1 || cycleFailures % 100 == 0) {
+        log.warn("{} failed on the robot's cycle (#{})", what, cycleFailures, e);
+      }
+    }
+  }
+
+  /**
+   * A per-server helper object shared by services (for example the registry of server modes), made
+   * with {@code create} the first time.
+   */
+  public <T> T getService(Class<T> type, Supplier<T> create) {
+    return type.cast(services.computeIfAbsent(type, k -> create.get()));
+  }
+
+  // ------------------------------------------------------------------ clients
+
+  /** The connected clients (including those still logging in). */
+  public List<ArServerClient> getClients() {
+    return List.copyOf(clients);
+  }
+
+  /** Number of logged-in clients. */
+  public int getNumClients() {
+    int n = 0;
+    for (ArServerClient c : clients) {
+      if (c.isLoggedIn()) {
+        n++;
+      }
+    }
+    return n;
+  }
+
+  /** Counters of connections, refusals and drops. */
+  public ServerStats getStats() {
+    return stats;
+  }
+
+  /** Adds a listener for clients logging in and leaving. */
+  public void addListener(ServerListener l) {
+    listeners.add(l);
+  }
+
+  /** Removes a listener. */
+  public void removeListener(ServerListener l) {
+    listeners.remove(l);
+  }
+
+  /** The options the server was made with. */
+  public ServerOptions getOptions() {
+    return options;
+  }
+
+  List<ArServerClient> clientsSnapshot() {
+    return clients;
+  }
+
+  void addClient(ArServerClient c) {
+    clients.add(c);
+  }
+
+  void removeClient(ArServerClient c, String reason) {
+    clients.remove(c);
+    for (ServerListener l : listeners) {
+      try {
+        l.clientClosed(c, reason);
+      } catch (RuntimeException e) {
+        log.warn("a server listener failed", e);
+      }
+    }
+  }
+
+  void clientLoggedIn(ArServerClient c) {
+    for (ServerListener l : listeners) {
+      try {
+        l.clientLoggedIn(c);
+      } catch (RuntimeException e) {
+        log.warn("a server listener failed", e);
+      }
+    }
+  }
+
+  IoLoop io() {
+    return io;
+  }
+
+  Publisher publisher() {
+    return publisher;
+  }
+
+  // ------------------------------------------------------------------ sending
+
+  /** Queues a complete frame for {@code c}; drops the client if its queue is over the limit. */
+  void sendFrame(ArServerClient c, byte[] frame, boolean wakeup) {
+    enqueue(c, Outgoing.frame(frame), wakeup);
+  }
+
+  void sendError(ArServerClient c, int reqId, int dataId, NetError code, String message) {
+    byte[] f = Frames.frame(Kind.ERROR, reqId, dataId, code.code(), message);
+    enqueue(c, Outgoing.frame(f), !onIoThread());
+  }
+
+  void sendResponse(ArServerClient c, int reqId, int dataId, ByteBuffer payload) {
+    enqueue(c, Outgoing.response(reqId, dataId, payload, true), !onIoThread());
+  }
+
+  private boolean onIoThread() {
+    return Thread.currentThread() == ioThread;
+  }
+
+  private void enqueue(ArServerClient c, Outgoing o, boolean wakeup) {
+    if (c.isClosed()) {
+      return;
+    }
+    if (!c.out.offer(o)) {
+      stats.droppedSlow.increment();
+      log.info(
+          "{} reads too slowly: more than {} bytes of replies waiting; dropping it",
+          c,
+          options.maxQueuedBytes());
+      io.requestClose(
+          c,
+          NetError.TOO_SLOW,
+          "more than " + options.maxQueuedBytes() + " bytes of replies waiting: read faster");
+      return;
+    }
+    io.scheduleWrite(c, wakeup);
+  }
+
+  /** Runs a request where its data says (cycle or worker), answering BUSY if queues are full. */
+  void execute(ArServerClient c, int reqId, DataEntry e, byte[] args) {
+    Runnable task = () -> runCall(c, reqId, e, args);
+    boolean queued;
+    if (e.publication == null && e.where == Where.CYCLE && robot != null) {
+      queued = cycleQueue.offer(task);
+    } else {
+      try {
+        workers.execute(task);
+        queued = true;
+      } catch (RejectedExecutionException ex) {
+        queued = false;
+      }
+    }
+    if (!queued) {
+      c.pendingCalls.decrementAndGet();
+      stats.busy.increment();
+      sendError(c, reqId, e.id(), NetError.BUSY, "the server is busy; try again in a moment");
+    }
+  }
+
+  private void runCall(ArServerClient c, int reqId, DataEntry e, byte[] args) {
+    try {
+      if (c.isClosed()) {
+        return;
+      }
+      if (e.publication != null) {
+        DataEntry.Encoded enc = e.currentEncoded();
+        if (enc == null) {
+          sendError(c, reqId, e.id(), NetError.UNAVAILABLE, e.name() + " has no value yet");
+        } else {
+          sendResponse(c, reqId, e.id(), enc.payload());
+        }
+        return;
+      }
+      ArNetPacket reply = new ArNetPacket();
+      e.handler.handle(c, ArNetPacket.wrap(args), reply);
+      sendResponse(c, reqId, e.id(), Dispatcher.shared(reply.toByteArray()));
+    } catch (ArNetPacketException ex) {
+      sendError(c, reqId, e.id(), NetError.BAD_ARGUMENTS, e.name() + ": " + ex.getMessage());
+    } catch (NetRequestException ex) {
+      sendError(c, reqId, e.id(), ex.getCode(), ex.getMessage());
+    } catch (InterruptedException ex) {
+      Thread.currentThread().interrupt();
+      sendError(c, reqId, e.id(), NetError.FAILED, e.name() + " was interrupted");
+    } catch (Exception ex) {
+      log.warn("{} failed for {}", e.name(), c, ex);
+      sendError(c, reqId, e.id(), NetError.FAILED, e.name() + " failed: " + ex);
+    } finally {
+      c.pendingCalls.decrementAndGet();
+    }
+  }
+}

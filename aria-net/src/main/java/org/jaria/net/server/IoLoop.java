@@ -1,0 +1,423 @@
+package org.jaria.net.server;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.StandardSocketOptions;
+import java.nio.ByteBuffer;
+import java.nio.channels.ClosedSelectorException;
+import java.nio.channels.SelectionKey;
+import java.nio.channels.Selector;
+import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.TimeUnit;
+import org.jaria.net.protocol.Frames;
+import org.jaria.net.protocol.Kind;
+import org.jaria.net.protocol.NetError;
+import org.jaria.net.protocol.Protocol;
+import org.jaria.net.protocol.ProtocolException;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The server's single I/O thread: accepts connections, reads and splits frames (handing each to the
+ * {@link Dispatcher}), writes what the clients' queues hold without ever blocking, and enforces the
+ * login, idle and stall timeouts. A client that breaks the protocol is closed here; nothing a
+ * client does can block this thread or touch another client.
+ */
+final class IoLoop implements Runnable {
+
+  private static final Logger log = LoggerFactory.getLogger(IoLoop.class);
+
+  /** Longest wait in select, so timeouts are checked at least this often. */
+  private static final long SELECT_MS = 50;
+
+  /** Time given at shutdown to send the last CLOSING frames. */
+  private static final long SHUTDOWN_GRACE_MS = 200;
+
+  private final ArServerBase server;
+  private final ServerOptions options;
+  private final Selector selector;
+  private final ServerSocketChannel serverChannel;
+  private final Dispatcher dispatcher;
+  private final ConcurrentLinkedQueue<ArServerClient> writeRequests = new ConcurrentLinkedQueue<>();
+  private final ConcurrentLinkedQueue<Runnable> closeRequests = new ConcurrentLinkedQueue<>();
+  private final List<ArServerClient> clients = new ArrayList<>();
+  private volatile boolean stopping;
+  private int nextId = 1;
+
+  IoLoop(ArServerBase server, ServerOptions options, Dispatcher dispatcher) throws IOException {
+    this.server = server;
+    this.options = options;
+    this.dispatcher = dispatcher;
+    this.selector = Selector.open();
+    this.serverChannel = ServerSocketChannel.open();
+    try {
+      serverChannel.setOption(StandardSocketOptions.SO_REUSEADDR, true);
+      InetSocketAddress bind = bindAddress();
+      serverChannel.bind(bind, 64);
+      serverChannel.configureBlocking(false);
+      serverChannel.register(selector, SelectionKey.OP_ACCEPT);
+    } catch (IOException e) {
+      serverChannel.close();
+      selector.close();
+      throw new IOException(
+          "cannot listen on port "
+              + options.port()
+              + " ("
+              + e.getMessage()
+              + "): is another server running there? Choose another port.",
+          e);
+    }
+  }
+
+  private InetSocketAddress bindAddress() throws IOException {
+    String addr = options.bindAddress();
+    if (addr == null) {
+      return options.authenticator().isOpen()
+          ? new InetSocketAddress(InetAddress.getLoopbackAddress(), options.port())
+          : new InetSocketAddress(options.port());
+    }
+    return new InetSocketAddress(InetAddress.getByName(addr), options.port());
+  }
+
+  int port() {
+    return serverChannel.socket().getLocalPort();
+  }
+
+  String address() {
+    return serverChannel.socket().getInetAddress().getHostAddress();
+  }
+
+  /** Asks the loop to stop; it closes every client and returns. */
+  void stop() {
+    stopping = true;
+    selector.wakeup();
+  }
+
+  /** Asks the I/O thread to write {@code c}'s queue (from any thread). */
+  void scheduleWrite(ArServerClient c, boolean wakeup) {
+    if (c.writeScheduled.compareAndSet(false, true)) {
+      writeRequests.add(c);
+      if (wakeup) {
+        selector.wakeup();
+      }
+    }
+  }
+
+  /** Wakes the I/O thread (after a batch of {@code scheduleWrite(c, false)}). */
+  void wakeup() {
+    selector.wakeup();
+  }
+
+  /** Asks the I/O thread to close {@code c} (from any thread). */
+  void requestClose(ArServerClient c, NetError code, String reason) {
+    closeRequests.add(() -> close(c, code, reason, true));
+    selector.wakeup();
+  }
+
+  @Override
+  public void run() {
+    try {
+      while (!stopping) {
+        selector.select(SELECT_MS);
+        for (SelectionKey k : selector.selectedKeys()) {
+          handleKey(k);
+        }
+        selector.selectedKeys().clear();
+        Runnable r;
+        while ((r = closeRequests.poll()) != null) {
+          r.run();
+        }
+        ArServerClient c;
+        while ((c = writeRequests.poll()) != null) {
+          c.writeScheduled.set(false);
+          if (!c.isClosed()) {
+            flush(c);
+          }
+        }
+        checkTimeouts();
+      }
+    } catch (IOException | ClosedSelectorException e) {
+      if (!stopping) {
+        log.error("the server's I/O loop failed; no client can be served any more", e);
+      }
+    } catch (RuntimeException e) {
+      log.error("the server's I/O loop failed; no client can be served any more", e);
+    } finally {
+      shutdown();
+    }
+  }
+
+  private void handleKey(SelectionKey k) {
+    if (!k.isValid()) {
+      return;
+    }
+    if (k.isAcceptable()) {
+      accept();
+      return;
+    }
+    ArServerClient c = (ArServerClient) k.attachment();
+    try {
+      if (k.isReadable()) {
+        read(c);
+      }
+      if (k.isValid() && k.isWritable() && !c.isClosed()) {
+        flush(c);
+      }
+    } catch (ProtocolException e) {
+      server.stats.malformed.increment();
+      log.info("{}: {}; closing it", c, e.getMessage());
+      close(c, e.getCode(), e.getMessage(), true);
+    } catch (IOException e) {
+      close(c, null, "connection lost: " + e.getMessage(), false);
+    }
+  }
+
+  private void accept() {
+    while (true) {
+      SocketChannel ch;
+      try {
+        ch = serverChannel.accept();
+      } catch (IOException e) {
+        log.warn("accept failed: {}", e.getMessage());
+        return;
+      }
+      if (ch == null) {
+        return;
+      }
+      String ip;
+      try {
+        ch.configureBlocking(false);
+        ch.setOption(StandardSocketOptions.TCP_NODELAY, true);
+        if (options.socketSendBuffer() > 0) {
+          ch.setOption(StandardSocketOptions.SO_SNDBUF, options.socketSendBuffer());
+        }
+        ip = ((InetSocketAddress) ch.getRemoteAddress()).getAddress().getHostAddress();
+      } catch (IOException e) {
+        closeQuietly(ch);
+        continue;
+      }
+      if (stopping) {
+        closeQuietly(ch);
+        return;
+      }
+      if (clients.size() >= options.maxClients()) {
+        server.stats.refusedFull.increment();
+        log.info("refused a connection from {}: already {} clients", ip, clients.size());
+        byte[] f =
+            Frames.frame(
+                Kind.REFUSED,
+                NetError.SERVER_FULL.code(),
+                "the server already has its maximum of " + options.maxClients() + " clients");
+        try {
+          ch.write(ByteBuffer.wrap(f));
+        } catch (IOException e) {
+          // Best effort: the client learns from the closed connection anyway.
+        }
+        closeQuietly(ch);
+        continue;
+      }
+      ArServerClient c = new ArServerClient(nextId++, ch, ip, options.maxQueuedBytes());
+      long now = options.timeoutClock().nanoTime();
+      c.connectedNanos = now;
+      c.lastHeardNanos = now;
+      c.lastWriteProgressNanos = now;
+      try {
+        c.key = ch.register(selector, SelectionKey.OP_READ, c);
+      } catch (IOException e) {
+        closeQuietly(ch);
+        continue;
+      }
+      clients.add(c);
+      server.addClient(c);
+      server.stats.accepted.increment();
+      log.debug("{} connected", c);
+    }
+  }
+
+  private void read(ArServerClient c) throws IOException, ProtocolException {
+    int n = c.channel.read(c.in);
+    if (n < 0) {
+      close(c, null, "the client closed the connection", false);
+      return;
+    }
+    c.countReceived(n);
+    c.lastHeardNanos = options.timeoutClock().nanoTime();
+    ByteBuffer in = c.in;
+    in.flip();
+    int max = options.maxInboundFrame();
+    while (in.remaining() >= Protocol.LENGTH_BYTES && !c.isClosed()) {
+      int len = Frames.peekLength(in, max);
+      if (in.remaining() < Protocol.LENGTH_BYTES + len) {
+        if (in.capacity() < Protocol.LENGTH_BYTES + len) {
+          // Grow for a large (but allowed) frame; never past the limit.
+          ByteBuffer bigger = ByteBuffer.allocate(Protocol.LENGTH_BYTES + len);
+          bigger.put(in);
+          c.in = bigger;
+          return;
+        }
+        break;
+      }
+      int start = in.position() + Protocol.LENGTH_BYTES;
+      in.position(start + len);
+      dispatcher.onFrame(c, in.array(), in.arrayOffset() + start, len);
+    }
+    in.compact();
+  }
+
+  /** Writes as much of {@code c}'s queue as the socket takes now. */
+  void flush(ArServerClient c) {
+    try {
+      long now = options.timeoutClock().nanoTime();
+      while (true) {
+        if (c.writing == null) {
+          c.writing = c.out.start();
+          if (c.writing == null) {
+            c.lastWriteProgressNanos = now;
+            setWriteInterest(c, false);
+            if (c.closeAfterFlush) {
+              close(c, null, c.pendingCloseReason(), false);
+            }
+            return;
+          }
+          c.frameInProgress = false;
+        }
+        if (!c.frameInProgress) {
+          if (!c.writing.nextFrame(c.header, c.writeBufs)) {
+            c.out.finished(c.writing);
+            c.writing = null;
+            continue;
+          }
+          c.frameInProgress = true;
+        }
+        long n = c.channel.write(c.writeBufs);
+        if (n > 0) {
+          c.countSent(n);
+          c.lastWriteProgressNanos = now;
+        }
+        if (c.writeBufs[0].hasRemaining() || c.writeBufs[1].hasRemaining()) {
+          setWriteInterest(c, true);
+          return;
+        }
+        c.frameInProgress = false;
+      }
+    } catch (IOException e) {
+      close(c, null, "connection lost while writing: " + e.getMessage(), false);
+    }
+  }
+
+  private static void setWriteInterest(ArServerClient c, boolean on) {
+    SelectionKey k = c.key;
+    if (k != null && k.isValid()) {
+      int ops = on ? SelectionKey.OP_READ | SelectionKey.OP_WRITE : SelectionKey.OP_READ;
+      if (k.interestOps() != ops) {
+        k.interestOps(ops);
+      }
+    }
+  }
+
+  private void checkTimeouts() {
+    long now = options.timeoutClock().nanoTime();
+    long login = options.loginTimeout().toNanos();
+    long idle = options.idleTimeout().toNanos();
+    long stall = options.stallTimeout().toNanos();
+    for (ArServerClient c : new ArrayList<>(clients)) {
+      if (c.isClosed()) {
+        continue;
+      }
+      if (!c.isLoggedIn() && !c.closeAfterFlush && now - c.connectedNanos > login) {
+        server.stats.loginTimeouts.increment();
+        close(c, NetError.LOGIN_TIMEOUT, "did not log in within " + options.loginTimeout(), true);
+      } else if (c.isLoggedIn() && idle > 0 && now - c.lastHeardNanos > idle) {
+        server.stats.droppedIdle.increment();
+        close(c, NetError.IDLE, "sent nothing for " + options.idleTimeout(), true);
+      } else if (stall > 0
+          && (c.writing != null || !c.out.isEmpty())
+          && now - c.lastWriteProgressNanos > stall) {
+        server.stats.droppedSlow.increment();
+        close(
+            c,
+            NetError.TOO_SLOW,
+            "took no data for " + options.stallTimeout() + " with data waiting",
+            false);
+      }
+    }
+  }
+
+  /**
+   * Closes {@code c}: optionally tries to send a CLOSING frame first (without waiting), then closes
+   * the socket, forgets its queue and subscriptions, and tells the listeners.
+   */
+  void close(ArServerClient c, NetError code, String reason, boolean sayWhy) {
+    if (c.isClosed()) {
+      return;
+    }
+    c.setCloseReason(reason);
+    if (sayWhy && code != null && c.writing == null) {
+      try {
+        c.channel.write(ByteBuffer.wrap(Frames.frame(Kind.CLOSING, code.code(), reason)));
+      } catch (IOException e) {
+        // Best effort: the connection is going anyway.
+      }
+    }
+    c.setState(ArServerClient.State.CLOSED);
+    if (c.key != null) {
+      c.key.cancel();
+    }
+    closeQuietly(c.channel);
+    c.out.clear();
+    c.subscriptions.clear();
+    clients.remove(c);
+    server.removeClient(c, reason);
+    log.debug("{} closed: {}", c, reason);
+  }
+
+  private void shutdown() {
+    for (ArServerClient c : new ArrayList<>(clients)) {
+      if (c.isLoggedIn()) {
+        c.out.offer(
+            Outgoing.frame(
+                Frames.frame(
+                    Kind.CLOSING, NetError.SHUTTING_DOWN.code(), "the server is shutting down")));
+        c.closeAfterFlush = true;
+        c.setCloseReason("the server is shutting down");
+        flush(c);
+      }
+    }
+    long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(SHUTDOWN_GRACE_MS);
+    try {
+      while (!clients.isEmpty() && System.nanoTime() < end && selector.isOpen()) {
+        selector.select(10);
+        for (SelectionKey k : selector.selectedKeys()) {
+          if (k.isValid() && k.isWritable()) {
+            flush((ArServerClient) k.attachment());
+          }
+        }
+        selector.selectedKeys().clear();
+      }
+    } catch (IOException | ClosedSelectorException e) {
+      // Closing anyway.
+    }
+    for (ArServerClient c : new ArrayList<>(clients)) {
+      close(c, null, "the server is shutting down", false);
+    }
+    closeQuietly(serverChannel);
+    try {
+      selector.close();
+    } catch (IOException e) {
+      log.debug("closing the selector: {}", e.getMessage());
+    }
+  }
+
+  private static void closeQuietly(java.io.Closeable c) {
+    try {
+      c.close();
+    } catch (IOException e) {
+      // Nothing more to do with a socket that will not close.
+    }
+  }
+}

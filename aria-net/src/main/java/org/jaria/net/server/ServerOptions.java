@@ -1,0 +1,296 @@
+package org.jaria.net.server;
+
+import java.time.Duration;
+import org.jaria.clock.Clock;
+import org.jaria.net.protocol.Protocol;
+
+/**
+ * Settings of an {@link ArServerBase}: where it listens, who may log in and the limits that keep
+ * one slow or hostile client from hurting the robot or the other clients. Build with {@link
+ * #builder()}; the defaults suit a robot with a handful of monitors.
+ *
+ * @param serverName sent to clients at login
+ * @param port TCP port (0: the system picks a free one; see {@link ArServerBase#getPort()})
+ * @param bindAddress address to listen on; null: every interface, or loopback only when the
+ *     authenticator is open (anybody could otherwise drive the robot from the network)
+ * @param authenticator who may log in
+ * @param maxClients most clients connected at once, counting those still logging in
+ * @param loginTimeout time a new connection has to log in
+ * @param idleTimeout a logged-in client that sends nothing for this long is dropped (the client
+ *     library pings every few seconds); zero: never
+ * @param stallTimeout a client with data waiting that accepts no byte for this long is dropped;
+ *     zero: never
+ * @param maxQueuedBytes most bytes of replies waiting for one client; a reply beyond it drops the
+ *     client (subscription updates never count: they are coalesced, newest wins)
+ * @param maxInboundFrame largest frame a client may send, bytes
+ * @param minInterval shortest subscription interval granted (caps the rate)
+ * @param maxSubscriptions most subscriptions per client
+ * @param maxPendingCalls most requests one client may have waiting to be handled
+ * @param workerThreads threads that run request handlers off the robot's cycle
+ * @param workerQueue requests waiting for a worker, over all clients
+ * @param cycleQueue commands waiting for the robot's cycle, over all clients
+ * @param maxCommandsPerCycle most queued commands applied in one robot cycle
+ * @param socketSendBuffer SO_SNDBUF of client sockets, bytes (0: the system's default)
+ * @param timeoutClock the clock that times login, idle and stall timeouts (a VirtualClock in tests)
+ */
+public record ServerOptions(
+    String serverName,
+    int port,
+    String bindAddress,
+    Authenticator authenticator,
+    int maxClients,
+    Duration loginTimeout,
+    Duration idleTimeout,
+    Duration stallTimeout,
+    long maxQueuedBytes,
+    int maxInboundFrame,
+    Duration minInterval,
+    int maxSubscriptions,
+    int maxPendingCalls,
+    int workerThreads,
+    int workerQueue,
+    int cycleQueue,
+    int maxCommandsPerCycle,
+    int socketSendBuffer,
+    Clock timeoutClock) {
+
+  /** Checks the values. */
+  public ServerOptions {
+    if (port < 0 || port > 65535) {
+      throw new IllegalArgumentException("port must be 0..65535, was " + port);
+    }
+    if (authenticator == null || timeoutClock == null || serverName == null) {
+      throw new IllegalArgumentException("authenticator, clock and server name must be set");
+    }
+    positive(maxClients, "maxClients");
+    positive(maxSubscriptions, "maxSubscriptions");
+    positive(maxPendingCalls, "maxPendingCalls");
+    positive(workerThreads, "workerThreads");
+    positive(workerQueue, "workerQueue");
+    positive(cycleQueue, "cycleQueue");
+    positive(maxCommandsPerCycle, "maxCommandsPerCycle");
+    if (maxQueuedBytes < 4096) {
+      throw new IllegalArgumentException("maxQueuedBytes must be at least 4096");
+    }
+    if (maxInboundFrame < 256 || maxInboundFrame > 16 << 20) {
+      throw new IllegalArgumentException("maxInboundFrame must be 256 B .. 16 MiB");
+    }
+    for (Duration d : new Duration[] {loginTimeout, idleTimeout, stallTimeout, minInterval}) {
+      if (d == null || d.isNegative()) {
+        throw new IllegalArgumentException("timeouts and intervals must be zero or positive");
+      }
+    }
+    if (loginTimeout.isZero()) {
+      throw new IllegalArgumentException("the login timeout must be positive");
+    }
+  }
+
+  private static void positive(int v, String name) {
+    if (v < 1) {
+      throw new IllegalArgumentException(name + " must be at least 1, was " + v);
+    }
+  }
+
+  /** Defaults: see {@link Builder}. */
+  public static ServerOptions defaults() {
+    return builder().build();
+  }
+
+  /** A builder starting from the defaults. */
+  public static Builder builder() {
+    return new Builder();
+  }
+
+  /** A builder starting from these options. */
+  public Builder toBuilder() {
+    Builder b = new Builder();
+    b.serverName = serverName;
+    b.port = port;
+    b.bindAddress = bindAddress;
+    b.authenticator = authenticator;
+    b.maxClients = maxClients;
+    b.loginTimeout = loginTimeout;
+    b.idleTimeout = idleTimeout;
+    b.stallTimeout = stallTimeout;
+    b.maxQueuedBytes = maxQueuedBytes;
+    b.maxInboundFrame = maxInboundFrame;
+    b.minInterval = minInterval;
+    b.maxSubscriptions = maxSubscriptions;
+    b.maxPendingCalls = maxPendingCalls;
+    b.workerThreads = workerThreads;
+    b.workerQueue = workerQueue;
+    b.cycleQueue = cycleQueue;
+    b.maxCommandsPerCycle = maxCommandsPerCycle;
+    b.socketSendBuffer = socketSendBuffer;
+    b.timeoutClock = timeoutClock;
+    return b;
+  }
+
+  /**
+   * Builds {@link ServerOptions}. Defaults: name "jaria", port 7272, open authenticator, 32
+   * clients, 5 s login, 30 s idle, 10 s stall, 1 MiB queued replies, 64 KiB inbound frames, 50 ms
+   * minimum interval (20 Hz), 64 subscriptions and 16 pending requests per client, 2 workers with
+   * 256 queued requests, 256 queued cycle commands with 64 applied per cycle.
+   */
+  public static final class Builder {
+    private String serverName = "jaria";
+    private int port = Protocol.DEFAULT_PORT;
+    private String bindAddress;
+    private Authenticator authenticator = Authenticator.open();
+    private int maxClients = 32;
+    private Duration loginTimeout = Duration.ofSeconds(5);
+    private Duration idleTimeout = Duration.ofSeconds(30);
+    private Duration stallTimeout = Duration.ofSeconds(10);
+    private long maxQueuedBytes = 1 << 20;
+    private int maxInboundFrame = 64 * 1024;
+    private Duration minInterval = Duration.ofMillis(50);
+    private int maxSubscriptions = 64;
+    private int maxPendingCalls = 16;
+    private int workerThreads = 2;
+    private int workerQueue = 256;
+    private int cycleQueue = 256;
+    private int maxCommandsPerCycle = 64;
+    private int socketSendBuffer;
+    private Clock timeoutClock = Clock.system();
+
+    private Builder() {}
+
+    /** Name sent to clients. */
+    public Builder serverName(String v) {
+      serverName = v;
+      return this;
+    }
+
+    /** TCP port; 0 lets the system pick. */
+    public Builder port(int v) {
+      port = v;
+      return this;
+    }
+
+    /** Interface address to listen on ("0.0.0.0" for all, "127.0.0.1" for this machine). */
+    public Builder bindAddress(String v) {
+      bindAddress = v;
+      return this;
+    }
+
+    /** Who may log in. */
+    public Builder authenticator(Authenticator v) {
+      authenticator = v;
+      return this;
+    }
+
+    /** Most clients at once. */
+    public Builder maxClients(int v) {
+      maxClients = v;
+      return this;
+    }
+
+    /** Time to log in. */
+    public Builder loginTimeout(Duration v) {
+      loginTimeout = v;
+      return this;
+    }
+
+    /** Silence after which a client is dropped (zero: never). */
+    public Builder idleTimeout(Duration v) {
+      idleTimeout = v;
+      return this;
+    }
+
+    /** Write stall after which a client is dropped (zero: never). */
+    public Builder stallTimeout(Duration v) {
+      stallTimeout = v;
+      return this;
+    }
+
+    /** Most reply bytes waiting for one client. */
+    public Builder maxQueuedBytes(long v) {
+      maxQueuedBytes = v;
+      return this;
+    }
+
+    /** Largest inbound frame. */
+    public Builder maxInboundFrame(int v) {
+      maxInboundFrame = v;
+      return this;
+    }
+
+    /** Shortest subscription interval. */
+    public Builder minInterval(Duration v) {
+      minInterval = v;
+      return this;
+    }
+
+    /** Most subscriptions per client. */
+    public Builder maxSubscriptions(int v) {
+      maxSubscriptions = v;
+      return this;
+    }
+
+    /** Most requests one client may have waiting. */
+    public Builder maxPendingCalls(int v) {
+      maxPendingCalls = v;
+      return this;
+    }
+
+    /** Handler threads. */
+    public Builder workerThreads(int v) {
+      workerThreads = v;
+      return this;
+    }
+
+    /** Requests waiting for a handler thread. */
+    public Builder workerQueue(int v) {
+      workerQueue = v;
+      return this;
+    }
+
+    /** Commands waiting for the robot's cycle. */
+    public Builder cycleQueue(int v) {
+      cycleQueue = v;
+      return this;
+    }
+
+    /** Commands applied per robot cycle. */
+    public Builder maxCommandsPerCycle(int v) {
+      maxCommandsPerCycle = v;
+      return this;
+    }
+
+    /** SO_SNDBUF of client sockets (0: system default). */
+    public Builder socketSendBuffer(int v) {
+      socketSendBuffer = v;
+      return this;
+    }
+
+    /** Clock of the login, idle and stall timeouts. */
+    public Builder timeoutClock(Clock v) {
+      timeoutClock = v;
+      return this;
+    }
+
+    /** The options. */
+    public ServerOptions build() {
+      return new ServerOptions(
+          serverName,
+          port,
+          bindAddress,
+          authenticator,
+          maxClients,
+          loginTimeout,
+          idleTimeout,
+          stallTimeout,
+          maxQueuedBytes,
+          maxInboundFrame,
+          minInterval,
+          maxSubscriptions,
+          maxPendingCalls,
+          workerThreads,
+          workerQueue,
+          cycleQueue,
+          maxCommandsPerCycle,
+          socketSendBuffer,
+          timeoutClock);
+    }
+  }
+}

@@ -1,0 +1,88 @@
+package org.jaria.net.server;
+
+import java.util.concurrent.atomic.LongAdder;
+
+/** Counters of what happened to a server's connections, for logs, tests and benchmarks. */
+public final class ServerStats {
+
+  final LongAdder accepted = new LongAdder();
+  final LongAdder refusedFull = new LongAdder();
+  final LongAdder loginFailed = new LongAdder();
+  final LongAdder loginTimeouts = new LongAdder();
+  final LongAdder malformed = new LongAdder();
+  final LongAdder droppedSlow = new LongAdder();
+  final LongAdder droppedIdle = new LongAdder();
+  final LongAdder requests = new LongAdder();
+  final LongAdder busy = new LongAdder();
+  final LongAdder updatesQueued = new LongAdder();
+
+  ServerStats() {}
+
+  /** Connections accepted (not counting those refused because the server was full). */
+  public long getAccepted() {
+    return accepted.sum();
+  }
+
+  /** Connections refused because the server had its maximum of clients. */
+  public long getRefusedFull() {
+    return refusedFull.sum();
+  }
+
+  /** Logins refused (wrong user or password, wrong protocol version). */
+  public long getLoginFailed() {
+    return loginFailed.sum();
+  }
+
+  /** Connections closed because they did not log in in time. */
+  public long getLoginTimeouts() {
+    return loginTimeouts.sum();
+  }
+
+  /** Connections closed for a malformed frame or a message out of place. */
+  public long getMalformed() {
+    return malformed.sum();
+  }
+
+  /** Clients dropped for reading too slowly (queue overflow or stall). */
+  public long getDroppedSlow() {
+    return droppedSlow.sum();
+  }
+
+  /** Clients dropped for saying nothing for too long. */
+  public long getDroppedIdle() {
+    return droppedIdle.sum();
+  }
+
+  /** Requests handled (or refused as busy). */
+  public long getRequests() {
+    return requests.sum();
+  }
+
+  /** Requests refused because queues were full. */
+  public long getBusy() {
+    return busy.sum();
+  }
+
+  /** Subscription updates queued (before coalescing). */
+  public long getUpdatesQueued() {
+    return updatesQueued.sum();
+  }
+
+  @Override
+  public String toString() {
+    return String.format(
+        java.util.Locale.ROOT,
+        "accepted %d, refused full %d, login failed %d, login timeouts %d, malformed %d,"
+            + " dropped slow %d, dropped idle %d, requests %d, busy %d, updates %d",
+        getAccepted(),
+        getRefusedFull(),
+        getLoginFailed(),
+        getLoginTimeouts(),
+        getMalformed(),
+        getDroppedSlow(),
+        getDroppedIdle(),
+        getRequests(),
+        getBusy(),
+        getUpdatesQueued());
+  }
+}

@@ -1,0 +1,38 @@
+package org.jaria.net.server.info;
+
+import org.jaria.net.data.VideoFrame;
+import org.jaria.net.provider.VideoSource;
+import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.PolledPublication;
+import org.jaria.net.server.Where;
+
+/**
+ * Video for clients (ArNetworking's video forwarding and {@code ArServerHandlerCamera}): {@code
+ * "getVideo"} publishes the source's newest frame (a slow client gets fewer frames, never a
+ * backlog), {@code "getVideoInfo"} names the camera.
+ */
+public final class ArServerHandlerCamera {
+
+  /** Registers the video data with {@code server}. */
+  public ArServerHandlerCamera(ArServerBase server, VideoSource source) {
+    server.addPublishedData(
+        "getVideo",
+        "the newest camera frame: subscribe at the frame rate you want",
+        "VideoFrame [sequence, format JPEG|PNG|RGB, width, height, bytes]",
+        "Video",
+        PolledPublication.keyed(
+            () -> {
+              VideoFrame f = source.getLatestFrame();
+              return f == null ? Long.MIN_VALUE : f.getSequence();
+            },
+            source::getLatestFrame));
+    server.addData(
+        "getVideoInfo",
+        "the camera's name",
+        "none",
+        "string name",
+        "Video",
+        Where.WORKER,
+        (client, request, reply) -> reply.strToBuf(source.getName()));
+  }
+}

@@ -1,0 +1,123 @@
+package org.jaria.net.server.info;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Consumer;
+import org.jaria.net.ArNetPacket;
+import org.jaria.net.data.CommandInfo;
+import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.Where;
+
+/**
+ * Custom commands (ArNetworking's {@code ArServerHandlerCommands}): a program adds named commands,
+ * a monitor lists them with {@code "listCommands"} and runs one by sending a request of the same
+ * name, with its arguments (any simple values; the command receives them as text).
+ *
+ * <pre>{@code
+ * ArServerHandlerCommands commands = new ArServerHandlerCommands(server);
+ * commands.addCommand("resetOdometer", "sets the odometer to zero", robot::resetOdometer);
+ * commands.addStringCommand("say", "logs a line", text -> log.info(text));
+ * }</pre>
+ *
+ * <p>By default commands run on the robot's cycle, so they may touch the robot and its actions;
+ * keep them short, or add them with {@link Where#WORKER}.
+ */
+public final class ArServerHandlerCommands {
+
+  /** Command group of every custom command. */
+  public static final String GROUP = "CustomCommands";
+
+  /** A command's body: gets the arguments as text, returns a reply for the user ("" for none). */
+  @FunctionalInterface
+  public interface CommandHandler {
+    /** Runs the command. */
+    String run(List<String> args) throws Exception;
+  }
+
+  private final ArServerBase server;
+  private final List<CommandInfo> commands = new CopyOnWriteArrayList<>();
+
+  /** Registers {@code "listCommands"} with {@code server}. */
+  public ArServerHandlerCommands(ArServerBase server) {
+    this.server = server;
+    server.addData(
+        "listCommands",
+        "the custom commands: send one by its name",
+        "none",
+        "array of [name, description, argument description]",
+        "",
+        Where.WORKER,
+        (client, request, reply) -> {
+          List<CommandInfo> l = getCommands();
+          reply.arrayToBuf(l.size());
+          for (CommandInfo c : l) {
+            c.write(reply);
+          }
+        });
+  }
+
+  /** Adds a command without arguments, run on the robot's cycle. */
+  public void addCommand(String name, String description, Runnable command) {
+    addCommand(
+        name,
+        description,
+        "",
+        Where.CYCLE,
+        args -> {
+          command.run();
+          return "";
+        });
+  }
+
+  /** Adds a command taking one string (all arguments joined by spaces), run on the cycle. */
+  public void addStringCommand(String name, String description, Consumer<String> command) {
+    addCommand(
+        name,
+        description,
+        "string",
+        Where.CYCLE,
+        args -> {
+          command.accept(String.join(" ", args));
+          return "";
+        });
+  }
+
+  /**
+   * Adds a command.
+   *
+   * @param argumentDescription its arguments, for people ("" for none)
+   * @param where where it runs
+   * @throws IllegalArgumentException if the name is already used by any data of the server
+   */
+  public void addCommand(
+      String name,
+      String description,
+      String argumentDescription,
+      Where where,
+      CommandHandler handler) {
+    server.addData(
+        name,
+        description,
+        argumentDescription.isEmpty() ? "none" : argumentDescription,
+        "string reply",
+        GROUP,
+        where,
+        (client, request, reply) -> reply.strToBuf(handler.run(argsAsText(request))));
+    commands.add(new CommandInfo(name, description, argumentDescription));
+  }
+
+  private static List<String> argsAsText(ArNetPacket p) {
+    List<String> l = new ArrayList<>();
+    while (p.hasMore()) {
+      Object v = p.bufToValue();
+      l.add(v instanceof byte[] b ? b.length + " bytes" : String.valueOf(v));
+    }
+    return l;
+  }
+
+  /** The commands added so far. */
+  public List<CommandInfo> getCommands() {
+    return List.copyOf(commands);
+  }
+}

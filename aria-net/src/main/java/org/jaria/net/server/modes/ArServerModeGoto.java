@@ -1,0 +1,256 @@
+package org.jaria.net.server.modes;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import org.jaria.action.ArAction;
+import org.jaria.action.ArActionAvoidFront;
+import org.jaria.action.ArActionBumpers;
+import org.jaria.action.ArActionDesired;
+import org.jaria.action.ArActionGoto;
+import org.jaria.action.ArActionGroup;
+import org.jaria.action.ArActionStallRecover;
+import org.jaria.geom.ArMath;
+import org.jaria.geom.ArPose;
+import org.jaria.map.ArMap;
+import org.jaria.map.ArMapObject;
+import org.jaria.net.ArNetPacket;
+import org.jaria.net.data.PathSnapshot;
+import org.jaria.net.protocol.NetError;
+import org.jaria.net.provider.PathPlanningInfo;
+import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.ArServerClient;
+import org.jaria.net.server.NetRequestException;
+import org.jaria.net.server.Where;
+import org.jaria.robot.ArRobot;
+
+/**
+ * Drives to a pose or a named map goal (ArNetworking's {@code ArServerModeGoto}).
+ *
+ * <p>With a {@link PathPlanningInfo} (SonARNL's path planner through an adapter) the mode hands the
+ * goal to the planner, which plans round the map's walls and drives. Without one it drives straight
+ * with ARIA's actions, as the thesis's gotoActionExample: {@link ArActionGoto} under stall
+ * recovery, bumpers and two front avoiders, then, at the goal, turns to the goal's heading if
+ * asked. Client requests: {@code "gotoPose"} (x, y[, th, useHeading]), {@code "gotoGoal"} (name),
+ * {@code "getGoals"}.
+ */
+public class ArServerModeGoto extends ArServerMode {
+
+  private final PathPlanningInfo planner;
+  private final ArMap map;
+  private final ArActionGroup group;
+  private final ArActionGoto gotoAction = new ArActionGoto("goto");
+  private final HoldAtGoal hold = new HoldAtGoal(gotoAction);
+  // Cycle thread only.
+  private String goalName = "";
+
+  /** A goto mode that drives straight with actions (no planner). */
+  public ArServerModeGoto(ArServerBase server, ArRobot robot, ArMap map) {
+    this(server, robot, null, map);
+  }
+
+  /**
+   * A goto mode.
+   *
+   * @param planner the path planner to delegate to, or null to drive straight with actions
+   * @param map the map whose goals can be named (null: only poses)
+   */
+  public ArServerModeGoto(ArServerBase server, ArRobot robot, PathPlanningInfo planner, ArMap map) {
+    super(server, robot, "Goto");
+    this.planner = planner;
+    this.map = map;
+    group = new ArActionGroup(robot);
+    withRobotLocked(
+        robot,
+        () -> {
+          gotoAction.cancelGoal();
+          group.addAction(new ArActionStallRecover(), 100);
+          group.addAction(new ArActionBumpers(), 75);
+          group.addAction(new ArActionAvoidFront("Avoid Front Near", 225, 0), 50);
+          group.addAction(new ArActionAvoidFront(), 49);
+          group.addAction(gotoAction, 40);
+          group.addAction(hold, 30);
+          group.deactivate();
+        });
+    Where where = planner == null ? Where.CYCLE : Where.WORKER;
+    server.addData(
+        "gotoPose",
+        "drives to a pose",
+        "double x (mm), double y (mm)[, double th (deg), bool useHeading]",
+        "none",
+        "Movement",
+        where,
+        this::serverGotoPose);
+    server.addData(
+        "gotoGoal",
+        "drives to a goal of the map",
+        "string goal name",
+        "none",
+        "Movement",
+        where,
+        this::serverGotoGoal);
+    server.addData(
+        "getGoals",
+        "the names of the map's goals",
+        "none",
+        "array of string",
+        "RobotInfo",
+        Where.WORKER,
+        (client, request, reply) -> reply.valueToBuf(getGoals()));
+  }
+
+  /** The names of the map's goals, in map order. */
+  public List<String> getGoals() {
+    List<String> l = new ArrayList<>();
+    if (map != null) {
+      for (ArMapObject o : map.getGoals()) {
+        l.add(o.name());
+      }
+    }
+    return l;
+  }
+
+  /** The goto actions used without a planner (to add, say, an ArActionLost). */
+  public ArActionGroup getActionGroup() {
+    return group;
+  }
+
+  private void serverGotoPose(ArServerClient client, ArNetPacket request, ArNetPacket reply)
+      throws NetRequestException {
+    double x = request.bufToDouble();
+    double y = request.bufToDouble();
+    double th = request.hasMore() ? request.bufToDouble() : 0;
+    boolean useHeading = request.hasMore() && request.bufToBool();
+    ArPose goal = new ArPose(x, y, th);
+    String name = String.format(Locale.ROOT, "pose (%.0f, %.0f)", x, y);
+    if (planner != null) {
+      startWithPlanner(name, () -> planner.pathPlanToPose(goal, useHeading));
+    } else {
+      gotoPose(goal, useHeading, name);
+    }
+  }
+
+  private void serverGotoGoal(ArServerClient client, ArNetPacket request, ArNetPacket reply)
+      throws NetRequestException {
+    String name = request.bufToStr();
+    if (planner != null) {
+      startWithPlanner("goal " + name, () -> planner.pathPlanToGoal(name));
+      return;
+    }
+    Optional<ArMapObject> goal =
+        map == null
+            ? Optional.empty()
+            : map.getGoals().stream().filter(o -> o.name().equals(name)).findFirst();
+    if (goal.isEmpty()) {
+      throw new NetRequestException(
+          NetError.BAD_ARGUMENTS, "no goal called '" + name + "' on the map; see getGoals");
+    }
+    gotoPose(goal.get().pose(), goal.get().type().equals("GoalWithHeading"), "goal " + name);
+  }
+
+  private interface PlanStart {
+    boolean start();
+  }
+
+  /** Worker thread: switch to this mode on the cycle, then hand the goal to the planner. */
+  private void startWithPlanner(String name, PlanStart start) throws NetRequestException {
+    if (!server.runOnCycle(
+        () -> {
+          activate();
+          goalName = name;
+          setStatus("Planning a path to " + name);
+        })) {
+      throw new NetRequestException(NetError.BUSY, "the robot's command queue is full");
+    }
+    if (!start.start()) {
+      throw new NetRequestException(NetError.FAILED, "the planner cannot go to " + name);
+    }
+  }
+
+  /**
+   * Drives to {@code goal} with the straight-line actions (cycle thread), activating the mode.
+   *
+   * @param useHeading turn to the goal's heading at the end
+   * @param name how the status names the goal
+   */
+  public void gotoPose(ArPose goal, boolean useHeading, String name) {
+    activate();
+    goalName = name;
+    hold.set(goal.getTh(), useHeading);
+    gotoAction.setGoal(goal);
+    setStatus("Going to " + name);
+  }
+
+  @Override
+  protected void onActivate() {
+    robot.clearDirectMotion();
+    robot.enableMotors();
+    if (planner == null) {
+      gotoAction.cancelGoal();
+      group.activateExclusive();
+    }
+    setStatus("Waiting for a goal");
+  }
+
+  @Override
+  protected void onDeactivate() {
+    if (planner != null) {
+      planner.cancelPathPlan();
+    } else {
+      gotoAction.cancelGoal();
+      group.deactivate();
+    }
+  }
+
+  @Override
+  protected void userTask() {
+    if (planner != null) {
+      PathSnapshot p = planner.getPathState();
+      if (p != null && !p.status().isEmpty()) {
+        setStatus(p.status());
+      }
+      return;
+    }
+    if (gotoAction.haveAchievedGoal()) {
+      setStatus(hold.turned(robot.getTh()) ? "Arrived at " + goalName : "Turning at " + goalName);
+    }
+  }
+
+  /** At the goal: stand still, turning to the goal's heading if asked. */
+  private static final class HoldAtGoal extends ArAction {
+    private final ArActionDesired desired = new ArActionDesired();
+    private final ArActionGoto gotoAction;
+    private volatile double heading;
+    private volatile boolean useHeading;
+
+    HoldAtGoal(ArActionGoto gotoAction) {
+      super("Hold at goal", "stands still at the goal, facing its heading if asked");
+      this.gotoAction = gotoAction;
+    }
+
+    void set(double th, boolean use) {
+      heading = th;
+      useHeading = use;
+    }
+
+    boolean turned(double th) {
+      return !useHeading || Math.abs(ArMath.subAngle(heading, th)) < 3;
+    }
+
+    @Override
+    public ArActionDesired fire(ArActionDesired currentDesired) {
+      if (!gotoAction.haveAchievedGoal()) {
+        return null;
+      }
+      desired.reset();
+      desired.setVel(0);
+      if (useHeading) {
+        desired.setHeading(heading);
+      } else {
+        desired.setRotVel(0);
+      }
+      return desired;
+    }
+  }
+}
