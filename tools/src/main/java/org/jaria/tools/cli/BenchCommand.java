@@ -11,7 +11,12 @@ import picocli.CommandLine.Spec;
 @Command(
     name = "bench",
     description = "Run a benchmark and print its table of figures.",
-    subcommands = {BenchCommand.Protocol.class, BenchCommand.Sim.class, BenchCommand.Vision.class})
+    subcommands = {
+      BenchCommand.Protocol.class,
+      BenchCommand.Sim.class,
+      BenchCommand.Vision.class,
+      BenchCommand.Arnl.class
+    })
 final class BenchCommand implements Runnable {
 
   @Spec CommandSpec spec;
@@ -68,6 +73,26 @@ final class BenchCommand implements Runnable {
     @Override
     public Integer call() throws Exception {
       spec.commandLine().getOut().println(org.jaria.acts.bench.VisionBenchmark.run(quick));
+      return 0;
+    }
+  }
+
+  /** {@code jaria bench arnl}. */
+  @Command(
+      name = "arnl",
+      description =
+          "Sonar localization update time and accuracy, global localization, planning and"
+              + " navigation success (fixed seeds).")
+  static final class Arnl implements Callable<Integer> {
+
+    @Spec CommandSpec spec;
+
+    @Option(names = "--quick", description = "Fewer repetitions (less precise).")
+    boolean quick;
+
+    @Override
+    public Integer call() {
+      spec.commandLine().getOut().println(org.jaria.arnl.bench.ArnlBenchmark.run(quick));
       return 0;
     }
   }

@@ -19,9 +19,13 @@ import picocli.CommandLine.Command;
       VersionCommand.class,
       PacketsCommand.class,
       MapCommand.class,
-      org.jaria.sim.cli.SimCommand.class,
+      org.jaria.tools.simview.SimGuiCommand.class,
+      org.jaria.tools.simview.SimViewCommand.class,
       org.jaria.acts.cli.ActsCommand.class,
       org.jaria.tools.demo.DemoCommand.class,
+      org.jaria.tools.mapper.MapperCommand.class,
+      org.jaria.tools.eztrain.EzTrainCommand.class,
+      org.jaria.tools.fx.ScreenshotCommand.class,
       BenchCommand.class,
       CommandLine.HelpCommand.class
     })

@@ -21,7 +21,13 @@ import picocli.CommandLine.Spec;
       "Run one of the thesis's applications (default: wander) against an embedded simulator,",
       "or against a robot or simulator given with --remote."
     },
-    subcommands = {DemoCommand.Wander.class, GyroDemo.class, GotoDemo.class, ChaseDemo.class})
+    subcommands = {
+      DemoCommand.Wander.class,
+      GyroDemo.class,
+      GotoDemo.class,
+      ChaseDemo.class,
+      NavigateDemoCommand.class
+    })
 public final class DemoCommand extends DemoOptions implements Callable<Integer> {
 
   @Spec CommandSpec spec;

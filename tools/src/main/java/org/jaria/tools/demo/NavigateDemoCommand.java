@@ -1,0 +1,63 @@
+package org.jaria.tools.demo;
+
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import org.jaria.arnl.demo.NavigateDemo;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code jaria demo navigate}: the thesis's path-following application (§6.1). Localizes at home,
+ * plans to each goal in turn and drives there, printing progress and the final error.
+ */
+@Command(
+    name = "navigate",
+    description = {
+      "Path following (thesis §6.1): localize at home, plan and drive to each --goal in turn.",
+      "Without --remote it runs an embedded simulator in lockstep (as fast as the computer goes)."
+    })
+final class NavigateDemoCommand implements Callable<Integer> {
+
+  @Option(
+      names = "--map",
+      description = "Bundled map (office, hall) or .map file (default: ${DEFAULT-VALUE}).",
+      defaultValue = "office")
+  String map = "office";
+
+  @Option(
+      names = "--goal",
+      paramLabel = "NAME",
+      description = "A goal name from the map, or a pose x,y[,th] in mm/degrees (repeatable).")
+  List<String> goals = new ArrayList<>();
+
+  @Option(
+      names = "--remote",
+      paramLabel = "HOST:PORT",
+      description = "Drive this robot or external simulator instead of an embedded one.")
+  String remote;
+
+  @Option(
+      names = "--speed",
+      paramLabel = "X",
+      description =
+          "Embedded simulator pace: 0 = lockstep, as fast as possible (default), else x real time.")
+  double speed;
+
+  @Override
+  public Integer call() {
+    List<String> g = goals.isEmpty() ? List.of(defaultGoal(map)) : goals;
+    PrintStream out = new PrintStream(System.out, true, StandardCharsets.UTF_8);
+    return NavigateDemo.run(map, g, remote, out, speed);
+  }
+
+  /**
+   * A goal that exists in the bundled maps, so {@code jaria demo navigate} works without options.
+   */
+  private static String defaultGoal(String map) {
+    var mapGoals = NavigateDemo.loadMap(map).getGoals();
+    return mapGoals.isEmpty() ? "0,0" : mapGoals.get(0).name();
+  }
+}
