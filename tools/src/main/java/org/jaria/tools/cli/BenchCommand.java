@@ -15,7 +15,8 @@ import picocli.CommandLine.Spec;
       BenchCommand.Protocol.class,
       BenchCommand.Sim.class,
       BenchCommand.Vision.class,
-      BenchCommand.Arnl.class
+      BenchCommand.Arnl.class,
+      BenchCommand.Actions.class
     })
 final class BenchCommand implements Runnable {
 
@@ -93,6 +94,24 @@ final class BenchCommand implements Runnable {
     @Override
     public Integer call() {
       spec.commandLine().getOut().println(org.jaria.arnl.bench.ArnlBenchmark.run(quick));
+      return 0;
+    }
+  }
+
+  /** {@code jaria bench actions}. */
+  @Command(
+      name = "actions",
+      description = "Resolver and whole-cycle time with 20 active actions on a simulated P3-DX.")
+  static final class Actions implements Callable<Integer> {
+
+    @Spec CommandSpec spec;
+
+    @Option(names = "--quick", description = "Fewer samples (less precise).")
+    boolean quick;
+
+    @Override
+    public Integer call() {
+      spec.commandLine().getOut().println(org.jaria.tools.bench.ActionsBenchmark.run(quick));
       return 0;
     }
   }
