@@ -8,6 +8,7 @@ import org.jaria.acts.server.ActsServer;
 import org.jaria.acts.server.ServerSettings;
 import org.jaria.acts.server.VisionPipeline;
 import org.jaria.clock.Clock;
+import org.jaria.input.ArKeyHandler;
 import org.jaria.robot.ArRobot;
 import org.jaria.tools.examples.ActsColorFollowingExample;
 import org.jaria.tools.simvision.ChaseScene;
@@ -35,6 +36,11 @@ final class ChaseDemo extends DemoOptions implements Callable<Integer> {
       defaultValue = "150")
   double ballSpeed = 150;
 
+  @Option(
+      names = "--keys",
+      description = "Read keys from this terminal: 'a' toggles keyboard driving, arrows drive.")
+  boolean keys;
+
   ChaseDemo() {
     map = "hall";
   }
@@ -61,7 +67,8 @@ final class ChaseDemo extends DemoOptions implements Callable<Integer> {
       try (ActsServer acts =
               new ActsServer(
                   pipeline, ServerSettings.DEFAULT.withAddress("127.0.0.1", 0), Clock.system());
-          DemoTicker ticker = new DemoTicker("demo-status", seconds)) {
+          DemoTicker ticker = new DemoTicker("demo-status", seconds);
+          ArKeyHandler keyHandler = keys ? ArKeyHandler.forTerminal() : new ArKeyHandler()) {
         acts.start();
         out.printf(
             Locale.ROOT,
@@ -78,7 +85,10 @@ final class ChaseDemo extends DemoOptions implements Callable<Integer> {
           String.valueOf(acts.getPort())
         };
         return ActsColorFollowingExample.run(
-            args, new SimCameraPtz(scene.camera), robot -> watch(ticker, robot, scene, out));
+            args,
+            new SimCameraPtz(scene.camera),
+            keyHandler,
+            robot -> watch(ticker, robot, scene, out));
       }
     }
   }
