@@ -102,7 +102,14 @@ public class ArActionTriangleDriveTo extends ArAction {
       double speed,
       double closeDist,
       double acquireTurnSpeed) {
-    this(name, null, finalDistFromVertex, approachDistFromVertex, speed, closeDist, acquireTurnSpeed);
+    this(
+        name,
+        null,
+        finalDistFromVertex,
+        approachDistFromVertex,
+        speed,
+        closeDist,
+        acquireTurnSpeed);
   }
 
   /** ARIA's defaults (final 400 mm, approach 1000 mm, 200 mm/s, close 100 mm, 30 deg/s). */

@@ -57,6 +57,14 @@ class DemoCommandTest {
   }
 
   @Test
+  void chaseStartsTheSimulatorAndActsAndPrintsTheBallDistance() {
+    Run r = jaria("demo", "chase", "--seconds", "2");
+    assertEquals(0, r.status(), r.out() + r.err());
+    assertTrue(r.out().contains("channel 1 trained on the red ball"), r.out());
+    assertTrue(r.out().contains("ball") && r.out().contains("mm away"), r.out());
+  }
+
+  @Test
   void navigateReachesTheFirstGoalOfTheOfficeInLockstep() {
     Run r = jaria("demo", "navigate", "--map", "office", "--goal", "Corridor West");
     assertEquals(0, r.status(), r.out() + r.err());
