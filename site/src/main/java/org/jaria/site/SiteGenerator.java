@@ -60,7 +60,7 @@ public final class SiteGenerator {
   public List<Page> generate() throws IOException {
     Files.createDirectories(out);
     List<Page> pages = new ArrayList<>();
-    for (Path rel : DocFiles.list(root)) {
+    for (Path rel : readingOrder()) {
       String md = Files.readString(root.resolve(rel), StandardCharsets.UTF_8);
       pages.add(new Page(rel, htmlPath(rel), title(parser.parse(md), rel)));
     }
@@ -87,6 +87,35 @@ public final class SiteGenerator {
             + "<a href=\"docs/index.html\">JAria documentation</a></body></html>\n",
         StandardCharsets.UTF_8);
     return pages;
+  }
+
+  /**
+   * The guides in the order the documentation home (docs/index.md) lists them, the home first; the
+   * README and any guide the home does not link come after.
+   */
+  List<Path> readingOrder() throws IOException {
+    Path home = Path.of("docs", "index.md");
+    Set<Path> order = new LinkedHashSet<>();
+    order.add(home);
+    parser
+        .parse(Files.readString(root.resolve(home), StandardCharsets.UTF_8))
+        .accept(
+            new AbstractVisitor() {
+              @Override
+              public void visit(Link link) {
+                String d = link.getDestination();
+                String path = d.contains("#") ? d.substring(0, d.indexOf('#')) : d;
+                if (path.endsWith(".md") && !d.contains("://")) {
+                  Path p = home.getParent().resolve(path).normalize();
+                  if (Files.isRegularFile(root.resolve(p))) {
+                    order.add(p);
+                  }
+                }
+                visitChildren(link);
+              }
+            });
+    order.addAll(DocFiles.list(root));
+    return new ArrayList<>(order);
   }
 
   static Path htmlPath(Path md) {
@@ -202,11 +231,12 @@ public final class SiteGenerator {
       body{margin:0;font:16px/1.5 system-ui,sans-serif;color:#222;display:flex}
       nav{width:16em;flex:none;padding:1em;background:#f4f4f2;min-height:100vh;font-size:14px}
       nav ul{list-style:none;padding:0}nav li{margin:.3em 0}nav li.here a{font-weight:bold}
-      main{max-width:60em;padding:1em 2em;overflow-x:auto}
+      main{flex:1;min-width:0;max-width:80em;padding:1em 2em;overflow-x:auto}
+      table{font-size:14px}
       pre{background:#f6f8fa;padding:.8em;overflow-x:auto;font-size:13px}
       code{font-family:ui-monospace,monospace}
       table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:.3em .6em;vertical-align:top}
-      .side-by-side{display:grid;grid-template-columns:1fr 1fr;gap:1em}
+      .side-by-side{display:grid;grid-template-columns:minmax(0,1fr) minmax(0,1fr);gap:1em}
       .side-by-side pre{margin:0;height:100%}
       img{max-width:100%}
       """;

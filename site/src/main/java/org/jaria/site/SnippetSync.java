@@ -94,7 +94,7 @@ public final class SnippetSync {
                 name,
                 fence + 1,
                 ref,
-                "differs from its source; run the snippet update (see docs)"));
+                "differs from its source; refresh the guides (docs/index.md says how)"));
       }
       append(out, lines[fence], fence, lines.length);
       out.append(wanted);

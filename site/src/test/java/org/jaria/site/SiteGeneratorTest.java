@@ -22,6 +22,10 @@ class SiteGeneratorTest {
     String home = Files.readString(out.resolve("docs/index.html"));
     assertTrue(home.contains("href=\"getting-started.html\""), "links point at HTML pages");
     assertTrue(home.contains("<nav>"), "every page has the navigation");
+    String nav = home.substring(home.indexOf("<nav>"), home.indexOf("</nav>"));
+    assertTrue(
+        nav.indexOf(">Troubleshooting<") < nav.indexOf(">The classroom kit<"),
+        "the navigation follows the documentation home's order, not the file names");
     String es = Files.readString(out.resolve("docs/es/primeros-pasos.html"));
     assertTrue(es.startsWith("<!DOCTYPE html>\n<html lang=\"es\">"), "Spanish page in Spanish");
     String porting = Files.readString(out.resolve("docs/porting-from-aria.html"));

@@ -110,6 +110,7 @@ public final class SquareAssignment implements Assignment {
     double[][] corner = {{0, 0}, {SIDE, 0}, {SIDE, SIDE}, {0, SIDE}, {0, 0}};
     List<Check> checks = new ArrayList<>();
     int from = 0;
+    int missedOne = 0;
     for (int k = 1; k <= 4; k++) {
       double cx = corner[k][0];
       double cy = corner[k][1];
@@ -128,23 +129,44 @@ public final class SquareAssignment implements Assignment {
       }
       int at = trace.firstWithin(cx, cy, TOLERANCE, leave);
       if (at >= 0) {
+        int closest = closestWhileWithin(trace, cx, cy, at);
         checks.add(
             Check.pass(
                 name,
                 k < 4 ? 2 : 1,
                 "passed within "
-                    + Fmt.dist(trace.distance(at, cx, cy))
+                    + Fmt.dist(trace.distance(closest, cx, cy))
                     + " of "
                     + Fmt.xy(cx, cy)
                     + " at "
-                    + Fmt.seconds(trace.t(at))));
-        from = at;
+                    + Fmt.seconds(trace.t(closest))));
+        from = closest;
         continue;
       }
+      if (missedOne > 0) {
+        checks.add(
+            Check.fail(
+                name,
+                k < 4 ? 2 : 1,
+                "your robot did not get this far: fix corner " + missedOne + " first"));
+        continue;
+      }
+      missedOne = k;
       checks.add(
           Check.fail(name, k < 4 ? 2 : 1, missed(trace, k, corner[k - 1], corner[k], leave)));
     }
     return checks;
+  }
+
+  /** The sample closest to (x, y) from {@code at} until the robot leaves the tolerance again. */
+  private static int closestWhileWithin(PoseTrace trace, double x, double y, int at) {
+    int best = at;
+    for (int i = at; i < trace.size() && trace.distance(i, x, y) <= TOLERANCE; i++) {
+      if (trace.distance(i, x, y) < trace.distance(best, x, y)) {
+        best = i;
+      }
+    }
+    return best;
   }
 
   private static int firstFarFrom(PoseTrace trace, double x, double y, double d, int from) {
@@ -175,6 +197,10 @@ public final class SquareAssignment implements Assignment {
       sb.append("it went to ").append(Fmt.xy(target[0], -target[1]));
       sb.append(" instead: it turned right. The square goes counter-clockwise: turn left,");
       sb.append(" robot.setDeltaHeading(90), and wait until robot.isHeadingDone()");
+    } else if (Math.abs(aside) < 300 && along < 100 && along > -300 && k > 1) {
+      sb.append("it never drove the side from corner ").append(k - 1).append(": after it, turn");
+      sb.append(" 90 degrees left (robot.setDeltaHeading(90)), wait until robot.isHeadingDone(),");
+      sb.append(" and drive the next ").append(Fmt.dist(SIDE));
     } else if (Math.abs(aside) < 300 && along < SIDE && along > -300) {
       sb.append("it stopped ").append(Fmt.dist(SIDE - along)).append(" short of it, at ");
       sb.append(Fmt.xy(px, py)).append(". Does every side drive the full ");

@@ -76,7 +76,7 @@ class GradeCommandTest {
         """);
     Path out = tmp.resolve("report");
     Run r =
-        jaria("--assignment", "square", "--timeout", "10", "-o", out.toString(), subs.toString());
+        jaria("--assignment", "square", "--timeout", "8", "-o", out.toString(), subs.toString());
     assertEquals(0, r.exit(), r.err());
 
     Map<String, String> rows =
