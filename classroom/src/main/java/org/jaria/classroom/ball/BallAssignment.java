@@ -117,7 +117,9 @@ public final class BallAssignment implements Assignment {
         3,
         "after 30 s your robot was still "
             + Fmt.dist(scene.distanceToBall())
-            + " from the ball (it started 2.38 m away, the ball 400 mm to its left) and moving at "
+            + " from the ball (it started "
+            + Fmt.dist(scene.startDistance)
+            + " away, the ball 400 mm to its left) and moving at "
             + Fmt.num(v, 0)
             + " mm/s: when acts.getNumBlobs(1) > 0, set a forward velocity (desired.setVel(200))"
             + " and turn towards the largest blob: blob.getXCG() below 80 (the image is 160"

@@ -34,6 +34,7 @@ final class BallScene implements AutoCloseable {
   final SimRobot simRobot;
   final SimulatedRobot sim;
   final ArACTS_1_2 acts;
+  final double startDistance;
   private ColoredObject ball;
 
   /** The scene, with the ball {@code ahead} mm in front of the robot and {@code left} mm left. */
@@ -77,6 +78,7 @@ final class BallScene implements AutoCloseable {
             }
           });
       sim = SimulatedRobot.connect(world, simRobot);
+      startDistance = distanceToBall();
       acts = new ArACTS_1_2(world.getClock());
       acts.setReadTimeouts(0, 0); // lockstep: the reply comes on the next tick, never wait
       if (!acts.openPort(sim.robot(), pipe.a())) {

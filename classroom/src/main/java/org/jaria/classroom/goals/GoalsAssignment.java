@@ -146,6 +146,7 @@ public final class GoalsAssignment implements Assignment {
   private List<Check> goals(ArMap map, PoseTrace trace, int interrupted) {
     List<Check> checks = new ArrayList<>();
     int from = 0;
+    boolean previousReached = false;
     for (int k = 0; k < GOALS.size(); k++) {
       String goal = GOALS.get(k);
       ArPose p = map.findMapObject(goal).orElseThrow().pose();
@@ -161,6 +162,7 @@ public final class GoalsAssignment implements Assignment {
                     + " from it at "
                     + Fmt.seconds(trace.t(at))));
         from = at;
+        previousReached = true;
         continue;
       }
       int closest = trace.closestTo(p.x(), p.y(), from);
@@ -171,7 +173,7 @@ public final class GoalsAssignment implements Assignment {
               .append(goal)
               .append("' ")
               .append(Fmt.xy(p.x(), p.y()))
-              .append(k > 0 ? " after the previous goal" : "")
+              .append(previousReached ? " after the previous goal" : "")
               .append("; the closest it came was ")
               .append(Fmt.dist(trace.distance(closest, p.x(), p.y())))
               .append('.');
@@ -185,6 +187,7 @@ public final class GoalsAssignment implements Assignment {
             .append("\") and wait on the robot's clock while path.isActive()?");
       }
       checks.add(Check.fail(name, 3, msg.toString()));
+      previousReached = false;
     }
     return checks;
   }
