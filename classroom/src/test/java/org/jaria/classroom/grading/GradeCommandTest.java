@@ -75,8 +75,9 @@ class GradeCommandTest {
         }
         """);
     Path out = tmp.resolve("report");
+    // A good submission's JVM needs about 2 s; dave's never ends and is killed at the limit.
     Run r =
-        jaria("--assignment", "square", "--timeout", "8", "-o", out.toString(), subs.toString());
+        jaria("--assignment", "square", "--timeout", "12", "-o", out.toString(), subs.toString());
     assertEquals(0, r.exit(), r.err());
 
     Map<String, String> rows =
