@@ -78,8 +78,8 @@ public final class Snippets {
         }
         continue; // marker lines of any tag are never shown
       }
-      if (in) {
-        out.add(line);
+      if (in && !(line.isBlank() && !out.isEmpty() && out.get(out.size() - 1).isBlank())) {
+        out.add(line); // (blank lines left where markers were removed are collapsed)
       }
     }
     return found ? out : null;
