@@ -54,6 +54,14 @@ class SnippetsTest {
   }
 
   @Test
+  void nestedTagMarkersLeaveNoDoubleBlankLines(@TempDir Path root) throws IOException {
+    Files.writeString(
+        root.resolve("B.java"),
+        "// tag::all[]\nint a;\n\n// tag::b[]\n\nint b;\n// end::b[]\n// end::all[]\n");
+    assertEquals("int a;\n\nint b;", new Snippets(root).get("B.java#all"));
+  }
+
+  @Test
   void driftedBlocksAreFoundAndRewritten(@TempDir Path root) throws IOException {
     Files.writeString(root.resolve("A.java"), SOURCE);
     String md = "# T\n\n<!-- snippet: A.java#twice -->\n```java\nold\n```\n";
