@@ -476,6 +476,26 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
     return sensorInterpTasks.snapshot();
   }
 
+  /**
+   * The cycle as a tree, as ARIA's {@code getSyncTaskRoot()} shows it: "SyncTasks" with "Packet
+   * Handler" (85), the "Sensor Interp" branch (65) with its tasks, "Action Handler" (55), "State
+   * Reflector" (45) and the "User Tasks" branch (25) with its tasks. A snapshot: ask again after
+   * adding or removing tasks. {@code System.out.print(robot.getSyncTaskRoot())} prints it.
+   */
+  public SyncTaskView getSyncTaskRoot() {
+    return new SyncTaskView(
+        "SyncTasks",
+        0,
+        true,
+        null,
+        List.of(
+            SyncTaskView.step("Packet Handler", 85),
+            SyncTaskView.branch("Sensor Interp", 65, sensorInterpTasks.snapshot()),
+            SyncTaskView.step("Action Handler", 55),
+            SyncTaskView.step("State Reflector", 45),
+            SyncTaskView.branch("User Tasks", 25, userTasks.snapshot())));
+  }
+
   /** Locks the robot: the cycle's tasks do not run until {@link #unlock()}. */
   public void lock() {
     robotLock.lock();
