@@ -4,7 +4,6 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
-import java.util.BitSet;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -58,7 +57,7 @@ public final class SimWorld implements AutoCloseable {
   private final List<Runnable> stepListeners = new CopyOnWriteArrayList<>();
   private final org.jaria.sim.camera.ColoredObjects colored =
       new org.jaria.sim.camera.ColoredObjects(this);
-  private final BitSet unknownLogged = new BitSet(256);
+  private final IgnoredCommandLog ignored = new IgnoredCommandLog();
   private final WorldHost host = new WorldHost(this);
   private TcpServers servers;
   private RealTimeRunner runner;
@@ -535,12 +534,21 @@ public final class SimWorld implements AutoCloseable {
     return geometry;
   }
 
-  boolean logUnknownOnce(int command) {
-    if (unknownLogged.get(command)) {
-      return false;
+  IgnoredCommandLog ignoredCommands() {
+    return ignored;
+  }
+
+  /**
+   * The commands the robots received but did not carry out (unknown numbers, commands the simulator
+   * does not simulate, commands for devices a robot does not carry), with counts.
+   */
+  public List<org.jaria.sim.server.IgnoredCommand> getIgnoredCommands() {
+    lock.lock();
+    try {
+      return ignored.snapshot();
+    } finally {
+      lock.unlock();
     }
-    unknownLogged.set(command);
-    return true;
   }
 
   List<RobotSlot> slots() {

@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Predicate;
 import org.jaria.connection.ArDeviceConnection;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
 import org.jaria.protocol.ArRobotPacketReceiver;
 import org.jaria.protocol.CommandCodec;
@@ -108,6 +109,26 @@ final class ArcosTestClient {
   void comPayload(int cmd, byte[] payload) {
     out.empty().setID(cmd).dataToBuf(payload, 0, payload.length).finalizePacket();
     send(out);
+  }
+
+  void com(ArCommands cmd) {
+    com(cmd.getNumber());
+  }
+
+  void comInt(ArCommands cmd, int v) {
+    comInt(cmd.getNumber(), v);
+  }
+
+  void com2Bytes(ArCommands cmd, int hi, int lo) {
+    com2Bytes(cmd.getNumber(), hi, lo);
+  }
+
+  void comData(ArCommands cmd, byte[] data) {
+    comData(cmd.getNumber(), data);
+  }
+
+  void comPayload(ArCommands cmd, byte[] payload) {
+    comPayload(cmd.getNumber(), payload);
   }
 
   /** Steps until a packet matching {@code p} arrived (at most {@code maxTicks}); returns it. */

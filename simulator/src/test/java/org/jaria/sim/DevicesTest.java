@@ -229,11 +229,12 @@ class DevicesTest {
   }
 
   @Test
-  void ariaSimulatedLaserCommandsGiveExtendedPackets() {
+  void legacyLaserCommandsGiveExtendedPacketsWhenEnabled() {
     try (SimWorld w = SimWorld.empty(OPTS)) {
-      SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withLaser(true));
+      SimRobot r =
+          w.addRobot(RobotOptions.of("p3dx-sh").withLaser(true).withLegacyLaserCommands(true));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      // What ARIA's ArSimulatedLaser sends: start, end, increment ×100, enable extended.
+      // What old ARIA's ArSimulatedLaser sends: start, end, increment ×100, enable extended.
       c.comInt(36, -45);
       c.comInt(37, 45);
       c.comInt(38, 50);

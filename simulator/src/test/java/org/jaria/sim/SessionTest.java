@@ -21,6 +21,7 @@ import org.jaria.protocol.Hex;
 import org.jaria.protocol.packets.ArConfigPacket;
 import org.jaria.protocol.packets.PacketIds;
 import org.jaria.protocol.packets.SimStatPacket;
+import org.jaria.sim.server.IgnoredCommand;
 import org.junit.jupiter.api.Test;
 
 /** The ARCOS session: handshake bytes, watchdog, simulator commands, bad input. */
@@ -284,9 +285,11 @@ class SessionTest {
       c.comInt(200, 6);
       c.com(201);
       w.advanceMillis(100);
-      assertFalse(w.logUnknownOnce(200), "200 was logged already");
-      assertFalse(w.logUnknownOnce(201));
-      assertTrue(w.logUnknownOnce(202));
+      assertEquals(
+          List.of(
+              new IgnoredCommand(200, "unknown", IgnoredCommand.Reason.UNKNOWN, 2),
+              new IgnoredCommand(201, "unknown", IgnoredCommand.Reason.UNKNOWN, 1)),
+          w.getIgnoredCommands());
       assertTrue(r.isSessionOpen());
     }
   }

@@ -87,6 +87,13 @@ public final class SimCommand implements Callable<Integer> {
   @Option(names = "--laser", description = "give every robot a simulated laser (SIM_LRF_ENABLE)")
   boolean laser;
 
+  @Option(
+      names = "--legacy-laser-commands",
+      description =
+          "with --laser: commands 35-38 set up the laser as in older simulators (old ARIA"
+              + " clients), not ADSEL/GRIPPERVAL/GRIPREQUEST/GYROCALCW")
+  boolean legacyLaserCommands;
+
   private final CountDownLatch stop = new CountDownLatch(1);
   private final AtomicInteger exitCode = new AtomicInteger();
 
@@ -115,7 +122,8 @@ public final class SimCommand implements Callable<Integer> {
     }
     for (String model : robotModels()) {
       try {
-        world.addRobot(RobotOptions.of(model).withLaser(laser));
+        world.addRobot(
+            RobotOptions.of(model).withLaser(laser).withLegacyLaserCommands(legacyLaserCommands));
       } catch (IllegalArgumentException e) {
         world.close();
         throw new ParameterException(spec.commandLine(), e.getMessage());
