@@ -8,6 +8,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.Lock;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.BooleanSupplier;
 
 /**
  * A clock that stands still until someone calls {@link #advance}. Tests and the simulator's
@@ -114,9 +115,22 @@ public final class VirtualClock implements Clock {
    * @throws InterruptedException if the calling thread is interrupted
    */
   public boolean awaitWaiters(int n, Duration timeout) throws InterruptedException {
+    return awaitWaiters(n, timeout, () -> false);
+  }
+
+  /**
+   * As {@link #awaitWaiters(int, Duration)}, but also returns, with false, as soon as {@code
+   * orUntil} is true. Whoever makes it true must then call {@link #wakeWatchers()} (for example a
+   * thread that ends instead of waiting on the clock).
+   */
+  public boolean awaitWaiters(int n, Duration timeout, BooleanSupplier orUntil)
+      throws InterruptedException {
     long end = System.nanoTime() + timeout.toNanos();
     synchronized (monitor) {
       while (waiters.size() < n) {
+        if (orUntil.getAsBoolean()) {
+          return false;
+        }
         long left = end - System.nanoTime();
         if (left <= 0) {
           return false;
@@ -124,6 +138,13 @@ public final class VirtualClock implements Clock {
         TimeUnit.NANOSECONDS.timedWait(monitor, left);
       }
       return true;
+    }
+  }
+
+  /** Wakes the threads in {@link #awaitWaiters} so they check their condition again. */
+  public void wakeWatchers() {
+    synchronized (monitor) {
+      monitor.notifyAll();
     }
   }
 
