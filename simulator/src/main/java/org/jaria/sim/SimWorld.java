@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.IntConsumer;
 import org.jaria.clock.Clock;
@@ -47,8 +48,12 @@ public final class SimWorld implements AutoCloseable {
 
   private static final Logger log = LoggerFactory.getLogger(SimWorld.class);
 
+  /** Numbers worlds for their names (and their threads' names) only; holds no simulation state. */
+  private static final AtomicInteger WORLD_NUMBERS = new AtomicInteger();
+
   final ReentrantLock lock = new ReentrantLock();
   private final SimOptions options;
+  private final String name;
   private final VirtualClock clock;
   private final long tickNanos;
   private final WorldGeometry geometry = new WorldGeometry();
@@ -72,6 +77,24 @@ public final class SimWorld implements AutoCloseable {
     this.options = options;
     this.clock = clock;
     this.tickNanos = options.tick().toNanos();
+    this.name = "world-" + WORLD_NUMBERS.incrementAndGet() + "-" + shortName(map.source());
+  }
+
+  /** "office" for "bundled:office", "hall" for "/maps/hall.map". */
+  private static String shortName(String source) {
+    String s = source == null || source.isBlank() ? "map" : source;
+    s =
+        s.substring(
+            Math.max(s.lastIndexOf('/'), Math.max(s.lastIndexOf('\\'), s.lastIndexOf(':'))) + 1);
+    return s.endsWith(".map") ? s.substring(0, s.length() - 4) : s;
+  }
+
+  /**
+   * The world's name: a number unique in this program and the name of the map it started with, e.g.
+   * {@code world-3-office}. Its real-time thread is called {@code jaria-sim-} plus this name.
+   */
+  public String getName() {
+    return name;
   }
 
   // ---------------------------------------------------------------- creation
@@ -325,8 +348,8 @@ public final class SimWorld implements AutoCloseable {
   }
 
   /**
-   * Starts a thread ("jaria-sim-world") that steps the world in real time times {@code speedup} (≤
-   * 0: as fast as it can). Idempotent while running.
+   * Starts a thread ("jaria-sim-" and the {@link #getName() world's name}) that steps the world in
+   * real time times {@code speedup} (≤ 0: as fast as it can). Idempotent while running.
    */
   public void startRealTime(double speedup) {
     lock.lock();

@@ -16,17 +16,24 @@ import org.jaria.protocol.packets.PacketIds;
  * reply, OPEN with int 1, CLOSE with int 1. Reads whole frames and checks nothing itself; the tests
  * look at the bytes.
  */
-final class AriaLikeTcpClient implements AutoCloseable {
+public final class AriaLikeTcpClient implements AutoCloseable {
 
   final Socket socket;
   private final InputStream in;
   private final OutputStream out;
   private final ArRobotPacket pkt = new ArRobotPacket();
-  String name;
-  String type;
-  String subtype;
 
-  AriaLikeTcpClient(int port) throws IOException {
+  /** Name, type and subtype from the SYNC2 reply (after {@link #connectLikeAria}). */
+  public String name;
+
+  /** The robot type. */
+  public String type;
+
+  /** The robot subtype, lower-cased. */
+  public String subtype;
+
+  /** Connects to the simulator on localhost:{@code port}. */
+  public AriaLikeTcpClient(int port) throws IOException {
     socket = new Socket();
     socket.connect(new InetSocketAddress(java.net.InetAddress.getLoopbackAddress(), port), 5000);
     socket.setTcpNoDelay(true);
@@ -49,7 +56,7 @@ final class AriaLikeTcpClient implements AutoCloseable {
     write(CommandCodec.com(pkt, cmd));
   }
 
-  void comInt(int cmd, int v) throws IOException {
+  public void comInt(int cmd, int v) throws IOException {
     write(CommandCodec.comInt(pkt, cmd, v));
   }
 
@@ -74,7 +81,7 @@ final class AriaLikeTcpClient implements AutoCloseable {
   }
 
   /** Reads frames until one has this ID. */
-  ArRobotPacket readUntil(int id) throws IOException {
+  public ArRobotPacket readUntil(int id) throws IOException {
     for (int i = 0; i < 500; i++) {
       byte[] f = readFrame();
       if ((f[3] & 0xFF) == id) {
@@ -89,7 +96,7 @@ final class AriaLikeTcpClient implements AutoCloseable {
    * an earlier client, so send CLOSE 1, drain what is in flight and start over; a reply with
    * another ID restarts the sequence; after SYNC2 read the identification, then OPEN 1.
    */
-  void connectLikeAria() throws IOException {
+  public void connectLikeAria() throws IOException {
     int state = 0;
     for (int tries = 0; state < 3; tries++) {
       if (tries > 50) {

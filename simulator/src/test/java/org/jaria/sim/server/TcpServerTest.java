@@ -136,11 +136,13 @@ class TcpServerTest {
     long fdBefore = openFiles();
     int port;
     SimRobot robot;
+    String worldThread;
     try (SimWorld w = startWorld(5)) {
       robot = w.getRobot(0);
       port = robot.getPort();
+      worldThread = "jaria-sim-" + w.getName();
       Set<String> running = threadNames();
-      assertTrue(running.contains("jaria-sim-world"));
+      assertTrue(running.contains(worldThread), running + " has " + worldThread);
       long fdRunning = openFiles();
       for (int i = 0; i < 50; i++) {
         try (AriaLikeTcpClient c = new AriaLikeTcpClient(port)) {
@@ -161,7 +163,7 @@ class TcpServerTest {
             "sockets were closed: " + openFiles() + " vs " + fdRunning);
       }
     }
-    assertFalse(threadNames().contains("jaria-sim-world"), "the world thread ended");
+    assertFalse(threadNames().contains(worldThread), "the world thread ended");
     assertEquals(threadsBefore, threadNames());
     if (fdBefore >= 0) {
       assertTrue(openFiles() <= fdBefore + 5, "every file descriptor released");
