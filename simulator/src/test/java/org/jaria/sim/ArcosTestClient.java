@@ -69,7 +69,7 @@ final class ArcosTestClient {
       // the connection was dropped: tests look at what arrived before
     }
     if (pulseEveryTicks > 0 && ticks % pulseEveryTicks == 0) {
-      com(0);
+      com(ArCommands.PULSE);
     }
   }
 
@@ -163,9 +163,9 @@ final class ArcosTestClient {
       com(sync);
       awaitId(sync);
     }
-    comInt(1, 1);
+    comInt(ArCommands.OPEN, 1);
     awaitPacket(q -> PacketIds.isStandardSip(q.getID()), 50);
-    comInt(4, 1);
+    comInt(ArCommands.ENABLE, 1);
     world.step();
     return this;
   }

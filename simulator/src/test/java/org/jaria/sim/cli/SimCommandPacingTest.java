@@ -98,9 +98,15 @@ class SimCommandPacingTest {
         send(c, CommandCodec.com(p, sync));
       }
       send(c, CommandCodec.comInt(p, ArCommands.OPEN.getNumber(), 1));
-      send(c, CommandCodec.comInt(p, 36, -30)); // the old laser start angle
-      send(c, CommandCodec.comInt(p, 37, 30)); // end angle (not GRIPREQUEST)
-      send(c, CommandCodec.comInt(p, 35, 1)); // laser on (not ADSEL)
+      send(
+          c,
+          CommandCodec.comInt(
+              p, ArCommands.GRIPPERVAL.getNumber(), -30)); // read as the old laser start angle
+      send(
+          c,
+          CommandCodec.comInt(
+              p, ArCommands.GRIPREQUEST.getNumber(), 30)); // read as the end angle, not a request
+      send(c, CommandCodec.comInt(p, ArCommands.ADSEL.getNumber(), 1)); // read as "laser on"
       w.advanceMillis(200);
       byte[] buf = new byte[8192];
       int n;

@@ -6,6 +6,7 @@ import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.InetSocketAddress;
 import java.net.Socket;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
 import org.jaria.protocol.CommandCodec;
 import org.jaria.protocol.packets.PacketIds;
@@ -54,6 +55,16 @@ public final class AriaLikeTcpClient implements AutoCloseable {
 
   void com(int cmd) throws IOException {
     write(CommandCodec.com(pkt, cmd));
+  }
+
+  /** Sends a command without argument. */
+  public void com(ArCommands cmd) throws IOException {
+    com(cmd.getNumber());
+  }
+
+  /** Sends a command with an integer argument. */
+  public void comInt(ArCommands cmd, int v) throws IOException {
+    comInt(cmd.getNumber(), v);
   }
 
   public void comInt(int cmd, int v) throws IOException {
@@ -106,7 +117,7 @@ public final class AriaLikeTcpClient implements AutoCloseable {
       byte[] reply = readFrame();
       int id = reply[3] & 0xFF;
       if (id == PacketIds.SIP_STOPPED) {
-        comInt(2, 1);
+        comInt(ArCommands.CLOSE, 1);
         drain();
         state = 0;
       } else if (id != state) {
@@ -121,7 +132,7 @@ public final class AriaLikeTcpClient implements AutoCloseable {
         state++;
       }
     }
-    comInt(1, 1);
+    comInt(ArCommands.OPEN, 1);
   }
 
   /** Reads and discards until nothing arrives for 300 ms (ARIA waits out the rest of a cycle). */
