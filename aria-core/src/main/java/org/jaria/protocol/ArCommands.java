@@ -197,6 +197,12 @@ public enum ArCommands {
   /** The spec's other name for command 56, {@link #M_STALL}. */
   public static final ArCommands E_STALL = M_STALL;
 
+  /** ARIA's name for command 56, {@link #M_STALL}. */
+  public static final ArCommands ESTALL = M_STALL;
+
+  /** ARIA's name for {@link #E_STOP}. */
+  public static final ArCommands ESTOP = E_STOP;
+
   /** ARIA's name for {@link #GYRO}. */
   public static final ArCommands GYROREQUEST = GYRO;
 

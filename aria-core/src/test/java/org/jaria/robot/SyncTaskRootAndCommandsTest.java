@@ -93,10 +93,12 @@ class SyncTaskRootAndCommandsTest {
   }
 
   @Test
-  void eStallIsTheSpecsNameForCommand56() {
+  void eStallIsTheSpecsNameForCommand56AndAriasNamesWork() {
     assertSame(ArCommands.M_STALL, ArCommands.E_STALL);
     assertEquals(56, ArCommands.E_STALL.getNumber());
     assertSame(ArCommands.E_STALL, ArCommands.fromNumber(56));
+    assertSame(ArCommands.M_STALL, ArCommands.ESTALL, "ARIA's spelling");
+    assertSame(ArCommands.E_STOP, ArCommands.ESTOP, "ARIA's spelling");
     assertNull(ArCommands.fromNumber(34), "34 (KICK) is not in the spec's command list");
   }
 }
