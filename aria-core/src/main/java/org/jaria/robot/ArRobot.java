@@ -529,7 +529,10 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
     return cycleTimeMs;
   }
 
-  /** A cycle longer than this logs a warning, ms (default 250; 0 never). */
+  /**
+   * A cycle longer than this, on the robot's clock, logs a warning and is counted ({@link
+   * #getCycleOverrunCount()}), ms (default 250; 0 never).
+   */
   public void setCycleWarningTime(long ms) {
     cycleWarningTimeMs = ms;
   }
