@@ -54,6 +54,8 @@ final class GuiRig implements AutoCloseable {
       robot.lock();
       try {
         robot.addRangeDevice(new ArSonarDevice());
+        // Without a localizer, start the odometry where the robot really is (the map's home).
+        robot.moveTo(sim.sim().getTruePose());
       } finally {
         robot.unlock();
       }
