@@ -9,6 +9,8 @@ import org.jaria.arnl.ArSonarLocalizationTask;
 import org.jaria.config.ArConfig;
 import org.jaria.map.ArMap;
 import org.jaria.net.provider.ArConfigRegistry;
+import org.jaria.net.server.Where;
+import org.jaria.net.server.info.ArServerHandlerCommands;
 import org.jaria.range.ArBumpers;
 import org.jaria.range.ArIRs;
 import org.jaria.range.ArSonarDevice;
@@ -120,6 +122,22 @@ public final class ArnlNavigation implements AutoCloseable {
    */
   public boolean localizeAtHome() {
     return loc.localizeRobotAtHomeBlocking();
+  }
+
+  /**
+   * Adds the navigation's custom commands to a server: {@code localizeAtHome} (localizes at the
+   * map's home again, replying whether the sonar confirmed it).
+   */
+  public void addCommands(ArServerHandlerCommands commands) {
+    commands.addCommand(
+        "localizeAtHome",
+        "localizes the robot at the map's home again",
+        "",
+        Where.WORKER,
+        args ->
+            localizeAtHome()
+                ? "localized at home"
+                : "localized at home, but the sonar did not confirm it");
   }
 
   /** The localization for the server. */

@@ -72,6 +72,7 @@ public final class ScreenshotCommand implements Callable<Integer> {
       case "mapper" -> new MapperCommand();
       case "eztrain" -> new EzTrainCommand();
       case "simview", "sim" -> new SimViewCommand();
+      case "monitor" -> new org.jaria.tools.monitor.MonitorCommand();
       default -> null;
     };
   }
