@@ -3,6 +3,7 @@ package org.jaria.net.bench;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
+import java.lang.management.ManagementFactory;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.Socket;
@@ -40,6 +41,9 @@ public final class NetBenchmark {
   /** What a monitor subscribes to. */
   static final List<String> MONITOR_DATA =
       List.of("update", "getSensorCurrent", "getLocState", "getLocPoints", "getPath", "getStrings");
+
+  /** Long enough for a stalled socket to fill and the stall timeout to pass. */
+  private static final Duration SLOW_PHASE = Duration.ofSeconds(25);
 
   private NetBenchmark() {}
 
@@ -144,6 +148,12 @@ public final class NetBenchmark {
           // Writing to a connection the server closed: that is a drop too.
           droppedByServer.incrementAndGet();
         }
+        try {
+          // Reconnect at once, but no more than a thousand times a second.
+          TimeUnit.MILLISECONDS.sleep(1);
+        } catch (InterruptedException e) {
+          return;
+        }
       }
     }
 
@@ -188,7 +198,19 @@ public final class NetBenchmark {
             System.getProperty("java.version"),
             Runtime.getRuntime().availableProcessors(),
             phase.toSeconds()));
-    ServerOptions so = ServerOptions.builder().port(0).bindAddress("127.0.0.1").build();
+    sb.append(
+        String.format(
+            Locale.ROOT,
+            "System load average when it started: %.1f (other programs share the cores).%n%n",
+            ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage()));
+    // A bounded kernel send buffer per client (as a robot with little memory would set), so a
+    // client that stops reading fills it in seconds rather than minutes.
+    ServerOptions so =
+        ServerOptions.builder()
+            .port(0)
+            .bindAddress("127.0.0.1")
+            .socketSendBuffer(64 * 1024)
+            .build();
     ArMap map = ArMap.loadBundled("office");
     try (SimulatedGuiServer s =
         SimulatedGuiServer.start(
@@ -227,9 +249,11 @@ public final class NetBenchmark {
         long malformed0 = server.getStats().getMalformed();
         long updates0 = totalUpdates.get();
         long robot0 = robotUpdates.stream().mapToLong(AtomicLong::get).sum();
+        long hostile0 = hostile.connections.get();
         sampler.reset();
         long t0 = System.nanoTime();
         pause(phase);
+        long hostileConnections = hostile.connections.get() - hostile0;
         double secs = (System.nanoTime() - t0) / 1e9;
         CycleStats loaded = CycleStats.of(sampler.take());
         long updates = totalUpdates.get() - updates0;
@@ -267,9 +291,10 @@ public final class NetBenchmark {
         sb.append(
             String.format(
                 Locale.ROOT,
-                "| hostile connections / dropped by the server | %d / %d |%n",
+                "| hostile connections / dropped by the server | %d / %d (%.0f per second) |%n",
                 hostile.connections.get(),
-                hostile.droppedByServer.get()));
+                hostile.droppedByServer.get(),
+                hostileConnections / secs));
         sb.append(
             String.format(
                 Locale.ROOT, "| closed for malformed frames (server count) | %d |%n", malformed));
@@ -281,7 +306,7 @@ public final class NetBenchmark {
 
         // Phase 3: a client that subscribes to everything and never reads.
         sb.append("\n## A client that stops reading\n\n");
-        sb.append(slowReader(s, phase, sampler));
+        sb.append(slowReader(s, phase.compareTo(SLOW_PHASE) < 0 ? SLOW_PHASE : phase, sampler));
       } finally {
         sampler.close();
       }
@@ -294,14 +319,14 @@ public final class NetBenchmark {
     ArServerBase server = s.gui().getServer();
     ServerOptions o = server.getOptions();
     long heapBefore = usedHeap();
+    // A client that stops reading (a small receive window, as a stuck program's socket fills)
+    // but keeps pinging, so only the server's stall detection can tell.
     try (Socket raw = new Socket()) {
       raw.setReceiveBufferSize(4096);
       raw.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), s.port()), 2000);
       OutputStream out = raw.getOutputStream();
       out.write(Frames.frame(Kind.HELLO, Protocol.MAGIC, Protocol.VERSION, "stuck", ""));
       out.write(Frames.frame(Kind.LOGIN, (Object) new byte[0]));
-      out.flush();
-      ArServerClient c = waitForClient(server);
       int req = 1;
       for (String d : List.of("update", "getSensorCurrent", "getLocPoints", "getMap", "getPath")) {
         int id =
@@ -313,13 +338,20 @@ public final class NetBenchmark {
         out.write(Frames.frame(Kind.SUBSCRIBE, req++, id, 50));
       }
       out.flush();
+      ArServerClient c = waitForClient(server);
       sampler.reset();
       long start = System.nanoTime();
       long end = start + phase.toNanos();
       long droppedAt = -1;
+      long nextPing = start;
       while (System.nanoTime() < end) {
         if (c.isClosed() && droppedAt < 0) {
           droppedAt = System.nanoTime() - start;
+        }
+        if (!c.isClosed() && System.nanoTime() >= nextPing) {
+          out.write(Frames.frame(Kind.PING, req++));
+          out.flush();
+          nextPing += TimeUnit.SECONDS.toNanos(5);
         }
         pause(Duration.ofMillis(20));
       }
@@ -327,24 +359,26 @@ public final class NetBenchmark {
       long heapAfter = usedHeap();
       StringBuilder sb = new StringBuilder();
       sb.append("| figure | value |\n|---|---:|\n");
+      sb.append("| subscriptions (update, sensors, particles, map, path) at 20 Hz | 5 |\n");
       sb.append(
           String.format(
               Locale.ROOT,
-              "| subscriptions (update, sensors, particles, map, path) at 20 Hz | 5 |%n"));
+              "| server socket send buffer (SO_SNDBUF) | %d kB |%n",
+              o.socketSendBuffer() / 1024));
       sb.append(
           String.format(
               Locale.ROOT,
-              "| peak bytes queued for it | %d kB |%n",
-              c.getPeakQueuedBytes() / 1000));
-      sb.append(
-          String.format(
-              Locale.ROOT,
-              "| bytes it accepted before stalling | %d kB |%n",
+              "| bytes the socket took before stalling | %d kB |%n",
               c.getBytesSent() / 1000));
       sb.append(
           String.format(
               Locale.ROOT,
-              "| updates replaced by newer ones (coalesced) | %d |%n",
+              "| peak bytes queued for it in the server | %d kB |%n",
+              c.getPeakQueuedBytes() / 1000));
+      sb.append(
+          String.format(
+              Locale.ROOT,
+              "| updates replaced by newer ones while waiting | %d |%n",
               c.getCoalescedCount()));
       sb.append(
           String.format(

@@ -496,15 +496,18 @@ public class ArServerBase implements AutoCloseable {
       return;
     }
     if (!c.out.offer(o)) {
-      stats.droppedSlow.increment();
-      log.info(
-          "{} reads too slowly: more than {} bytes of replies waiting; dropping it",
-          c,
-          options.maxQueuedBytes());
-      io.requestClose(
-          c,
-          NetError.TOO_SLOW,
-          "more than " + options.maxQueuedBytes() + " bytes of replies waiting: read faster");
+      // The close happens on the I/O thread; replies refused meanwhile must not count again.
+      if (c.dropRequested.compareAndSet(false, true)) {
+        stats.droppedSlow.increment();
+        log.info(
+            "{} reads too slowly: more than {} bytes of replies waiting; dropping it",
+            c,
+            options.maxQueuedBytes());
+        io.requestClose(
+            c,
+            NetError.TOO_SLOW,
+            "more than " + options.maxQueuedBytes() + " bytes of replies waiting: read faster");
+      }
       return;
     }
     io.scheduleWrite(c, wakeup);

@@ -49,6 +49,7 @@ public final class ArServerClient {
   final Map<Integer, Subscription> subscriptions = new ConcurrentHashMap<>();
   final AtomicInteger pendingCalls = new AtomicInteger();
   final AtomicBoolean writeScheduled = new AtomicBoolean();
+  final AtomicBoolean dropRequested = new AtomicBoolean();
   private final AtomicLong bytesSent = new AtomicLong();
   private final AtomicLong bytesReceived = new AtomicLong();
 

@@ -317,10 +317,14 @@ final class IoLoop implements Runnable {
       }
       if (!c.isLoggedIn() && !c.closeAfterFlush && now - c.connectedNanos > login) {
         server.stats.loginTimeouts.increment();
-        close(c, NetError.LOGIN_TIMEOUT, "did not log in within " + options.loginTimeout(), true);
+        close(
+            c,
+            NetError.LOGIN_TIMEOUT,
+            "did not log in within " + secs(options.loginTimeout()),
+            true);
       } else if (c.isLoggedIn() && idle > 0 && now - c.lastHeardNanos > idle) {
         server.stats.droppedIdle.increment();
-        close(c, NetError.IDLE, "sent nothing for " + options.idleTimeout(), true);
+        close(c, NetError.IDLE, "sent nothing for " + secs(options.idleTimeout()), true);
       } else if (stall > 0
           && (c.writing != null || !c.out.isEmpty())
           && now - c.lastWriteProgressNanos > stall) {
@@ -328,7 +332,7 @@ final class IoLoop implements Runnable {
         close(
             c,
             NetError.TOO_SLOW,
-            "took no data for " + options.stallTimeout() + " with data waiting",
+            "took no data for " + secs(options.stallTimeout()) + " with data waiting",
             false);
       }
     }
@@ -397,6 +401,12 @@ final class IoLoop implements Runnable {
     } catch (IOException e) {
       log.debug("closing the selector: {}", e.getMessage());
     }
+  }
+
+  /** "10 s", "0.5 s": a duration for people. */
+  static String secs(java.time.Duration d) {
+    return java.math.BigDecimal.valueOf(d.toMillis(), 3).stripTrailingZeros().toPlainString()
+        + " s";
   }
 
   private static void closeQuietly(java.io.Closeable c) {

@@ -34,7 +34,7 @@ import org.testfx.framework.junit5.Start;
 import org.testfx.util.WaitForAsyncUtils;
 
 /**
- * The monitor driven like an operator against a guiServer on the simulator (running at four times
+ * The monitor driven like an operator against a guiServer on the simulator (running at eight times
  * real time, with SonARNL and the simulated camera): it connects and shows the robot, sends the
  * robot to a clicked point and shows it arriving, relocalizes a kidnapped robot by dragging it,
  * drives with the keyboard, edits the configuration, shows the camera, and refuses a wrong password
@@ -65,7 +65,7 @@ class MonitorWindowTest {
                     .authenticator(Authenticator.sharedSecret(PASSWORD))
                     .build(),
                 ArnlNavigation.Mode.THREADED,
-                4.0,
+                8.0,
                 true));
   }
 
