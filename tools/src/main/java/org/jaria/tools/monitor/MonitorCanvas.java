@@ -8,14 +8,16 @@ import javafx.scene.input.MouseEvent;
 import javafx.scene.input.ScrollEvent;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
+import org.jaria.map.ArMapObject;
 import org.jaria.net.data.RobotUpdate;
 import org.jaria.tools.fx.Viewport;
 
 /**
  * The monitor's map view: draws the {@link MonitorState} and turns the mouse into commands. With
  * the {@link Tool#MOVE} tool, dragging the robot relocalizes it where it is dropped (heading kept)
- * and dragging elsewhere pans; with {@link Tool#GOTO}, a click sends the robot to that point and a
- * drag to that point facing the drag's direction. The wheel zooms.
+ * and dragging elsewhere pans; with {@link Tool#GOTO}, a click on a goal's marker sends the robot
+ * to that goal, a click elsewhere to that point, and a drag to that point facing the drag's
+ * direction. The wheel zooms.
  */
 final class MonitorCanvas extends Canvas {
 
@@ -27,6 +29,9 @@ final class MonitorCanvas extends Canvas {
     GOTO
   }
 
+  /** A click this close to a goal's marker (pixels) means that goal. */
+  private static final double GOAL_PIXELS = 8;
+
   /** Pixels a drag must cover before it counts as one. */
   private static final double DRAG_PIXELS = 6;
 
@@ -37,6 +42,7 @@ final class MonitorCanvas extends Canvas {
   private Tool tool = Tool.MOVE;
   private BiConsumer<ArPose, Boolean> onGoto = (p, h) -> {};
   private Consumer<ArPose> onLocalize = p -> {};
+  private Consumer<String> onGotoGoal = g -> {};
   private boolean fitted;
   private long fittedVersion = -1;
   private ArPose drawnRobot;
@@ -117,6 +123,11 @@ final class MonitorCanvas extends Canvas {
   /** Called with a goal pose and whether its heading matters. */
   void setOnGoto(BiConsumer<ArPose, Boolean> h) {
     onGoto = h;
+  }
+
+  /** Called with the name of a map goal clicked with the goto tool. */
+  void setOnGotoGoal(Consumer<String> h) {
+    onGotoGoal = h;
   }
 
   /** Called with the pose the robot was dropped at. */
@@ -217,13 +228,32 @@ final class MonitorCanvas extends Canvas {
       }
     } else if (tool == Tool.GOTO && e.getButton() == MouseButton.PRIMARY) {
       ArPose p = at(pressX, pressY);
-      if (dragged) {
+      String goal = dragged ? null : goalAt(pressX, pressY);
+      if (goal != null) {
+        onGotoGoal.accept(goal);
+      } else if (dragged) {
         onGoto.accept(new ArPose(p.x(), p.y(), heading(e.getX(), e.getY())), true);
       } else {
         onGoto.accept(p, false);
       }
     }
     redraw();
+  }
+
+  /** The name of the map goal drawn under view point (sx, sy), or null. */
+  private String goalAt(double sx, double sy) {
+    MonitorState.MapView m = state.map;
+    if (m == null) {
+      return null;
+    }
+    for (ArMapObject o : m.map().getGoals()) {
+      double dx = vp.toScreenX(o.pose().x()) - sx;
+      double dy = vp.toScreenY(o.pose().y()) - sy;
+      if (!o.name().isEmpty() && Math.hypot(dx, dy) <= GOAL_PIXELS) {
+        return o.name();
+      }
+    }
+    return null;
   }
 
   private void scrolled(ScrollEvent e) {

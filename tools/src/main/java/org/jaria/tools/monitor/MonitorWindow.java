@@ -121,6 +121,7 @@ public final class MonitorWindow implements DesktopApp {
     canvas.setId("map");
     canvas.setOnGoto(this::gotoPose);
     canvas.setOnLocalize(this::localize);
+    canvas.setOnGotoGoal(g -> send("gotoGoal", g));
     this.teleop =
         new TeleopKeys(
             new TeleopKeys.Sender() {

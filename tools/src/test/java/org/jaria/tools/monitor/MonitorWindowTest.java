@@ -191,6 +191,20 @@ class MonitorWindowTest {
   }
 
   @Test
+  void clickAGoalsMarkerToGoThere(FxRobot robot) throws Exception {
+    MonitorWindow w = connected();
+    robot.clickOn("#tool-goto");
+    robot.clickOn(onMap(w, 26000, 9500)); // "Corridor East"
+    waitFor(
+        "the server plans to the goal by name",
+        () -> server.nav().getPathPlanningTask().getStatusString().contains("Corridor East"));
+    robot.clickOn("#stop");
+    waitFor(
+        "stop cancels it",
+        () -> "Stop".equals(ArServerModes.of(server.gui().getServer()).getMode()));
+  }
+
+  @Test
   void dragTheRobotToWhereItReallyIs(FxRobot robot) throws Exception {
     MonitorWindow w = connected();
     ArPose believed = server.robot().getPose();
