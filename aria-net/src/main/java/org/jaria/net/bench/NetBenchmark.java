@@ -250,16 +250,20 @@ public final class NetBenchmark {
         long updates0 = totalUpdates.get();
         long robot0 = robotUpdates.stream().mapToLong(AtomicLong::get).sum();
         long hostile0 = hostile.connections.get();
+        long hostileDrops0 = hostile.droppedByServer.get();
+        long full0 = server.getStats().getRefusedFull();
         sampler.reset();
         long t0 = System.nanoTime();
         pause(phase);
         long hostileConnections = hostile.connections.get() - hostile0;
+        long hostileDrops = hostile.droppedByServer.get() - hostileDrops0;
+        long malformed = server.getStats().getMalformed() - malformed0;
+        long refusedFull = server.getStats().getRefusedFull() - full0;
         double secs = (System.nanoTime() - t0) / 1e9;
         CycleStats loaded = CycleStats.of(sampler.take());
         long updates = totalUpdates.get() - updates0;
         long robotRate = robotUpdates.stream().mapToLong(AtomicLong::get).sum() - robot0;
         hostile.stop();
-        long malformed = server.getStats().getMalformed() - malformed0;
         long stillConnected = clients.stream().filter(ArClientBase::isConnected).count();
         for (ArClientBase c : clients) {
           c.close();
@@ -291,13 +295,16 @@ public final class NetBenchmark {
         sb.append(
             String.format(
                 Locale.ROOT,
-                "| hostile connections / dropped by the server | %d / %d (%.0f per second) |%n",
-                hostile.connections.get(),
-                hostile.droppedByServer.get(),
+                "| hostile connections / seen dropped by the server | %d / %d (%.0f per second) |%n",
+                hostileConnections,
+                hostileDrops,
                 hostileConnections / secs));
         sb.append(
             String.format(
-                Locale.ROOT, "| closed for malformed frames (server count) | %d |%n", malformed));
+                Locale.ROOT,
+                "| server's count: closed for malformed frames / refused as full | %d / %d |%n",
+                malformed,
+                refusedFull));
         sb.append(
             String.format(
                 Locale.ROOT,
