@@ -23,7 +23,8 @@ import org.jaria.net.NetEncodable;
  * @param rightStalled right motor stalled
  * @param eStop the emergency stop is pressed
  * @param chargeState -1 unknown, 0 not charging, 1 bulk, 2 overcharge, 3 float
- * @param counter the robot's cycle counter
+ * @param counter the robot's cycle counter during the cycle that took this snapshot (one less than
+ *     {@code ArRobot.getCounter()} once that cycle has ended)
  */
 public record RobotUpdate(
     String mode,

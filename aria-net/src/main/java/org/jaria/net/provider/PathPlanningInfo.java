@@ -1,20 +1,26 @@
 package org.jaria.net.provider;
 
+import org.jaria.action.ArActionGroup;
 import org.jaria.geom.ArPose;
 import org.jaria.net.data.PathSnapshot;
 
 /**
  * What the network server needs from a path planner (ARNL's {@code ArPathPlanningTask} via an
- * adapter): the path and search area to draw, and goals to go to. The planner owns its actions:
- * planning to a goal switches them on, {@link #cancelPathPlan()} switches them off.
+ * adapter such as {@link org.jaria.net.arnl.ArnlPathPlanning}): the path and search area to draw,
+ * and goals to go to. The planner drives with its own action group, which the goto mode switches on
+ * when it becomes active and off when another mode takes over.
  *
- * <p>Methods are called from the server's worker threads (never the robot's cycle) and must be
- * thread-safe; {@link #getPathState()} should be cheap.
+ * <p>Methods are called from the server's worker and publisher threads, and {@link
+ * #getStatusString()} and {@link #cancelPathPlan()} also from the robot's cycle: all must be
+ * thread-safe, and those two quick.
  */
 public interface PathPlanningInfo {
 
-  /** The planner's state, path and local search area now. */
+  /** The planner's state, path and local search area now (publisher thread, at client rates). */
   PathSnapshot getPathState();
+
+  /** What the planner is doing, for people (called every robot cycle while goto is active). */
+  String getStatusString();
 
   /**
    * Plans to {@code goal} and drives there.
@@ -33,4 +39,7 @@ public interface PathPlanningInfo {
 
   /** Stops going to the goal (the robot stops). */
   void cancelPathPlan();
+
+  /** The actions that follow the planned path (activated exclusively by the goto mode). */
+  ArActionGroup getActionGroup();
 }

@@ -344,6 +344,15 @@ public class ArServerBase implements AutoCloseable {
   }
 
   /**
+   * Commands waiting for the robot's next cycle (requests of {@link Where#CYCLE} data and work that
+   * services queued with {@link #runOnCycle}). A lockstep test advances the simulation while this
+   * is not zero, so a command is applied at once without letting virtual time run freely.
+   */
+  public int getPendingCycleCommands() {
+    return cycleQueue.size();
+  }
+
+  /**
    * Adds (or replaces, by name) a task run on every robot cycle inside the server's user task,
    * after queued commands: services use it to snapshot state and modes to do their work. Tasks must
    * be quick and must not block.
@@ -487,15 +496,18 @@ public class ArServerBase implements AutoCloseable {
       return;
     }
     if (!c.out.offer(o)) {
-      stats.droppedSlow.increment();
-      log.info(
-          "{} reads too slowly: more than {} bytes of replies waiting; dropping it",
-          c,
-          options.maxQueuedBytes());
-      io.requestClose(
-          c,
-          NetError.TOO_SLOW,
-          "more than " + options.maxQueuedBytes() + " bytes of replies waiting: read faster");
+      // The close happens on the I/O thread; replies refused meanwhile must not count again.
+      if (c.dropRequested.compareAndSet(false, true)) {
+        stats.droppedSlow.increment();
+        log.info(
+            "{} reads too slowly: more than {} bytes of replies waiting; dropping it",
+            c,
+            options.maxQueuedBytes());
+        io.requestClose(
+            c,
+            NetError.TOO_SLOW,
+            "more than " + options.maxQueuedBytes() + " bytes of replies waiting: read faster");
+      }
       return;
     }
     io.scheduleWrite(c, wakeup);

@@ -10,6 +10,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
+import org.jaria.net.protocol.FrameSplitter;
 import org.jaria.net.protocol.Frames;
 
 /**
@@ -48,11 +49,12 @@ public final class ArServerClient {
   final Map<Integer, Subscription> subscriptions = new ConcurrentHashMap<>();
   final AtomicInteger pendingCalls = new AtomicInteger();
   final AtomicBoolean writeScheduled = new AtomicBoolean();
+  final AtomicBoolean dropRequested = new AtomicBoolean();
   private final AtomicLong bytesSent = new AtomicLong();
   private final AtomicLong bytesReceived = new AtomicLong();
 
   // I/O thread only.
-  ByteBuffer in = ByteBuffer.allocate(4096);
+  final FrameSplitter in;
   final ByteBuffer header = ByteBuffer.allocate(Frames.MAX_HEADER_BYTES);
   final ByteBuffer[] writeBufs = new ByteBuffer[2];
   Outgoing writing;
@@ -70,8 +72,9 @@ public final class ArServerClient {
   private volatile Credentials credentials;
   private volatile String closeReason;
 
-  ArServerClient(int id, SocketChannel channel, String ip, long maxQueuedBytes) {
+  ArServerClient(int id, SocketChannel channel, String ip, long maxQueuedBytes, int maxFrame) {
     this.id = id;
+    this.in = new FrameSplitter(4096, maxFrame);
     this.channel = channel;
     this.ip = ip;
     this.out = new OutboundQueue(maxQueuedBytes);

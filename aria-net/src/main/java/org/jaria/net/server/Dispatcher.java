@@ -63,6 +63,10 @@ final class Dispatcher {
           // Frames after close are ignored.
         }
       }
+      if (kind != Kind.CALL && p.hasMore()) {
+        // Later versions may append values to a message, but they must be well-formed.
+        p.validate();
+      }
     } catch (ArNetPacketException e) {
       throw new ProtocolException(NetError.MALFORMED, "malformed frame: " + e.getMessage(), e);
     }

@@ -33,16 +33,22 @@ import org.jaria.robot.ArRobot;
  * planning, configuration and video when their providers are given.
  *
  * <pre>{@code
+ * ArnlNavigation nav = ArnlNavigation.create(robot, map, ArnlNavigation.Mode.THREADED, 1);
+ * nav.localizeAtHome();
  * try (GuiServer gui = GuiServer.builder(robot)
  *         .options(ServerOptions.builder().port(7272).authenticator(users).build())
  *         .map(map, "office.map")
- *         .localization(locAdapter)
- *         .pathPlanning(pathAdapter)
+ *         .localization(nav.localization())
+ *         .pathPlanning(nav.pathPlanning())
+ *         .config(nav.configRegistry())
  *         .build()) {
  *   gui.open();
  *   robot.waitForRunExit();
  * }
  * }</pre>
+ *
+ * <p>{@code jaria demo guiserver} runs exactly this; {@link org.jaria.net.sim.SimulatedGuiServer}
+ * does it on an embedded simulator. The protocol is described in {@code aria-net/PROTOCOL.md}.
  */
 public final class GuiServer implements AutoCloseable {
 

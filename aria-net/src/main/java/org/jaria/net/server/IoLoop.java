@@ -17,7 +17,6 @@ import java.util.concurrent.TimeUnit;
 import org.jaria.net.protocol.Frames;
 import org.jaria.net.protocol.Kind;
 import org.jaria.net.protocol.NetError;
-import org.jaria.net.protocol.Protocol;
 import org.jaria.net.protocol.ProtocolException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -174,6 +173,11 @@ final class IoLoop implements Runnable {
       close(c, e.getCode(), e.getMessage(), true);
     } catch (IOException e) {
       close(c, null, "connection lost: " + e.getMessage(), false);
+    } catch (RuntimeException e) {
+      // Whatever a client's bytes make the decoder do, only that client pays for it.
+      server.stats.malformed.increment();
+      log.info("{}: its frame could not be handled ({}); closing it", c, e.toString());
+      close(c, NetError.MALFORMED, "a frame the server could not decode", true);
     }
   }
 
@@ -221,7 +225,8 @@ final class IoLoop implements Runnable {
         closeQuietly(ch);
         continue;
       }
-      ArServerClient c = new ArServerClient(nextId++, ch, ip, options.maxQueuedBytes());
+      ArServerClient c =
+          new ArServerClient(nextId++, ch, ip, options.maxQueuedBytes(), options.maxInboundFrame());
       long now = options.timeoutClock().nanoTime();
       c.connectedNanos = now;
       c.lastHeardNanos = now;
@@ -240,33 +245,14 @@ final class IoLoop implements Runnable {
   }
 
   private void read(ArServerClient c) throws IOException, ProtocolException {
-    int n = c.channel.read(c.in);
+    int n = c.channel.read(c.in.buffer());
     if (n < 0) {
       close(c, null, "the client closed the connection", false);
       return;
     }
     c.countReceived(n);
     c.lastHeardNanos = options.timeoutClock().nanoTime();
-    ByteBuffer in = c.in;
-    in.flip();
-    int max = options.maxInboundFrame();
-    while (in.remaining() >= Protocol.LENGTH_BYTES && !c.isClosed()) {
-      int len = Frames.peekLength(in, max);
-      if (in.remaining() < Protocol.LENGTH_BYTES + len) {
-        if (in.capacity() < Protocol.LENGTH_BYTES + len) {
-          // Grow for a large (but allowed) frame; never past the limit.
-          ByteBuffer bigger = ByteBuffer.allocate(Protocol.LENGTH_BYTES + len);
-          bigger.put(in);
-          c.in = bigger;
-          return;
-        }
-        break;
-      }
-      int start = in.position() + Protocol.LENGTH_BYTES;
-      in.position(start + len);
-      dispatcher.onFrame(c, in.array(), in.arrayOffset() + start, len);
-    }
-    in.compact();
+    c.in.drain((a, off, len) -> dispatcher.onFrame(c, a, off, len));
   }
 
   /** Writes as much of {@code c}'s queue as the socket takes now. */
@@ -331,10 +317,14 @@ final class IoLoop implements Runnable {
       }
       if (!c.isLoggedIn() && !c.closeAfterFlush && now - c.connectedNanos > login) {
         server.stats.loginTimeouts.increment();
-        close(c, NetError.LOGIN_TIMEOUT, "did not log in within " + options.loginTimeout(), true);
+        close(
+            c,
+            NetError.LOGIN_TIMEOUT,
+            "did not log in within " + secs(options.loginTimeout()),
+            true);
       } else if (c.isLoggedIn() && idle > 0 && now - c.lastHeardNanos > idle) {
         server.stats.droppedIdle.increment();
-        close(c, NetError.IDLE, "sent nothing for " + options.idleTimeout(), true);
+        close(c, NetError.IDLE, "sent nothing for " + secs(options.idleTimeout()), true);
       } else if (stall > 0
           && (c.writing != null || !c.out.isEmpty())
           && now - c.lastWriteProgressNanos > stall) {
@@ -342,7 +332,7 @@ final class IoLoop implements Runnable {
         close(
             c,
             NetError.TOO_SLOW,
-            "took no data for " + options.stallTimeout() + " with data waiting",
+            "took no data for " + secs(options.stallTimeout()) + " with data waiting",
             false);
       }
     }
@@ -411,6 +401,12 @@ final class IoLoop implements Runnable {
     } catch (IOException e) {
       log.debug("closing the selector: {}", e.getMessage());
     }
+  }
+
+  /** "10 s", "0.5 s": a duration for people. */
+  static String secs(java.time.Duration d) {
+    return java.math.BigDecimal.valueOf(d.toMillis(), 3).stripTrailingZeros().toPlainString()
+        + " s";
   }
 
   private static void closeQuietly(java.io.Closeable c) {

@@ -19,8 +19,8 @@ final class Outgoing {
   /** Request id (RESPONSE) or data id (UPDATE). */
   final long first;
 
-  /** Data id (RESPONSE) or version (UPDATE). */
-  final long second;
+  /** Data id (RESPONSE) or version (UPDATE; replaced when a newer update is coalesced). */
+  long second;
 
   /** The payload (or the whole frame), position 0. */
   ByteBuffer payload;
@@ -62,6 +62,12 @@ final class Outgoing {
   /** An UPDATE of subscription {@code dataId}, coalesced with any unsent one. */
   static Outgoing update(int dataId, long version, ByteBuffer sharedPayload) {
     return new Outgoing(Kind.UPDATE, dataId, version, sharedPayload.duplicate(), false, dataId);
+  }
+
+  /** Puts a newer update's payload and version in place of this unsent one's. */
+  void replaceUpdate(ByteBuffer newPayload, long newVersion) {
+    payload = newPayload;
+    second = newVersion;
   }
 
   /** Bytes this item puts on the wire (approximately, for accounting). */

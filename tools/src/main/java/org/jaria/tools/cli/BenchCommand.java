@@ -16,7 +16,8 @@ import picocli.CommandLine.Spec;
       BenchCommand.Sim.class,
       BenchCommand.Vision.class,
       BenchCommand.Arnl.class,
-      BenchCommand.Actions.class
+      BenchCommand.Actions.class,
+      BenchCommand.Net.class
     })
 final class BenchCommand implements Runnable {
 
@@ -112,6 +113,26 @@ final class BenchCommand implements Runnable {
     @Override
     public Integer call() {
       spec.commandLine().getOut().println(org.jaria.tools.bench.ActionsBenchmark.run(quick));
+      return 0;
+    }
+  }
+
+  /** {@code jaria bench net}. */
+  @Command(
+      name = "net",
+      description =
+          "Robot cycle time with 20 monitors at 10 Hz and a hostile client; a client that stops"
+              + " reading.")
+  static final class Net implements Callable<Integer> {
+
+    @Spec CommandSpec spec;
+
+    @Option(names = "--quick", description = "10 s phases instead of 30 s.")
+    boolean quick;
+
+    @Override
+    public Integer call() throws Exception {
+      spec.commandLine().getOut().println(org.jaria.net.bench.NetBenchmark.run(quick));
       return 0;
     }
   }

@@ -25,7 +25,8 @@ import picocli.CommandLine.Spec;
       GyroDemo.class,
       GotoDemo.class,
       ChaseDemo.class,
-      NavigateDemoCommand.class
+      NavigateDemoCommand.class,
+      org.jaria.tools.guiserver.GuiServerCommand.class
     })
 public final class DemoCommand extends DemoOptions implements Callable<Integer> {
 

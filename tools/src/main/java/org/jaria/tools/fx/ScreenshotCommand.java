@@ -72,6 +72,7 @@ public final class ScreenshotCommand implements Callable<Integer> {
       case "mapper" -> new MapperCommand();
       case "eztrain" -> new EzTrainCommand();
       case "simview", "sim" -> new SimViewCommand();
+      case "monitor" -> new org.jaria.tools.monitor.MonitorCommand();
       default -> null;
     };
   }
@@ -86,14 +87,14 @@ public final class ScreenshotCommand implements Callable<Integer> {
       return 2;
     }
     if (rest.isEmpty()) {
-      err.println("screenshot: name the app to render: mapper, eztrain or simview");
+      err.println("screenshot: name the app to render: mapper, eztrain, simview or monitor");
       return 2;
     }
     String app = rest.get(0);
     List<String> appArgs = rest.subList(1, rest.size());
     AppCommand command = appCommand(app);
     if (command == null) {
-      err.println("screenshot: no app '" + app + "'; choose mapper, eztrain or simview");
+      err.println("screenshot: no app '" + app + "'; choose mapper, eztrain, simview or monitor");
       return 2;
     }
     try {

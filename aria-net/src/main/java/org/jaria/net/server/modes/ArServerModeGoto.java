@@ -4,6 +4,10 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import org.jaria.action.ArAction;
 import org.jaria.action.ArActionAvoidFront;
 import org.jaria.action.ArActionBumpers;
@@ -16,7 +20,6 @@ import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
 import org.jaria.map.ArMapObject;
 import org.jaria.net.ArNetPacket;
-import org.jaria.net.data.PathSnapshot;
 import org.jaria.net.protocol.NetError;
 import org.jaria.net.provider.PathPlanningInfo;
 import org.jaria.net.server.ArServerBase;
@@ -36,6 +39,9 @@ import org.jaria.robot.ArRobot;
  * {@code "getGoals"}.
  */
 public class ArServerModeGoto extends ArServerMode {
+
+  /** Longest wait of a goal request for the robot's cycle to switch to this mode. */
+  private static final long ACTIVATION_TIMEOUT_SECONDS = 5;
 
   private final PathPlanningInfo planner;
   private final ArMap map;
@@ -117,7 +123,7 @@ public class ArServerModeGoto extends ArServerMode {
   }
 
   private void serverGotoPose(ArServerClient client, ArNetPacket request, ArNetPacket reply)
-      throws NetRequestException {
+      throws NetRequestException, InterruptedException {
     double x = request.bufToDouble();
     double y = request.bufToDouble();
     double th = request.hasMore() ? request.bufToDouble() : 0;
@@ -132,7 +138,7 @@ public class ArServerModeGoto extends ArServerMode {
   }
 
   private void serverGotoGoal(ArServerClient client, ArNetPacket request, ArNetPacket reply)
-      throws NetRequestException {
+      throws NetRequestException, InterruptedException {
     String name = request.bufToStr();
     if (planner != null) {
       startWithPlanner("goal " + name, () -> planner.pathPlanToGoal(name));
@@ -141,7 +147,7 @@ public class ArServerModeGoto extends ArServerMode {
     Optional<ArMapObject> goal =
         map == null
             ? Optional.empty()
-            : map.getGoals().stream().filter(o -> o.name().equals(name)).findFirst();
+            : map.getGoals().stream().filter(o -> o.name().equalsIgnoreCase(name)).findFirst();
     if (goal.isEmpty()) {
       throw new NetRequestException(
           NetError.BAD_ARGUMENTS, "no goal called '" + name + "' on the map; see getGoals");
@@ -153,18 +159,35 @@ public class ArServerModeGoto extends ArServerMode {
     boolean start();
   }
 
-  /** Worker thread: switch to this mode on the cycle, then hand the goal to the planner. */
-  private void startWithPlanner(String name, PlanStart start) throws NetRequestException {
+  /**
+   * Worker thread: switches to this mode on the robot's cycle and waits for that, then hands the
+   * goal to the planner. Waiting keeps the order of requests: a "stop" sent before this goal
+   * cancels the old goal, never the new one.
+   */
+  private void startWithPlanner(String name, PlanStart start)
+      throws NetRequestException, InterruptedException {
+    CompletableFuture<Void> active = new CompletableFuture<>();
     if (!server.runOnCycle(
         () -> {
           activate();
           goalName = name;
           setStatus("Planning a path to " + name);
+          active.complete(null);
         })) {
       throw new NetRequestException(NetError.BUSY, "the robot's command queue is full");
     }
+    try {
+      active.get(ACTIVATION_TIMEOUT_SECONDS, TimeUnit.SECONDS);
+    } catch (TimeoutException | ExecutionException e) {
+      throw new NetRequestException(
+          NetError.FAILED,
+          "the robot's cycle did not switch to goto within "
+              + ACTIVATION_TIMEOUT_SECONDS
+              + " s: is the robot connected and running?");
+    }
     if (!start.start()) {
-      throw new NetRequestException(NetError.FAILED, "the planner cannot go to " + name);
+      throw new NetRequestException(
+          NetError.FAILED, "cannot go to " + name + ": " + planner.getStatusString());
     }
   }
 
@@ -189,6 +212,8 @@ public class ArServerModeGoto extends ArServerMode {
     if (planner == null) {
       gotoAction.cancelGoal();
       group.activateExclusive();
+    } else {
+      planner.getActionGroup().activateExclusive();
     }
     setStatus("Waiting for a goal");
   }
@@ -197,6 +222,7 @@ public class ArServerModeGoto extends ArServerMode {
   protected void onDeactivate() {
     if (planner != null) {
       planner.cancelPathPlan();
+      planner.getActionGroup().deactivate();
     } else {
       gotoAction.cancelGoal();
       group.deactivate();
@@ -206,9 +232,9 @@ public class ArServerModeGoto extends ArServerMode {
   @Override
   protected void userTask() {
     if (planner != null) {
-      PathSnapshot p = planner.getPathState();
-      if (p != null && !p.status().isEmpty()) {
-        setStatus(p.status());
+      String status = planner.getStatusString();
+      if (status != null && !status.isEmpty()) {
+        setStatus(status);
       }
       return;
     }

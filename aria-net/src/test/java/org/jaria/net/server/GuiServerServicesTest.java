@@ -1,0 +1,220 @@
+package org.jaria.net.server;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicReference;
+import org.jaria.config.ArConfig;
+import org.jaria.config.ArConfigArg;
+import org.jaria.geom.ArPose;
+import org.jaria.net.ArNetPacket;
+import org.jaria.net.Eventually;
+import org.jaria.net.Futures;
+import org.jaria.net.client.ArClientException;
+import org.jaria.net.data.CommandInfo;
+import org.jaria.net.data.ConfigParam;
+import org.jaria.net.data.ConfigSection;
+import org.jaria.net.data.InfoStrings;
+import org.jaria.net.data.MapData;
+import org.jaria.net.data.PhysicalInfo;
+import org.jaria.net.data.RangeReadings;
+import org.jaria.net.data.RobotUpdate;
+import org.jaria.net.data.SensorReadings;
+import org.jaria.net.data.VideoFrame;
+import org.jaria.net.protocol.NetError;
+import org.jaria.net.provider.ArConfigRegistry;
+import org.jaria.net.provider.VideoSource;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Every service of the guiServer as a monitor uses it, on a simulated robot in lockstep: state,
+ * sensors, map, information strings, commands, configuration, video.
+ */
+class GuiServerServicesTest {
+
+  /** The last update of {@code name}, decoded with {@code reader}. */
+  private static <T> AtomicReference<T> watch(
+      GuiRig rig, String name, java.util.function.Function<ArNetPacket, T> reader)
+      throws Exception {
+    AtomicReference<T> last = new AtomicReference<>();
+    rig.client.addHandler(name, p -> last.set(reader.apply(p)));
+    Futures.get(rig.client.request(name, 20));
+    return last;
+  }
+
+  @Test
+  void robotStateAndPhysicalInfo() throws Exception {
+    try (GuiRig rig = GuiRig.plain(b -> b)) {
+      AtomicReference<RobotUpdate> u = watch(rig, "update", RobotUpdate::read);
+      rig.run(1000);
+      // Taken during the last cycle, which the robot counts when it ends.
+      long lastCycle = rig.robot.getCounter() - 1;
+      Eventually.until(
+          "an update of the last cycle", () -> u.get() != null && u.get().counter() == lastCycle);
+      RobotUpdate r = u.get();
+      assertEquals("Stop", r.mode());
+      assertEquals("Stopped", r.status());
+      assertEquals(rig.robot.getPose(), r.getPose());
+      assertEquals(rig.robot.getBatteryVoltage(), r.batteryVoltage(), 1e-9);
+      assertFalse(r.eStop());
+      PhysicalInfo p = PhysicalInfo.read(rig.call("physicalInfo"));
+      assertEquals(rig.robot.getName(), p.name());
+      assertEquals(16, p.numSonar());
+      assertEquals(rig.robot.getRobotRadius(), p.radius(), 1e-9);
+    }
+  }
+
+  @Test
+  void rangeReadingsCurrentAndCumulative() throws Exception {
+    try (GuiRig rig = GuiRig.plain(b -> b)) {
+      AtomicReference<SensorReadings> s = watch(rig, "getSensorCurrent", SensorReadings::read);
+      assertEquals(List.of("sonar"), rig.call("getSensorList").bufToValue());
+      rig.run(1500);
+      long counter = rig.robot.getCounter();
+      Eventually.until(
+          "this cycle's readings", () -> s.get() != null && s.get().counter() == counter);
+      RangeReadings sonar = s.get().find("sonar");
+      assertNotNull(sonar);
+      assertTrue(sonar.current().size() > 4, "the robot in the corridor sees walls");
+      ArPose at = rig.robot.getPose();
+      for (ArPose p : sonar.current().toPoses()) {
+        assertTrue(at.findDistanceTo(p) <= sonar.maxRange() + 1, "global mm, in range: " + p);
+      }
+      RangeReadings cumulative = RangeReadings.read(rig.call("getSensorCumulative", "sonar"));
+      assertTrue(cumulative.current().size() >= sonar.current().size());
+      ArClientException e =
+          assertThrows(ArClientException.class, () -> rig.call("getSensorCumulative", "laser"));
+      assertEquals(NetError.BAD_ARGUMENTS, e.getCode());
+    }
+  }
+
+  @Test
+  void theMapAndANewMap() throws Exception {
+    try (GuiRig rig = GuiRig.plain(b -> b)) {
+      MapData m = MapData.read(rig.call("getMap"));
+      assertEquals("office.map", m.name());
+      java.io.StringWriter w = new java.io.StringWriter();
+      GuiRig.OFFICE.write(w);
+      assertEquals(w.toString(), m.text(), "the map byte for byte");
+      assertEquals(GuiRig.OFFICE.getGoals().size(), m.toArMap().getGoals().size());
+      ArNetPacket name = rig.call("getMapName");
+      assertEquals("office.map", name.bufToStr());
+      assertEquals(1, name.bufToLong());
+      AtomicReference<MapData> sub = watch(rig, "getMap", MapData::read);
+      Eventually.until("the map", () -> sub.get() != null);
+      rig.gui.getMapHandler().setMap(org.jaria.map.ArMap.loadBundled("hall"), "hall.map");
+      Eventually.until("the new map", () -> sub.get().version() == 2);
+      assertEquals("hall.map", sub.get().name());
+    }
+  }
+
+  @Test
+  void informationStrings() throws Exception {
+    try (GuiRig rig = GuiRig.plain(b -> b)) {
+      rig.gui.getInfoGroup().addStringInt("Answer", 4, () -> 42);
+      rig.gui.getInfoGroup().addStringString("Long", 3, () -> "abcdef");
+      AtomicReference<InfoStrings> s = watch(rig, "getStrings", InfoStrings::read);
+      Eventually.until("the table", () -> s.get() != null && s.get().get("Answer") != null);
+      assertEquals("42", s.get().get("Answer"));
+      assertEquals("abc", s.get().get("Long"), "cut to its maximum length");
+      assertEquals("1", s.get().get("Network clients"));
+    }
+  }
+
+  @Test
+  void customCommands() throws Exception {
+    List<String> said = new CopyOnWriteArrayList<>();
+    try (GuiRig rig = GuiRig.plain(b -> b)) {
+      rig.gui.getCommands().addStringCommand("say", "logs a line", said::add);
+      rig.gui
+          .getCommands()
+          .addCommand(
+              "sum",
+              "adds numbers",
+              "numbers",
+              Where.WORKER,
+              args -> "" + args.stream().mapToLong(Long::parseLong).sum());
+      // Commands added after a client logged in are listed to the next login.
+      rig.client.disconnect();
+      rig.client.connect("127.0.0.1", rig.gui.getServer().getPort(), "", "");
+      ArNetPacket list = rig.call("listCommands");
+      List<String> names = CommandInfo.readAll(list).stream().map(CommandInfo::name).toList();
+      assertEquals(List.of("enableMotors", "disableMotors", "say", "sum"), names);
+      assertEquals("", rig.call("say", "hello", 3).bufToStr());
+      assertEquals(List.of("hello 3"), said);
+      assertEquals("6", rig.call("sum", 1, 2, 3).bufToStr());
+      rig.call("enableMotors");
+      rig.run(300);
+      assertTrue(rig.robot.areMotorsEnabled());
+      rig.call("disableMotors");
+      rig.run(300);
+      assertFalse(rig.robot.areMotorsEnabled());
+      ArClientException e = assertThrows(ArClientException.class, () -> rig.call("sum", "x"));
+      assertEquals(NetError.FAILED, e.getCode());
+    }
+  }
+
+  @Test
+  void configurationGetAndSet() throws Exception {
+    ArConfig config = new ArConfig();
+    ArConfigArg speed = ArConfigArg.ofDouble("MaxSpeed", 500, "mm/s", 0, 2000);
+    config.addParam(speed, "Teleop");
+    config.addParam(ArConfigArg.ofString("Name", "r1", "the robot's name"), "Teleop");
+    try (GuiRig rig = GuiRig.plain(b -> b.config(new ArConfigRegistry(config)))) {
+      List<ConfigSection> sections = ConfigSection.readAll(rig.call("getConfigBySections"));
+      assertEquals(1, sections.size());
+      ConfigParam p = sections.get(0).params().get(0);
+      assertEquals(new ConfigParam("MaxSpeed", "DOUBLE", "500", "500", "0.0", "2000.0", "mm/s"), p);
+      ArNetPacket ok = rig.call("setConfig", List.of(List.of("Teleop", "MaxSpeed", "750")));
+      assertEquals(List.of(), ok.bufToValue());
+      assertEquals(750, speed.getDouble());
+      ArNetPacket refused =
+          rig.call(
+              "setConfig",
+              List.of(
+                  List.of("Teleop", "MaxSpeed", "5000"),
+                  List.of("Teleop", "Name", "r2"),
+                  List.of("Nope", "X", "1")));
+      @SuppressWarnings("unchecked")
+      List<String> errors = (List<String>) refused.bufToValue();
+      assertEquals(2, errors.size(), errors.toString());
+      assertTrue(errors.get(0).contains("MaxSpeed"), errors.get(0));
+      assertEquals("no configuration section 'Nope'", errors.get(1));
+      assertEquals("r2", config.findParam("Name").orElseThrow().getString(), "the good one is set");
+      assertEquals(750, speed.getDouble(), "the bad one is not");
+    }
+  }
+
+  @Test
+  void videoFrames() throws Exception {
+    AtomicReference<VideoFrame> current = new AtomicReference<>();
+    VideoSource camera =
+        new VideoSource() {
+          @Override
+          public String getName() {
+            return "Cam1";
+          }
+
+          @Override
+          public VideoFrame getLatestFrame() {
+            return current.get();
+          }
+        };
+    try (GuiRig rig = GuiRig.plain(b -> b.video(camera))) {
+      assertEquals("Cam1", rig.call("getVideoInfo").bufToStr());
+      AtomicReference<VideoFrame> got = watch(rig, "getVideo", VideoFrame::read);
+      byte[] rgb = new byte[320 * 240 * 3];
+      for (int seq = 1; seq <= 3; seq++) {
+        rgb[0] = (byte) seq;
+        VideoFrame f = new VideoFrame(seq, VideoFrame.Format.RGB, 320, 240, rgb);
+        current.set(f);
+        Eventually.until("frame " + seq, () -> f.equals(got.get()));
+      }
+    }
+  }
+}

@@ -1,0 +1,281 @@
+package org.jaria.tools.guiserver;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import org.jaria.connection.ArTcpConnection;
+import org.jaria.map.ArMap;
+import org.jaria.map.MapFormatException;
+import org.jaria.net.arnl.ArnlNavigation;
+import org.jaria.net.server.ArServerUserInfo;
+import org.jaria.net.server.Authenticator;
+import org.jaria.net.server.GuiServer;
+import org.jaria.net.server.ServerOptions;
+import org.jaria.net.server.modes.ArServerModes;
+import org.jaria.net.sim.SimulatedGuiServer;
+import org.jaria.robot.ArRobot;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code jaria demo guiserver}: the thesis's guiServer (§6.1). Connects to a robot (or runs an
+ * embedded simulator), localizes it with the sonar, plans paths, and serves the robot's state,
+ * sonar, map, localization, path, information strings, modes, configuration and camera to monitors
+ * ({@code jaria monitor}) until Ctrl-C.
+ */
+@Command(
+    name = "guiserver",
+    mixinStandardHelpOptions = true,
+    sortOptions = false,
+    description = {
+      "The thesis's guiServer (§6.1): sonar localization, path planning and a network server",
+      "for monitors (./jaria monitor). Without --remote it drives an embedded simulator."
+    })
+public final class GuiServerCommand implements Callable<Integer> {
+
+  @Spec CommandSpec spec;
+
+  @Option(
+      names = "--map",
+      paramLabel = "FILE",
+      description = "The map: a .map file or a bundled map (office, hall). Default: office.")
+  String map = "office";
+
+  @Option(
+      names = "--remote",
+      paramLabel = "HOST[:PORT]",
+      description =
+          "Drive this robot or simulator (port 8101 if absent) instead of an embedded one.")
+  String remote;
+
+  @Option(
+      names = "--port",
+      description = "TCP port to serve monitors on (default ${DEFAULT-VALUE}; 0: any free one).")
+  int port = 7272;
+
+  @Option(
+      names = "--user-file",
+      paramLabel = "FILE",
+      description = "Users, passwords and groups (see aria-net/PROTOCOL.md §10).")
+  Path userFile;
+
+  @Option(
+      names = "--password",
+      paramLabel = "SECRET",
+      description = "One password for every user name.")
+  String password;
+
+  @Option(
+      names = "--bind",
+      paramLabel = "ADDRESS",
+      description =
+          "Interface to listen on (default: all interfaces with a login, this computer only"
+              + " without one).")
+  String bind;
+
+  @Option(
+      names = "--speed",
+      paramLabel = "X",
+      description = "Embedded simulator speed, times real time (default ${DEFAULT-VALUE}).")
+  double speed = 1;
+
+  @Option(names = "--robot", description = "Embedded robot model (default ${DEFAULT-VALUE}).")
+  String model = "p3dx-sh";
+
+  @Option(names = "--seed", description = "Simulator and localization seed (default 1).")
+  long seed = 1;
+
+  @Option(names = "--no-camera", description = "Do not serve the simulated camera.")
+  boolean noCamera;
+
+  @Option(
+      names = "--seconds",
+      description = "Stop after this many seconds (default ${DEFAULT-VALUE}: run until Ctrl-C).")
+  int seconds;
+
+  @Override
+  public Integer call() {
+    PrintWriter out = spec.commandLine().getOut();
+    PrintWriter err = spec.commandLine().getErr();
+    try {
+      ServerOptions options = serverOptions();
+      ArMap m = loadMap(map);
+      String mapName = Path.of(map).getFileName().toString();
+      if (remote != null) {
+        return runOnRobot(m, mapName, options, out);
+      }
+      try (SimulatedGuiServer s =
+          SimulatedGuiServer.start(
+              new SimulatedGuiServer.Options(
+                  m,
+                  mapName,
+                  model,
+                  seed,
+                  options,
+                  ArnlNavigation.Mode.THREADED,
+                  speed,
+                  !noCamera))) {
+        out.printf(
+            Locale.ROOT,
+            "guiServer: embedded simulator, a %s on %s, %s%n",
+            model,
+            map,
+            speed == 1 ? "real time" : speed + " × real time");
+        report(out, s.wasLocalized(), s.robot(), s.nav());
+        return serve(s.gui(), s.robot(), out);
+      }
+    } catch (IllegalArgumentException | IllegalStateException | IOException e) {
+      err.println("guiserver: " + e.getMessage());
+      err.flush();
+      return 2;
+    }
+  }
+
+  ServerOptions serverOptions() throws IOException {
+    if (userFile != null && password != null) {
+      throw new IllegalArgumentException("give --user-file or --password, not both");
+    }
+    Authenticator auth =
+        userFile != null
+            ? ArServerUserInfo.readFile(userFile)
+            : password != null ? Authenticator.sharedSecret(password) : Authenticator.open();
+    return ServerOptions.builder()
+        .serverName("guiServer")
+        .port(port)
+        .bindAddress(bind)
+        .authenticator(auth)
+        .build();
+  }
+
+  static ArMap loadMap(String map) throws IOException {
+    if (ArMap.BUNDLED_MAPS.contains(map)) {
+      return ArMap.loadBundled(map);
+    }
+    try {
+      return ArMap.readFile(Path.of(map));
+    } catch (MapFormatException e) {
+      throw new IllegalArgumentException("not a valid map: " + e.getMessage(), e);
+    }
+  }
+
+  private int runOnRobot(ArMap m, String mapName, ServerOptions options, PrintWriter out)
+      throws IOException {
+    String[] hp = remote.split(":", 2);
+    int robotPort;
+    try {
+      robotPort = hp.length == 2 ? Integer.parseInt(hp[1]) : ArTcpConnection.DEFAULT_PORT;
+    } catch (NumberFormatException e) {
+      throw new IllegalArgumentException("--remote must be HOST or HOST:PORT, not " + remote, e);
+    }
+    ArRobot robot = new ArRobot("robot");
+    robot.setDeviceConnection(new ArTcpConnection(hp[0], robotPort));
+    if (!robot.blockingConnect()) {
+      throw new IllegalStateException(
+          "could not connect to the robot at " + remote + ": " + robot.getConnectFailure());
+    }
+    robot.runAsync(true);
+    try (ArnlNavigation nav = ArnlNavigation.create(robot, m, ArnlNavigation.Mode.THREADED, seed)) {
+      robot.enableMotors();
+      pause(Duration.ofMillis(1500));
+      boolean localized = nav.localizeAtHome();
+      out.printf(Locale.ROOT, "guiServer: robot %s at %s on %s%n", robot.getName(), remote, map);
+      report(out, localized, robot, nav);
+      try (GuiServer gui =
+          GuiServer.builder(robot)
+              .options(options)
+              .map(m, mapName)
+              .localization(nav.localization())
+              .pathPlanning(nav.pathPlanning())
+              .config(nav.configRegistry())
+              .build()) {
+        nav.addCommands(gui.getCommands());
+        gui.open();
+        return serve(gui, robot, out);
+      }
+    } finally {
+      robot.close();
+    }
+  }
+
+  private static void report(PrintWriter out, boolean localized, ArRobot robot, ArnlNavigation n) {
+    out.printf(
+        Locale.ROOT,
+        "Localized at home: %s, pose %s, score %.2f%n",
+        localized ? "yes" : "NO (monitors can relocalize it)",
+        robot.getPose(),
+        n.getLocalizationTask().getLocalizationScore());
+  }
+
+  /** Prints where it listens, then a status line every 10 s until the time is up or Ctrl-C. */
+  private int serve(GuiServer gui, ArRobot robot, PrintWriter out) {
+    var server = gui.getServer();
+    boolean open = server.getOptions().authenticator().isOpen();
+    String host = server.getOptions().bindAddress();
+    String shown = host == null ? (open ? "127.0.0.1" : "0.0.0.0") : host;
+    out.printf(
+        Locale.ROOT,
+        "Listening on %s:%d (%s)%n",
+        shown,
+        server.getPort(),
+        open
+            ? "no login needed; this computer only: give --password or --user-file to serve others"
+            : "login required");
+    out.printf(
+        Locale.ROOT,
+        "Watch it with: ./jaria monitor %s:%d%s%n",
+        shown.equals("0.0.0.0") ? "HOST" : shown,
+        server.getPort(),
+        open ? "" : " --user NAME --password SECRET");
+    out.flush();
+    CountDownLatch stop = new CountDownLatch(1);
+    Thread hook = new Thread(stop::countDown, "guiserver-shutdown");
+    Runtime.getRuntime().addShutdownHook(hook);
+    long start = System.nanoTime();
+    try {
+      while (!stop.await(10, TimeUnit.SECONDS)) {
+        long s = TimeUnit.NANOSECONDS.toSeconds(System.nanoTime() - start);
+        ArServerModes modes = gui.getModes();
+        out.printf(
+            Locale.ROOT,
+            "t=%4ds  clients %d  mode %s: %s  pose %s%n",
+            s,
+            server.getNumClients(),
+            modes.getMode(),
+            modes.getStatus(),
+            robot.getPose());
+        out.flush();
+        if (seconds > 0 && s >= seconds) {
+          break;
+        }
+        if (!robot.isConnected()) {
+          out.println("The robot disconnected: " + robot.getConnectFailure());
+          return 1;
+        }
+      }
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+    } finally {
+      try {
+        Runtime.getRuntime().removeShutdownHook(hook);
+      } catch (IllegalStateException shuttingDown) {
+        // Ctrl-C: the JVM is exiting; the servers close in the callers' finally blocks.
+      }
+    }
+    return 0;
+  }
+
+  private static void pause(Duration d) {
+    try {
+      TimeUnit.NANOSECONDS.sleep(d.toNanos());
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+    }
+  }
+}

@@ -1,0 +1,98 @@
+package org.jaria.tools.monitor;
+
+import java.io.PrintWriter;
+import java.util.concurrent.Callable;
+import javafx.stage.Stage;
+import org.jaria.net.protocol.Protocol;
+import org.jaria.tools.fx.AppCommand;
+import org.jaria.tools.fx.AppEnvironment;
+import org.jaria.tools.fx.AppLauncher;
+import org.jaria.tools.fx.DesktopApp;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code jaria monitor [host:port]}: watch and command a robot served by a guiServer ({@code jaria
+ * demo guiserver}), as MobileEyes does. Several monitors may watch one robot.
+ */
+@Command(
+    name = "monitor",
+    mixinStandardHelpOptions = true,
+    sortOptions = false,
+    description = {
+      "The robot monitor (MobileEyes): map, robot, sonar, particles and path; click to send the",
+      "robot somewhere, drag it to relocalize, drive it with the arrow keys; status, information",
+      "strings, configuration, camera and custom commands of a guiServer (./jaria demo guiserver)."
+    })
+public final class MonitorCommand implements Callable<Integer>, AppCommand {
+
+  @Spec CommandSpec spec;
+
+  @Parameters(
+      index = "0",
+      arity = "0..1",
+      paramLabel = "HOST[:PORT]",
+      description = "The guiServer (default 127.0.0.1:" + Protocol.DEFAULT_PORT + ").")
+  String address = "127.0.0.1";
+
+  @Option(names = "--user", description = "User name (for servers that need a login).")
+  String user = "";
+
+  @Option(names = "--password", description = "Password (for servers that need a login).")
+  String password;
+
+  @Override
+  public String appName() {
+    return "monitor";
+  }
+
+  /** Host of {@code address}. */
+  String host() {
+    int c = address.lastIndexOf(':');
+    return c < 0 ? address : address.substring(0, c);
+  }
+
+  /**
+   * Port of {@code address}.
+   *
+   * @throws IllegalArgumentException if it is not a number
+   */
+  int port() {
+    int c = address.lastIndexOf(':');
+    if (c < 0) {
+      return Protocol.DEFAULT_PORT;
+    }
+    try {
+      int p = Integer.parseInt(address.substring(c + 1));
+      if (p < 1 || p > 65535) {
+        throw new NumberFormatException("out of range");
+      }
+      return p;
+    } catch (NumberFormatException e) {
+      throw new IllegalArgumentException(
+          "the address must be HOST or HOST:PORT with a port 1..65535, not '" + address + "'", e);
+    }
+  }
+
+  @Override
+  public DesktopApp open(Stage stage, AppEnvironment env) {
+    MonitorWindow w = new MonitorWindow(stage, env, host(), port(), user, password);
+    w.show();
+    return w;
+  }
+
+  @Override
+  public Integer call() {
+    PrintWriter err = spec.commandLine().getErr();
+    try {
+      port();
+    } catch (IllegalArgumentException e) {
+      err.println("monitor: " + e.getMessage());
+      return 2;
+    }
+    return AppLauncher.runUntilClosed(this, err);
+  }
+}

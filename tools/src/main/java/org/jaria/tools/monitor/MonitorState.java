@@ -1,0 +1,52 @@
+package org.jaria.tools.monitor;
+
+import java.util.List;
+import org.jaria.map.ArMap;
+import org.jaria.net.data.ConfigSection;
+import org.jaria.net.data.InfoStrings;
+import org.jaria.net.data.LocalizationSnapshot;
+import org.jaria.net.data.Particles;
+import org.jaria.net.data.PathSnapshot;
+import org.jaria.net.data.PhysicalInfo;
+import org.jaria.net.data.RobotUpdate;
+import org.jaria.net.data.SensorReadings;
+import org.jaria.net.data.VideoFrame;
+import org.jaria.tools.fx.PointLayer;
+
+/**
+ * What the monitor knows about the robot: the latest value of everything it subscribed to. The
+ * client's reader thread stores immutable records here; the JavaFX thread reads them when it draws.
+ * Each field is replaced whole, never changed, so a reader sees one consistent value.
+ */
+final class MonitorState {
+
+  /** The map and its points indexed for drawing. */
+  record MapView(String name, long version, ArMap map, PointLayer points) {}
+
+  volatile MapView map;
+  volatile PhysicalInfo physical;
+  volatile RobotUpdate robot;
+  volatile SensorReadings sensors;
+  volatile LocalizationSnapshot localization;
+  volatile Particles particles;
+  volatile PathSnapshot path;
+  volatile InfoStrings strings;
+  volatile List<ConfigSection> config;
+  volatile VideoFrame video;
+  volatile List<String> goals = List.of();
+
+  /** Forgets everything (a new connection). */
+  void clear() {
+    map = null;
+    physical = null;
+    robot = null;
+    sensors = null;
+    localization = null;
+    particles = null;
+    path = null;
+    strings = null;
+    config = null;
+    video = null;
+    goals = List.of();
+  }
+}

@@ -1,0 +1,190 @@
+package org.jaria.tools.monitor;
+
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.Consumer;
+import java.util.function.Function;
+import org.jaria.map.ArMap;
+import org.jaria.map.ArMapPoints;
+import org.jaria.map.MapFormatException;
+import org.jaria.net.ArNetPacket;
+import org.jaria.net.client.ArClientBase;
+import org.jaria.net.client.ArClientException;
+import org.jaria.net.client.ClientOptions;
+import org.jaria.net.client.ConnectionListener;
+import org.jaria.net.data.CommandInfo;
+import org.jaria.net.data.ConfigSection;
+import org.jaria.net.data.InfoStrings;
+import org.jaria.net.data.LocalizationSnapshot;
+import org.jaria.net.data.MapData;
+import org.jaria.net.data.Particles;
+import org.jaria.net.data.PathSnapshot;
+import org.jaria.net.data.PhysicalInfo;
+import org.jaria.net.data.RobotUpdate;
+import org.jaria.net.data.SensorReadings;
+import org.jaria.net.data.VideoFrame;
+import org.jaria.tools.fx.PointLayer;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The monitor's connection to a guiServer: subscribes to what the window draws, stores the values
+ * in a {@link MonitorState}, and sends the operator's commands. Every method may be called from any
+ * thread; none waits for the network except {@link #connect} (run it off the JavaFX thread).
+ */
+final class RobotLink implements AutoCloseable {
+
+  private static final Logger log = LoggerFactory.getLogger(RobotLink.class);
+
+  /** Subscription intervals, ms: the robot smoothly, the slow things slowly. */
+  static final long FAST_MS = 100;
+
+  static final long MEDIUM_MS = 250;
+  static final long SLOW_MS = 1000;
+
+  private final ArClientBase client = new ArClientBase(ClientOptions.defaults("jaria-monitor"));
+  private final MonitorState state;
+  private final Runnable changed;
+
+  /**
+   * A link storing into {@code state} and calling {@code changed} (on the reader thread) after
+   * every update.
+   */
+  RobotLink(MonitorState state, Runnable changed) {
+    this.state = state;
+    this.changed = changed;
+    on("update", RobotUpdate::read, v -> state.robot = v);
+    on("getSensorCurrent", SensorReadings::read, v -> state.sensors = v);
+    on("getLocState", LocalizationSnapshot::read, v -> state.localization = v);
+    on("getLocPoints", Particles::read, v -> state.particles = v);
+    on("getPath", PathSnapshot::read, v -> state.path = v);
+    on("getStrings", InfoStrings::read, v -> state.strings = v);
+    on("getConfigBySections", ConfigSection::readAll, v -> state.config = v);
+    on("getVideo", VideoFrame::read, v -> state.video = v);
+    on("getMap", RobotLink::mapView, v -> state.map = v);
+  }
+
+  private <T> void on(String name, Function<ArNetPacket, T> read, Consumer<T> store) {
+    client.addHandler(
+        name,
+        p -> {
+          store.accept(read.apply(p));
+          changed.run();
+        });
+  }
+
+  private static MonitorState.MapView mapView(ArNetPacket p) {
+    MapData d = MapData.read(p);
+    try {
+      ArMap m = d.toArMap();
+      ArMapPoints pts = m.getPoints();
+      return new MonitorState.MapView(
+          d.name(), d.version(), m, new PointLayer(pts.xArray(), pts.yArray()));
+    } catch (MapFormatException e) {
+      log.warn("the server's map {} does not parse: {}", d.name(), e.getMessage());
+      return null;
+    }
+  }
+
+  /** Hears the connection come and go (on the client's threads). */
+  void addConnectionListener(ConnectionListener l) {
+    client.addConnectionListener(l);
+  }
+
+  /**
+   * Connects, logs in and subscribes; then asks once for what does not change.
+   *
+   * @throws ArClientException if the server is not there or refuses the login
+   */
+  void connect(String host, int port, String user, String password) throws ArClientException {
+    state.clear();
+    for (String d : List.of("update", "getSensorCurrent")) {
+      subscribe(d, FAST_MS);
+    }
+    for (String d : List.of("getLocState", "getLocPoints", "getPath", "getStrings")) {
+      subscribe(d, MEDIUM_MS);
+    }
+    client.connect(host, port, user == null ? "" : user, password);
+    for (String d : List.of("getMap", "getConfigBySections")) {
+      if (client.dataExists(d)) {
+        subscribe(d, SLOW_MS);
+      }
+    }
+    if (client.dataExists("physicalInfo")) {
+      CompletableFuture<?> unused =
+          request("physicalInfo").thenAccept(p -> state.physical = PhysicalInfo.read(p));
+    }
+    if (client.dataExists("getGoals")) {
+      CompletableFuture<?> unused =
+          request("getGoals")
+              .thenAccept(
+                  p -> {
+                    int n = p.bufToArray();
+                    String[] g = new String[n];
+                    for (int i = 0; i < n; i++) {
+                      g[i] = p.bufToStr();
+                    }
+                    state.goals = List.of(g);
+                    changed.run();
+                  });
+    }
+  }
+
+  private void subscribe(String name, long ms) {
+    CompletableFuture<?> unused =
+        client
+            .request(name, ms)
+            .exceptionally(
+                e -> {
+                  // Data this server does not offer (no camera, no planner): nothing to draw.
+                  log.debug("no subscription to {}: {}", name, e.getMessage());
+                  return null;
+                });
+  }
+
+  /** Starts or stops receiving video. */
+  void watchVideo(boolean on) {
+    if (on && client.dataExists("getVideo")) {
+      subscribe("getVideo", 200);
+    } else {
+      client.requestStop("getVideo");
+      state.video = null;
+    }
+  }
+
+  /** Sends a request or command; the future fails with the server's message. */
+  CompletableFuture<ArNetPacket> request(String name, Object... args) {
+    return client.requestOnce(name, args);
+  }
+
+  /** The custom commands the server offers. */
+  CompletableFuture<List<CommandInfo>> commands() {
+    if (!client.dataExists("listCommands")) {
+      return CompletableFuture.completedFuture(List.of());
+    }
+    return request("listCommands").thenApply(CommandInfo::readAll);
+  }
+
+  /** Whether the server offers data of this name to this user. */
+  boolean offers(String name) {
+    return client.dataExists(name);
+  }
+
+  boolean isConnected() {
+    return client.isConnected();
+  }
+
+  String getLastError() {
+    return client.getLastError();
+  }
+
+  /** Disconnects (subscriptions are kept for the next connection). */
+  void disconnect() {
+    client.disconnect();
+  }
+
+  @Override
+  public void close() {
+    client.close();
+  }
+}
