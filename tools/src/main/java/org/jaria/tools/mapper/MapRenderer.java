@@ -70,23 +70,22 @@ public final class MapRenderer {
     drawScaleBar(gc, vp);
   }
 
+  // Grid lines are 1-pixel filled rectangles, not stroked lines: axis-aligned fills are an order
+  // of magnitude cheaper than anti-aliased strokes in the software renderer (headless, remote X).
   private static void drawGrid(GraphicsContext gc, Viewport vp, double size) {
     double step = size;
     while (step * vp.scale() < 12) {
       step *= step * vp.scale() < 1.6 ? 10 : 5;
     }
-    gc.setLineWidth(1);
     double x0 = Math.floor(vp.minVisibleX() / step) * step;
     for (double x = x0; x <= vp.maxVisibleX(); x += step) {
-      gc.setStroke(Math.abs(x) < step / 2 ? GRID_AXIS : GRID);
-      double sx = Math.floor(vp.toScreenX(x)) + 0.5;
-      gc.strokeLine(sx, 0, sx, vp.height());
+      gc.setFill(Math.abs(x) < step / 2 ? GRID_AXIS : GRID);
+      gc.fillRect(Math.floor(vp.toScreenX(x)), 0, 1, vp.height());
     }
     double y0 = Math.floor(vp.minVisibleY() / step) * step;
     for (double y = y0; y <= vp.maxVisibleY(); y += step) {
-      gc.setStroke(Math.abs(y) < step / 2 ? GRID_AXIS : GRID);
-      double sy = Math.floor(vp.toScreenY(y)) + 0.5;
-      gc.strokeLine(0, sy, vp.width(), sy);
+      gc.setFill(Math.abs(y) < step / 2 ? GRID_AXIS : GRID);
+      gc.fillRect(0, Math.floor(vp.toScreenY(y)), vp.width(), 1);
     }
   }
 

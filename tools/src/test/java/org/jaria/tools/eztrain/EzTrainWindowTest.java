@@ -6,18 +6,23 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.Semaphore;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import javafx.geometry.Point2D;
 import javafx.scene.Node;
+import javafx.scene.control.Labeled;
+import javafx.scene.control.ToggleButton;
 import javafx.scene.input.KeyCode;
 import javafx.scene.input.MouseButton;
+import javafx.scene.text.Text;
 import javafx.stage.Stage;
 import org.jaria.acts.ArACTSBlob;
 import org.jaria.acts.ArACTS_1_2;
@@ -27,10 +32,13 @@ import org.jaria.acts.color.ChannelLutFile;
 import org.jaria.acts.color.ColorPlane;
 import org.jaria.acts.color.PlaneLimits;
 import org.jaria.acts.image.ImageSource;
+import org.jaria.acts.image.RgbImage;
 import org.jaria.acts.image.TestScene;
+import org.jaria.geom.ArPose;
 import org.jaria.tools.fx.AppEnvironment;
 import org.jaria.tools.fx.FxRuntime;
 import org.jaria.tools.fx.ScriptedPrompts;
+import org.jaria.tools.simvision.TrainingScene;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
@@ -38,6 +46,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.testfx.api.FxRobot;
 import org.testfx.framework.junit5.ApplicationExtension;
 import org.testfx.framework.junit5.Start;
+import org.testfx.robot.Motion;
 import org.testfx.util.WaitForAsyncUtils;
 
 /**
@@ -55,7 +64,8 @@ class EzTrainWindowTest {
 
   @Start
   void start(Stage stage) {
-    EzTrainOptions o = EzTrainOptions.defaults().withPort(0).withBaseDir(dir);
+    EzTrainOptions o =
+        EzTrainOptions.defaults().withPort(0).withBaseDir(dir).withSimCamera(false, 0);
     window = new EzTrainWindow(stage, AppEnvironment.scripted(prompts), o);
     window.show();
   }
@@ -284,11 +294,193 @@ class EzTrainWindowTest {
     assertEquals(1, prompts.errors.size(), prompts.errors::toString);
     assertTrue(prompts.errors.get(0).contains("no camera or video file"), prompts.errors::toString);
     assertTrue(prompts.errors.get(0).contains("Load Image"), prompts.errors::toString);
+    window.setSimCameraHook(SimCameraHook.NOT_AVAILABLE);
     robot.clickOn("File").clickOn("Simulator Camera");
     assertTrue(window.work().awaitIdle(20, TimeUnit.SECONDS));
     WaitForAsyncUtils.waitForFxEvents();
     assertEquals(2, prompts.errors.size());
-    assertTrue(prompts.errors.get(1).contains("simulator's camera"), prompts.errors::toString);
+    assertTrue(prompts.errors.get(1).contains("Load Image"), prompts.errors::toString);
+  }
+
+  /** The bounding box {x0, y0, x1, y1} of the frame's clearly red pixels, or null. */
+  private static int[] redBox(RgbImage f) {
+    int[] b = {Integer.MAX_VALUE, Integer.MAX_VALUE, -1, -1};
+    for (int y = 0; y < f.height(); y++) {
+      for (int x = 0; x < f.width(); x++) {
+        int p = f.get(x, y);
+        int r = (p >> 16) & 0xFF;
+        int g = (p >> 8) & 0xFF;
+        int bl = p & 0xFF;
+        if (r > 90 && r > 2 * g && r > 2 * bl) {
+          b[0] = Math.min(b[0], x);
+          b[1] = Math.min(b[1], y);
+          b[2] = Math.max(b[2], x);
+          b[3] = Math.max(b[3], y);
+        }
+      }
+    }
+    return b[2] < 0 ? null : b;
+  }
+
+  private int[] askActs(int channel) throws Exception {
+    assertTrue(window.awaitServerFrames(20_000), "the server tracks frames");
+    try (ArACTS_1_2 acts = new ArACTS_1_2()) {
+      assertTrue(acts.openPort("localhost", window.serverPort()), acts::getOpenMessage);
+      acts.setReadTimeouts(10_000, 10_000);
+      assertTrue(acts.requestPacket(), "request sent");
+      assertTrue(acts.receiveBlobInfo(), "reply received");
+      int n = acts.getNumBlobs(channel);
+      if (n == 0) {
+        return new int[0];
+      }
+      ArACTSBlob b = new ArACTSBlob();
+      assertTrue(acts.getBlob(channel, 1, b));
+      return new int[] {n, b.getXCG(), b.getYCG()};
+    }
+  }
+
+  @Test
+  void simulatorCameraIsLiveVideoARobotProgramCanUse(FxRobot robot) throws Exception {
+    awaitReady();
+    robot.clickOn("File").clickOn("Simulator Camera");
+    settle();
+    TrainingScene scene = window.simulatorScene();
+    assertTrue(scene != null && scene.world().isRealTime(), "the simulated world runs");
+    int port = scene.robot().getPort();
+    assertTrue(window.outputText().contains("listening on TCP port " + port), window::outputText);
+    try (Socket s = new Socket("localhost", port)) {
+      assertTrue(s.isConnected(), "a robot program can connect to the simulated robot");
+    }
+
+    // The camera sees the red ball in front of the robot: train channel 1 on it.
+    int[] ball = redBox(window.session().frame());
+    assertTrue(ball != null, "the red ball is in view");
+    int qx = (ball[2] - ball[0]) / 4;
+    int qy = (ball[3] - ball[1]) / 4;
+    robot
+        .drag(pixel(robot, ball[0] + qx, ball[1] + qy), MouseButton.PRIMARY)
+        .dropTo(pixel(robot, ball[2] - qx, ball[3] - qy));
+    settle();
+    robot.moveTo(pixel(robot, 5, 5)).type(KeyCode.DIGIT2);
+    settle();
+    List<Blob> blobs = window.lastRendered().blobs();
+    assertFalse(blobs.isEmpty(), "the ball is a blob");
+    Blob b = blobs.get(0);
+    assertTrue(
+        b.xcg() >= ball[0] && b.xcg() <= ball[2] && b.ycg() >= ball[1] && b.ycg() <= ball[3],
+        b::toString);
+    int[] seen = askActs(1);
+    assertTrue(seen.length == 3 && Math.abs(seen[1] - b.xcg()) <= 2, Arrays.toString(seen));
+
+    // Turn the robot away (as a program driving it would): the live video loses the ball.
+    ArPose p = scene.robot().getTruePose();
+    scene.robot().setTruePose(new ArPose(p.x(), p.y(), 180));
+    for (int i = 0; i < 200 && redBox(window.session().frame()) != null; i++) {
+      window.refresh().get(20, TimeUnit.SECONDS);
+    }
+    assertEquals(null, redBox(window.session().frame()), "the ball left the picture");
+    assertEquals(0, askActs(1).length, "and the robot program no longer sees it");
+
+    FxRuntime.run(window::close, 10);
+    assertFalse(scene.world().isRealTime(), "closing the window stops the simulated world");
+  }
+
+  @Test
+  void consoleBanksToolKeysColoursBrushMagnificationAndQuit(FxRobot robot) throws Exception {
+    awaitReady();
+    // Bank 9-16, third button: channel 11.
+    robot.clickOn("#bank-2").clickOn("#channel-btn-3");
+    settle();
+    assertEquals(11, window.session().channel());
+    assertEquals("11", robot.lookup("#channel-btn-3").queryLabeled().getText());
+    assertTrue(window.stage().getTitle().contains("channel 11"), window.stage()::getTitle);
+    assertEquals("channel11.lut", robot.lookup("#channel-file").queryTextInputControl().getText());
+
+    // Tool keys over the image.
+    robot.moveTo(pixel(robot, 20, 20));
+    for (TrainTool t :
+        new TrainTool[] {TrainTool.REMOVE, TrainTool.ERASE, TrainTool.PICK, TrainTool.DRAW}) {
+      robot.type(t.key());
+      String id = "#tool-" + t.name().toLowerCase(Locale.ROOT);
+      assertTrue(robot.lookup(id).queryAs(ToggleButton.class).isSelected(), id);
+    }
+
+    // Brush 5 × 5 from the menu, then a Draw stroke along the red book trains its colours; an
+    // Erase stroke along the same path takes them out again.
+    menu(robot, "Settings", "#menu-brush", "#menu-brush-5");
+    assertEquals(5, window.trainingPane().brush());
+    TestScene.Box book = TestScene.BOOK.scaled(160, 120);
+    int y = (book.y0() + book.y1()) / 2;
+    robot
+        .drag(pixel(robot, book.x0() + 3, y), MouseButton.PRIMARY)
+        .dropTo(pixel(robot, book.x1() - 3, y));
+    settle();
+    assertFalse(window.session().bank().copyOf(11).isEmpty(), "Draw trained channel 11");
+    int w = window.session().width();
+    robot.type(KeyCode.DIGIT1);
+    settle();
+    assertEquals(ViewMode.OVERLAY, window.lastRendered().mode());
+    assertEquals(
+        0xFF000000 | MarkColor.BLUE.rgb(),
+        window.lastRendered().viewArgb()[y * w + (book.x0() + book.x1()) / 2]);
+
+    // Thresh colour red: the channel's pixels are painted red in the Overlay view.
+    menu(robot, "Settings", "#menu-thresh", "#menu-thresh-red");
+    settle();
+    assertEquals(
+        0xFF000000 | MarkColor.RED.rgb(),
+        window.lastRendered().viewArgb()[y * w + (book.x0() + book.x1()) / 2]);
+    menu(robot, "Settings", "#menu-draw", "#menu-draw-green");
+    assertEquals(MarkColor.GREEN.rgb(), rgbOf(window.trainingPane().drawColor()));
+
+    robot.moveTo(pixel(robot, 20, 20)).type(KeyCode.E);
+    robot
+        .drag(pixel(robot, book.x0() + 3, y), MouseButton.PRIMARY)
+        .dropTo(pixel(robot, book.x1() - 3, y));
+    settle();
+    assertTrue(window.session().bank().copyOf(11).isEmpty(), "Erase along the same path");
+
+    // Magnification 4: the image is 4 × 160 pixels wide.
+    robot.clickOn("#magnification .increment-arrow-button");
+    WaitForAsyncUtils.waitForFxEvents();
+    assertEquals(4, window.trainingPane().magnification());
+    assertEquals(640, window.trainingPane().getWidth(), 0.5);
+
+    // Esc asks before quitting with unsaved channels; "Cancel" keeps the window.
+    prompts.confirmAnswer = false;
+    robot.type(KeyCode.ESCAPE);
+    WaitForAsyncUtils.waitForFxEvents();
+    assertEquals(1, prompts.confirms.size());
+    assertTrue(prompts.confirms.get(0).contains("Channel(s) 11"), prompts.confirms::toString);
+    assertTrue(window.stage().isShowing());
+  }
+
+  /**
+   * Opens a menu path by clicking each shown entry in turn, as a user does: a menu bar title by its
+   * text, then entries by their ids ("#menu-brush").
+   */
+  private static void menu(FxRobot robot, String... path) {
+    for (String text : path) {
+      robot.clickOn(
+          (Node n) ->
+              (text.startsWith("#")
+                      ? text.substring(1).equals(n.getId())
+                      : (n instanceof Labeled l && text.equals(l.getText()))
+                          || (n instanceof Text t && text.equals(t.getText())))
+                  && n.getScene() != null
+                  && n.getScene().getWindow() != null
+                  && n.getScene().getWindow().isShowing()
+                  && n.isVisible(),
+          // Into a submenu sideways first: a diagonal path would cross other entries and open
+          // their submenus instead.
+          Motion.HORIZONTAL_FIRST);
+    }
+  }
+
+  private static int rgbOf(javafx.scene.paint.Color c) {
+    return ((int) Math.round(c.getRed() * 255) << 16)
+        | ((int) Math.round(c.getGreen() * 255) << 8)
+        | (int) Math.round(c.getBlue() * 255);
   }
 
   /** A source whose frames are all one shade that changes every frame. */

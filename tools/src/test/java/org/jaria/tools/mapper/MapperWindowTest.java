@@ -16,9 +16,11 @@ import javafx.scene.input.MouseButton;
 import javafx.stage.Stage;
 import org.jaria.acts.image.ImageFiles;
 import org.jaria.acts.image.RgbImage;
+import org.jaria.geom.ArLineSegment;
 import org.jaria.map.ArMap;
 import org.jaria.map.ArMapObject;
 import org.jaria.tools.fx.AppEnvironment;
+import org.jaria.tools.fx.AppPrefs;
 import org.jaria.tools.fx.FxRuntime;
 import org.jaria.tools.fx.ScriptedPrompts;
 import org.jaria.tools.fx.TestFiles;
@@ -249,5 +251,184 @@ class MapperWindowTest {
     assertEquals(1, prompts.errors.size());
     assertTrue(prompts.errors.get(0).contains("bad.map:1"), prompts.errors::toString);
     assertTrue(window.ready().isCompletedExceptionally());
+  }
+
+  @Test
+  void drawEveryKindWithItsKeyThenSaveAndReload(FxRobot robot) throws Exception {
+    openAndWait(null);
+    FxRuntime.run(
+        () -> {
+          window.view().setOptions(window.view().options().withGridSize(500));
+          window.view().viewport().setScale(0.05);
+          window.view().centerOn(5000, 5000);
+          window.view().paint();
+        },
+        10);
+    // Snap to Grid from the View menu's shortcut: every drawn end lands on a 500 mm grid point.
+    robot.clickOn("#map-view");
+    robot
+        .press(KeyCode.CONTROL, KeyCode.SHIFT)
+        .type(KeyCode.G)
+        .release(KeyCode.SHIFT, KeyCode.CONTROL);
+    assertTrue(window.view().isSnapping());
+
+    robot.type(KeyCode.W);
+    robot.drag(onMap(1010, 990), MouseButton.PRIMARY).dropTo(onMap(8990, 1020));
+    robot.type(KeyCode.P);
+    robot.clickOn(onMap(3000, 8000));
+    robot.type(KeyCode.F);
+    robot.drag(onMap(6000, 2000), MouseButton.PRIMARY).dropTo(onMap(6000, 6000));
+    robot.type(KeyCode.O);
+    robot.drag(onMap(2000, 2000), MouseButton.PRIMARY).dropTo(onMap(2000, 4000));
+    robot.type(KeyCode.K);
+    robot.clickOn(onMap(8000, 8000));
+    robot.press(KeyCode.SHIFT).type(KeyCode.G).release(KeyCode.SHIFT);
+    robot.drag(onMap(4000, 4000), MouseButton.PRIMARY).dropTo(onMap(2000, 4000));
+    robot.type(KeyCode.G);
+    robot.clickOn(onMap(7000, 3500));
+    WaitForAsyncUtils.waitForFxEvents();
+
+    MapContent c = window.document().content();
+    assertEquals(1, c.lines().size());
+    assertEquals(new ArLineSegment(1000, 1000, 9000, 1000), c.lines().get(0).segment());
+    assertEquals(1, c.points().size());
+    assertEquals(3000, c.points().x(0));
+    assertEquals(8000, c.points().y(0));
+    List<String> types = c.objects().stream().map(e -> e.object().type()).toList();
+    assertEquals(List.of("ForbiddenLine", "RobotHome", "Dock", "GoalWithHeading", "Goal"), types);
+    ArMapObject line = c.objects().get(0).object();
+    assertEquals(new ArLineSegment(6000, 2000, 6000, 6000), line.getFromToSegments().get(0));
+    assertEquals(90, c.objects().get(1).object().pose().th(), 1.01, "home faces the drag");
+    ArMapObject gh = c.objects().get(3).object();
+    assertEquals(4000, gh.pose().x(), 1e-9);
+    assertEquals(180, Math.abs(gh.pose().th()), 1.01, "goal with heading faces the drag");
+    assertEquals("Goal 1", gh.name());
+    assertEquals("Goal 2", c.objects().get(4).object().name());
+    assertEquals(7, countUndoSteps());
+
+    Path file = dir.resolve("drawn.map");
+    prompts.files.add(file);
+    robot.press(KeyCode.CONTROL).type(KeyCode.S).release(KeyCode.CONTROL);
+    assertTrue(window.work().awaitIdle(30, TimeUnit.SECONDS));
+    assertTrue(prompts.errors.isEmpty(), prompts.errors::toString);
+    ArMap saved = ArMap.readFile(file);
+    assertEquals(c.segments(), saved.getLines());
+    assertEquals(c.mapObjects(), saved.getMapObjects());
+    assertEquals(c.points(), saved.getPoints());
+    assertEquals("drawn.map — JAria Mapper", window.stage().getTitle());
+  }
+
+  private int countUndoSteps() {
+    return FxRuntime.call(
+        () -> {
+          int n = 0;
+          while (window.document().undo()) {
+            n++;
+          }
+          for (int i = 0; i < n; i++) {
+            window.document().redo();
+          }
+          return n;
+        },
+        10);
+  }
+
+  @Test
+  void checkMapListsProblemsSelectsThemAndCanStopTheSave(FxRobot robot) throws Exception {
+    openAndWait(null);
+    FxRuntime.run(
+        () -> {
+          window
+              .document()
+              .execute(MapCommands.addObject(ArMapObject.forbiddenArea(0, 0, 3000, 3000)));
+          window
+              .document()
+              .execute(MapCommands.addObject(ArMapObject.robotHome("", 1500, 1500, 0)));
+          window.document().execute(MapCommands.addLine(new ArLineSegment(6000, 0, 6000, 5000)));
+          window.document().execute(MapCommands.addObject(ArMapObject.goal("Wall", 6100, 2000)));
+          window.view().fit();
+        },
+        10);
+    robot.clickOn("#map-view");
+    robot.type(KeyCode.F7);
+    WaitForAsyncUtils.waitForFxEvents();
+    List<MapProblem> found = window.problems();
+    assertEquals(2, found.size(), found::toString);
+    assertTrue(
+        found.get(0).message().startsWith("home at (1500, 1500) is inside a forbidden area"));
+    assertTrue(found.get(1).message().contains("100 mm from a wall"), found::toString);
+    // Clicking a problem selects the object it is about.
+    robot.clickOn(found.get(1).toString());
+    WaitForAsyncUtils.waitForFxEvents();
+    long goalId = window.document().content().objects().get(2).id();
+    assertEquals(goalId, window.selection().single());
+
+    // Saving lists the errors first; "Cancel" keeps the map unsaved.
+    Path file = dir.resolve("checked.map");
+    prompts.confirmAnswer = false;
+    prompts.files.add(file);
+    robot.clickOn("#map-view");
+    robot.press(KeyCode.CONTROL).type(KeyCode.S).release(KeyCode.CONTROL);
+    assertTrue(window.work().awaitIdle(30, TimeUnit.SECONDS));
+    assertEquals(1, prompts.problemLists.size());
+    assertEquals(2, prompts.problemLists.get(0).size());
+    assertFalse(Files.exists(file));
+    assertTrue(window.document().isModified());
+  }
+
+  @Test
+  void objectPanelRenamesAndTurnsTheSelection(FxRobot robot) throws Exception {
+    openAndWait(null);
+    FxRuntime.run(
+        () -> {
+          window.document().execute(MapCommands.addObject(ArMapObject.dock("Dock 1", 0, 0, 0)));
+          window.selectAndShow(window.document().content().objects().get(0).id());
+        },
+        10);
+    // A click in a short field puts the caret after its text.
+    robot.clickOn("#object-name").eraseText(6).write("Charger").type(KeyCode.ENTER);
+    robot.clickOn("#object-heading").eraseText(3).write("135").type(KeyCode.ENTER);
+    WaitForAsyncUtils.waitForFxEvents();
+    ArMapObject o = window.document().content().objects().get(0).object();
+    assertEquals("Charger", o.name());
+    assertEquals(135, o.pose().th(), 1e-9);
+    assertEquals("Rotate", window.document().undoName());
+    robot.clickOn("#object-heading").eraseText(5).write("east").type(KeyCode.ENTER);
+    WaitForAsyncUtils.waitForFxEvents();
+    assertEquals(1, prompts.errors.size());
+    assertTrue(prompts.errors.get(0).contains("'east' is not a number"), prompts.errors::toString);
+  }
+
+  @Test
+  void viewOptionsAndWindowPlaceAreRemembered(FxRobot robot) throws Exception {
+    openAndWait(null);
+    robot.clickOn("#map-view");
+    robot.press(KeyCode.CONTROL).type(KeyCode.G).release(KeyCode.CONTROL);
+    assertFalse(window.view().options().grid());
+    FxRuntime.run(
+        () -> {
+          window.stage().setWidth(900);
+          window.stage().setHeight(650);
+          window.stage().setX(40);
+          window.stage().setY(30);
+          window.stage().hide();
+        },
+        10);
+    window.close();
+    AppPrefs prefs = window.prefs();
+    window =
+        FxRuntime.call(
+            () -> {
+              MapperWindow again =
+                  new MapperWindow(new Stage(), new AppEnvironment(prefs, w -> prompts, true));
+              again.show(null);
+              return again;
+            },
+            10);
+    WaitForAsyncUtils.waitForFxEvents();
+    assertFalse(window.view().options().grid());
+    assertEquals(900, window.stage().getWidth(), 1);
+    assertEquals(650, window.stage().getHeight(), 1);
+    assertEquals(40, window.stage().getX(), 1);
   }
 }
