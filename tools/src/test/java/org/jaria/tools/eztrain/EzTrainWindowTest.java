@@ -37,16 +37,17 @@ import org.jaria.acts.image.TestScene;
 import org.jaria.geom.ArPose;
 import org.jaria.tools.fx.AppEnvironment;
 import org.jaria.tools.fx.FxRuntime;
+import org.jaria.tools.fx.Mouse;
 import org.jaria.tools.fx.ScriptedPrompts;
 import org.jaria.tools.simvision.TrainingScene;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
 import org.testfx.api.FxRobot;
 import org.testfx.framework.junit5.ApplicationExtension;
 import org.testfx.framework.junit5.Start;
-import org.testfx.robot.Motion;
 import org.testfx.util.WaitForAsyncUtils;
 
 /**
@@ -60,6 +61,13 @@ class EzTrainWindowTest {
   @TempDir Path dir;
 
   private final ScriptedPrompts prompts = new ScriptedPrompts();
+  private Mouse mouse;
+
+  @BeforeEach
+  void mouse(FxRobot robot) {
+    mouse = new Mouse(robot);
+  }
+
   private EzTrainWindow window;
 
   @Start
@@ -112,29 +120,29 @@ class EzTrainWindowTest {
     }
     // Step 2: File → Load Image.
     prompts.files.add(image);
-    robot.clickOn("File").clickOn("Load Image…");
+    mouse.click("File").click("Load Image…");
     settle();
     assertTrue(window.outputText().contains("test.ppm"), window::outputText);
 
     // Step 3: channel 1 (after visiting channel 2), two blobs tracked.
-    robot.clickOn("#channel-btn-2");
-    robot.clickOn("#channel-btn-1");
-    robot.clickOn("#tracked-blobs .decrement-arrow-button");
+    mouse.click("#channel-btn-2");
+    mouse.click("#channel-btn-1");
+    mouse.click("#tracked-blobs .decrement-arrow-button");
     settle();
     assertEquals(1, window.session().channel());
     assertEquals(2, window.session().bank().getTrackedBlobs(1));
 
     // Step 4: Add, drag a rectangle inside the red book (160x120 coordinates).
     TestScene.Box book = TestScene.BOOK.scaled(160, 120);
-    robot.clickOn("#tool-add");
-    robot
-        .drag(pixel(robot, book.x0() + 1, book.y0() + 1), MouseButton.PRIMARY)
-        .dropTo(pixel(robot, book.x1() - 1, book.y1() - 1));
+    mouse.click("#tool-add");
+    mouse.drag(
+        pixel(robot, book.x0() + 1, book.y0() + 1), pixel(robot, book.x1() - 1, book.y1() - 1));
     settle();
     assertFalse(window.session().bank().copyOf(1).isEmpty());
 
     // Step 6: Thresh view with key 2: channel pixels white, the rest black.
-    robot.moveTo(pixel(robot, 80, 20)).type(KeyCode.DIGIT2);
+    mouse.moveTo(pixel(robot, 80, 20));
+    robot.type(KeyCode.DIGIT2);
     settle();
     Rendered r = window.lastRendered();
     assertEquals(ViewMode.THRESH, r.mode());
@@ -170,7 +178,7 @@ class EzTrainWindowTest {
     }
 
     // Step 8: save the channel (channel1.lut in the working folder).
-    robot.clickOn("#channel-save");
+    mouse.click("#channel-save");
     settle();
     Path lut = dir.resolve("channel1.lut");
     assertTrue(Files.isRegularFile(lut), window::outputText);
@@ -180,16 +188,16 @@ class EzTrainWindowTest {
     // Step 9: File → Save Runtime Config lists the channel and its two blobs.
     Path cfg = dir.resolve("actsconfig");
     prompts.files.add(cfg);
-    robot.clickOn("File").clickOn("Save Runtime Config…");
+    mouse.click("File").click("Save Runtime Config…");
     settle();
     assertTrue(Files.readString(cfg).contains("Channel 1 channel1.lut 2"), () -> read(cfg));
 
     // Clear the training (confirmed), then load the channel back.
-    robot.clickOn("#clear-training");
+    mouse.click("#clear-training");
     settle();
     assertTrue(window.session().bank().copyOf(1).isEmpty(), "cleared");
     assertTrue(window.lastRendered().blobs().isEmpty(), "no blobs once cleared");
-    robot.clickOn("#channel-load");
+    mouse.click("#channel-load");
     settle();
     assertTrue(window.session().bank().copyOf(1).contentEquals(saved), "loaded = saved");
     assertEquals(blobs, window.lastRendered().blobs());
@@ -200,23 +208,22 @@ class EzTrainWindowTest {
   void rightClickCyclesViewsAndUndoRevertsTraining(FxRobot robot) throws Exception {
     awaitReady();
     TestScene.Box cup = TestScene.CUP.scaled(160, 120);
-    robot
-        .drag(pixel(robot, cup.x0(), cup.y0()), MouseButton.PRIMARY)
-        .dropTo(pixel(robot, cup.x1(), cup.y1()));
+    mouse.drag(pixel(robot, cup.x0(), cup.y0()), pixel(robot, cup.x1(), cup.y1()));
     settle();
     assertFalse(window.session().bank().copyOf(1).isEmpty());
-    robot.clickOn(pixel(robot, 10, 10), MouseButton.SECONDARY);
+    mouse.click(pixel(robot, 10, 10), MouseButton.SECONDARY);
     settle();
     assertEquals(ViewMode.THRESH, window.lastRendered().mode());
-    robot.clickOn(pixel(robot, 10, 10), MouseButton.SECONDARY);
+    mouse.click(pixel(robot, 10, 10), MouseButton.SECONDARY);
     settle();
     assertEquals(ViewMode.RAW, window.lastRendered().mode());
-    robot.clickOn("#undo");
+    mouse.click("#undo");
     settle();
     assertTrue(window.session().bank().copyOf(1).isEmpty());
     // Pick prints the pixel's colour.
-    robot.clickOn("#tool-pick");
-    robot.clickOn(pixel(robot, (cup.x0() + cup.x1()) / 2, (cup.y0() + cup.y1()) / 2));
+    mouse.click("#tool-pick");
+    mouse.click(
+        pixel(robot, (cup.x0() + cup.x1()) / 2, (cup.y0() + cup.y1()) / 2), MouseButton.PRIMARY);
     WaitForAsyncUtils.waitForFxEvents();
     assertTrue(window.outputText().matches("(?s).*Pick \\(\\d+, \\d+\\): R \\d+ G \\d+ B \\d+.*"));
   }
@@ -225,11 +232,9 @@ class EzTrainWindowTest {
   void manualTrainingPlanesAndSliders(FxRobot robot) throws Exception {
     awaitReady();
     TestScene.Box book = TestScene.BOOK.scaled(160, 120);
-    robot
-        .drag(pixel(robot, book.x0(), book.y0()), MouseButton.PRIMARY)
-        .dropTo(pixel(robot, book.x1(), book.y1()));
+    mouse.drag(pixel(robot, book.x0(), book.y0()), pixel(robot, book.x1(), book.y1()));
     settle();
-    robot.clickOn("Manual training");
+    mouse.click("Manual training");
     settle();
     Rendered r = window.lastRendered();
     assertEquals(3, r.planes().length);
@@ -241,23 +246,23 @@ class EzTrainWindowTest {
     assertEquals(window.session().bank().copyOf(1).trainedCells(ColorPlane.RG), trained);
 
     // High Bright down with the keyboard: dark red stays, nothing bright is left.
-    robot.clickOn("#plane-rg-high");
+    mouse.click("#plane-rg-high");
     for (int i = 0; i < 3; i++) {
       robot.type(KeyCode.LEFT);
     }
     settle();
     PlaneLimits l = window.session().bank().copyOf(1).getLimits(ColorPlane.RG);
     assertTrue(l.highBright() < PlaneLimits.MAX_BRIGHT, l::toString);
-    robot.clickOn("#plane-rg-reset");
+    mouse.click("#plane-rg-reset");
     settle();
     assertEquals(PlaneLimits.NONE, window.session().bank().copyOf(1).getLimits(ColorPlane.RG));
 
-    robot.clickOn("#plane-bg-clear");
+    mouse.click("#plane-bg-clear");
     settle();
     assertEquals(0, window.session().bank().copyOf(1).trainedCells(ColorPlane.BG));
     assertTrue(
         window.lastRendered().blobs().isEmpty(), "a channel with an empty plane sees nothing");
-    robot.clickOn("#plane-bg-fill");
+    mouse.click("#plane-bg-fill");
     settle();
     assertEquals(256 * 256, window.session().bank().copyOf(1).trainedCells(ColorPlane.BG));
     assertFalse(window.lastRendered().blobs().isEmpty());
@@ -270,10 +275,10 @@ class EzTrainWindowTest {
     FxRuntime.run(() -> window.useVideoSource(src), 10);
     assertTrue(src.frames.tryAcquire(3, 10, TimeUnit.SECONDS), "continuous video");
     assertEquals(160, window.session().frame().width());
-    robot.clickOn("#grab-single");
+    mouse.click("#grab-single");
     WaitForAsyncUtils.waitForFxEvents();
     src.frames.drainPermits();
-    robot.clickOn("#grab-frame");
+    mouse.click("#grab-frame");
     assertTrue(src.frames.tryAcquire(1, 10, TimeUnit.SECONDS), "one grabbed frame");
     int shade = window.session().frame().get(0, 0) & 0xFF;
     assertEquals(src.count.get() & 0xFF, shade);
@@ -288,14 +293,14 @@ class EzTrainWindowTest {
   void missingCameraAndSimulatorCameraSayWhatToDo(FxRobot robot) throws Exception {
     awaitReady();
     prompts.texts.add(dir.resolve("no-such-camera").toString());
-    robot.clickOn("File").clickOn("Live Video (Camera)…");
+    mouse.click("File").click("Live Video (Camera)…");
     assertTrue(window.work().awaitIdle(20, TimeUnit.SECONDS));
     WaitForAsyncUtils.waitForFxEvents();
     assertEquals(1, prompts.errors.size(), prompts.errors::toString);
     assertTrue(prompts.errors.get(0).contains("no camera or video file"), prompts.errors::toString);
     assertTrue(prompts.errors.get(0).contains("Load Image"), prompts.errors::toString);
     window.setSimCameraHook(SimCameraHook.NOT_AVAILABLE);
-    robot.clickOn("File").clickOn("Simulator Camera");
+    mouse.click("File").click("Simulator Camera");
     assertTrue(window.work().awaitIdle(20, TimeUnit.SECONDS));
     WaitForAsyncUtils.waitForFxEvents();
     assertEquals(2, prompts.errors.size());
@@ -342,7 +347,7 @@ class EzTrainWindowTest {
   @Test
   void simulatorCameraIsLiveVideoARobotProgramCanUse(FxRobot robot) throws Exception {
     awaitReady();
-    robot.clickOn("File").clickOn("Simulator Camera");
+    mouse.click("File").click("Simulator Camera");
     settle();
     TrainingScene scene = window.simulatorScene();
     assertTrue(scene != null && scene.world().isRealTime(), "the simulated world runs");
@@ -357,11 +362,10 @@ class EzTrainWindowTest {
     assertTrue(ball != null, "the red ball is in view");
     int qx = (ball[2] - ball[0]) / 4;
     int qy = (ball[3] - ball[1]) / 4;
-    robot
-        .drag(pixel(robot, ball[0] + qx, ball[1] + qy), MouseButton.PRIMARY)
-        .dropTo(pixel(robot, ball[2] - qx, ball[3] - qy));
+    mouse.drag(pixel(robot, ball[0] + qx, ball[1] + qy), pixel(robot, ball[2] - qx, ball[3] - qy));
     settle();
-    robot.moveTo(pixel(robot, 5, 5)).type(KeyCode.DIGIT2);
+    mouse.moveTo(pixel(robot, 5, 5));
+    robot.type(KeyCode.DIGIT2);
     settle();
     List<Blob> blobs = window.lastRendered().blobs();
     assertFalse(blobs.isEmpty(), "the ball is a blob");
@@ -389,7 +393,7 @@ class EzTrainWindowTest {
   void consoleBanksToolKeysColoursBrushMagnificationAndQuit(FxRobot robot) throws Exception {
     awaitReady();
     // Bank 9-16, third button: channel 11.
-    robot.clickOn("#bank-2").clickOn("#channel-btn-3");
+    mouse.click("#bank-2").click("#channel-btn-3");
     settle();
     assertEquals(11, window.session().channel());
     assertEquals("11", robot.lookup("#channel-btn-3").queryLabeled().getText());
@@ -397,7 +401,7 @@ class EzTrainWindowTest {
     assertEquals("channel11.lut", robot.lookup("#channel-file").queryTextInputControl().getText());
 
     // Tool keys over the image.
-    robot.moveTo(pixel(robot, 20, 20));
+    mouse.moveTo(pixel(robot, 20, 20));
     for (TrainTool t :
         new TrainTool[] {TrainTool.REMOVE, TrainTool.ERASE, TrainTool.PICK, TrainTool.DRAW}) {
       robot.type(t.key());
@@ -411,9 +415,7 @@ class EzTrainWindowTest {
     assertEquals(5, window.trainingPane().brush());
     TestScene.Box book = TestScene.BOOK.scaled(160, 120);
     int y = (book.y0() + book.y1()) / 2;
-    robot
-        .drag(pixel(robot, book.x0() + 3, y), MouseButton.PRIMARY)
-        .dropTo(pixel(robot, book.x1() - 3, y));
+    mouse.stroke(pixel(robot, book.x0() + 3, y), pixel(robot, book.x1() - 3, y), 2);
     settle();
     assertFalse(window.session().bank().copyOf(11).isEmpty(), "Draw trained channel 11");
     int w = window.session().width();
@@ -433,15 +435,14 @@ class EzTrainWindowTest {
     menu(robot, "Settings", "#menu-draw", "#menu-draw-green");
     assertEquals(MarkColor.GREEN.rgb(), rgbOf(window.trainingPane().drawColor()));
 
-    robot.moveTo(pixel(robot, 20, 20)).type(KeyCode.E);
-    robot
-        .drag(pixel(robot, book.x0() + 3, y), MouseButton.PRIMARY)
-        .dropTo(pixel(robot, book.x1() - 3, y));
+    mouse.moveTo(pixel(robot, 20, 20));
+    robot.type(KeyCode.E);
+    mouse.stroke(pixel(robot, book.x0() + 3, y), pixel(robot, book.x1() - 3, y), 2);
     settle();
     assertTrue(window.session().bank().copyOf(11).isEmpty(), "Erase along the same path");
 
     // Magnification 4: the image is 4 × 160 pixels wide.
-    robot.clickOn("#magnification .increment-arrow-button");
+    mouse.click("#magnification .increment-arrow-button");
     WaitForAsyncUtils.waitForFxEvents();
     assertEquals(4, window.trainingPane().magnification());
     assertEquals(640, window.trainingPane().getWidth(), 0.5);
@@ -459,21 +460,21 @@ class EzTrainWindowTest {
    * Opens a menu path by clicking each shown entry in turn, as a user does: a menu bar title by its
    * text, then entries by their ids ("#menu-brush").
    */
-  private static void menu(FxRobot robot, String... path) {
+  private void menu(FxRobot robot, String... path) {
     for (String text : path) {
-      robot.clickOn(
-          (Node n) ->
-              (text.startsWith("#")
-                      ? text.substring(1).equals(n.getId())
-                      : (n instanceof Labeled l && text.equals(l.getText()))
-                          || (n instanceof Text t && text.equals(t.getText())))
-                  && n.getScene() != null
-                  && n.getScene().getWindow() != null
-                  && n.getScene().getWindow().isShowing()
-                  && n.isVisible(),
-          // Into a submenu sideways first: a diagonal path would cross other entries and open
-          // their submenus instead.
-          Motion.HORIZONTAL_FIRST);
+      mouse.click(
+          robot
+              .lookup(
+                  (Node n) ->
+                      (text.startsWith("#")
+                              ? text.substring(1).equals(n.getId())
+                              : (n instanceof Labeled l && text.equals(l.getText()))
+                                  || (n instanceof Text t && text.equals(t.getText())))
+                          && n.getScene() != null
+                          && n.getScene().getWindow() != null
+                          && n.getScene().getWindow().isShowing()
+                          && n.isVisible())
+              .<Node>query());
     }
   }
 

@@ -22,9 +22,11 @@ import org.jaria.map.ArMapObject;
 import org.jaria.tools.fx.AppEnvironment;
 import org.jaria.tools.fx.AppPrefs;
 import org.jaria.tools.fx.FxRuntime;
+import org.jaria.tools.fx.Mouse;
 import org.jaria.tools.fx.ScriptedPrompts;
 import org.jaria.tools.fx.TestFiles;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
@@ -40,6 +42,13 @@ class MapperWindowTest {
   @TempDir Path dir;
 
   private final ScriptedPrompts prompts = new ScriptedPrompts();
+  private Mouse mouse;
+
+  @BeforeEach
+  void mouse(FxRobot robot) {
+    mouse = new Mouse(robot);
+  }
+
   private MapperWindow window;
 
   @Start
@@ -82,8 +91,8 @@ class MapperWindowTest {
           window.view().paint();
         },
         10);
-    robot.clickOn("#tool-forbidden-area");
-    robot.drag(onMap(4000, 1000), MouseButton.PRIMARY).dropTo(onMap(7500, -2000));
+    mouse.click("#tool-forbidden-area");
+    mouse.drag(onMap(4000, 1000), onMap(7500, -2000));
     WaitForAsyncUtils.waitForFxEvents();
     assertTrue(window.document().isModified());
     assertEquals("Add forbidden area", window.document().undoName());
@@ -120,7 +129,7 @@ class MapperWindowTest {
     Path copy = dir.resolve("copy.map");
     openAndWait(file);
     prompts.files.add(copy);
-    robot.clickOn("#status"); // the window has the keyboard
+    mouse.click("#status"); // the window has the keyboard
     robot
         .press(KeyCode.CONTROL, KeyCode.SHIFT)
         .type(KeyCode.S)
@@ -133,10 +142,10 @@ class MapperWindowTest {
   @Test
   void placeGoalThenUndoRedoAndRename(FxRobot robot) throws Exception {
     openAndWait(null);
-    robot.clickOn("#map-view");
+    mouse.click("#map-view");
     robot.type(KeyCode.G);
     Point2D p = onMap(1000, 2000);
-    robot.moveTo(p).clickOn(MouseButton.PRIMARY);
+    mouse.click(p, MouseButton.PRIMARY);
     WaitForAsyncUtils.waitForFxEvents();
     assertEquals(1, window.document().content().objects().size());
     ArMapObject goal = window.document().content().objects().get(0).object();
@@ -154,7 +163,7 @@ class MapperWindowTest {
     // Double-click with the select tool renames.
     robot.type(KeyCode.S);
     prompts.texts.add("Charging corner");
-    robot.moveTo(p).doubleClickOn(MouseButton.PRIMARY);
+    mouse.doubleClick(p);
     WaitForAsyncUtils.waitForFxEvents();
     assertEquals("Charging corner", window.document().content().objects().get(0).object().name());
   }
@@ -172,12 +181,12 @@ class MapperWindowTest {
           window.view().paint();
         },
         10);
-    robot.clickOn("#tool-select");
-    robot.clickOn(onMap(2000, 1000));
+    mouse.click("#tool-select");
+    mouse.click(onMap(2000, 1000), MouseButton.PRIMARY);
     assertEquals(1, window.selection().size());
 
     // Drag the area by its inside 1 m to the right (snapping off: about 1000 mm).
-    robot.drag(onMap(2000, 1000), MouseButton.PRIMARY).dropTo(onMap(3000, 1000));
+    mouse.drag(onMap(2000, 1000), onMap(3000, 1000));
     WaitForAsyncUtils.waitForFxEvents();
     ArMapObject moved = window.document().content().objects().get(0).object();
     double pixel = 1 / window.view().viewport().scale();
@@ -188,7 +197,7 @@ class MapperWindowTest {
     double[] h = MapRenderer.rotationHandle(window.view().viewport(), moved);
     Point2D handle = window.view().localToScreen(h[0], h[1]);
     double[] c = MapGeometry.center(moved);
-    robot.drag(handle, MouseButton.PRIMARY).dropTo(onMap(c[0] - 3000, c[1]));
+    mouse.drag(handle, onMap(c[0] - 3000, c[1]));
     WaitForAsyncUtils.waitForFxEvents();
     ArMapObject turned = window.document().content().objects().get(0).object();
     assertEquals(90, turned.pose().th(), 1.01);
@@ -212,15 +221,15 @@ class MapperWindowTest {
           window.view().paint();
         },
         10);
-    robot.clickOn("#tool-select");
-    robot.drag(onMap(-6000, 3000), MouseButton.PRIMARY).dropTo(onMap(4000, -3000));
+    mouse.click("#tool-select");
+    mouse.drag(onMap(-6000, 3000), onMap(4000, -3000));
     WaitForAsyncUtils.waitForFxEvents();
     assertTrue(window.selection().points().cardinality() > 100);
     assertFalse(window.document().isModified(), "a box selection moves nothing");
 
-    robot.clickOn("#map-view");
+    mouse.click("#map-view");
     robot.type(KeyCode.M);
-    robot.drag(onMap(0, 0), MouseButton.PRIMARY).dropTo(onMap(3000, 4000));
+    mouse.drag(onMap(0, 0), onMap(3000, 4000));
     WaitForAsyncUtils.waitForFxEvents();
     MeasureTool m = (MeasureTool) window.view().tool();
     double pixel = 1 / window.view().viewport().scale();
@@ -265,7 +274,7 @@ class MapperWindowTest {
         },
         10);
     // Snap to Grid from the View menu's shortcut: every drawn end lands on a 500 mm grid point.
-    robot.clickOn("#map-view");
+    mouse.click("#map-view");
     robot
         .press(KeyCode.CONTROL, KeyCode.SHIFT)
         .type(KeyCode.G)
@@ -273,19 +282,19 @@ class MapperWindowTest {
     assertTrue(window.view().isSnapping());
 
     robot.type(KeyCode.W);
-    robot.drag(onMap(1010, 990), MouseButton.PRIMARY).dropTo(onMap(8990, 1020));
+    mouse.drag(onMap(1010, 990), onMap(8990, 1020));
     robot.type(KeyCode.P);
-    robot.clickOn(onMap(3000, 8000));
+    mouse.click(onMap(3000, 8000), MouseButton.PRIMARY);
     robot.type(KeyCode.F);
-    robot.drag(onMap(6000, 2000), MouseButton.PRIMARY).dropTo(onMap(6000, 6000));
+    mouse.drag(onMap(6000, 2000), onMap(6000, 6000));
     robot.type(KeyCode.O);
-    robot.drag(onMap(2000, 2000), MouseButton.PRIMARY).dropTo(onMap(2000, 4000));
+    mouse.drag(onMap(2000, 2000), onMap(2000, 4000));
     robot.type(KeyCode.K);
-    robot.clickOn(onMap(8000, 8000));
+    mouse.click(onMap(8000, 8000), MouseButton.PRIMARY);
     robot.press(KeyCode.SHIFT).type(KeyCode.G).release(KeyCode.SHIFT);
-    robot.drag(onMap(4000, 4000), MouseButton.PRIMARY).dropTo(onMap(2000, 4000));
+    mouse.drag(onMap(4000, 4000), onMap(2000, 4000));
     robot.type(KeyCode.G);
-    robot.clickOn(onMap(7000, 3500));
+    mouse.click(onMap(7000, 3500), MouseButton.PRIMARY);
     WaitForAsyncUtils.waitForFxEvents();
 
     MapContent c = window.document().content();
@@ -349,7 +358,7 @@ class MapperWindowTest {
           window.view().fit();
         },
         10);
-    robot.clickOn("#map-view");
+    mouse.click("#map-view");
     robot.type(KeyCode.F7);
     WaitForAsyncUtils.waitForFxEvents();
     List<MapProblem> found = window.problems();
@@ -358,7 +367,7 @@ class MapperWindowTest {
         found.get(0).message().startsWith("home at (1500, 1500) is inside a forbidden area"));
     assertTrue(found.get(1).message().contains("100 mm from a wall"), found::toString);
     // Clicking a problem selects the object it is about.
-    robot.clickOn(found.get(1).toString());
+    mouse.click(found.get(1).toString());
     WaitForAsyncUtils.waitForFxEvents();
     long goalId = window.document().content().objects().get(2).id();
     assertEquals(goalId, window.selection().single());
@@ -367,7 +376,7 @@ class MapperWindowTest {
     Path file = dir.resolve("checked.map");
     prompts.confirmAnswer = false;
     prompts.files.add(file);
-    robot.clickOn("#map-view");
+    mouse.click("#map-view");
     robot.press(KeyCode.CONTROL).type(KeyCode.S).release(KeyCode.CONTROL);
     assertTrue(window.work().awaitIdle(30, TimeUnit.SECONDS));
     assertEquals(1, prompts.problemLists.size());
@@ -386,14 +395,17 @@ class MapperWindowTest {
         },
         10);
     // A click in a short field puts the caret after its text.
-    robot.clickOn("#object-name").eraseText(6).write("Charger").type(KeyCode.ENTER);
-    robot.clickOn("#object-heading").eraseText(3).write("135").type(KeyCode.ENTER);
+    mouse.click("#object-name");
+    robot.eraseText(6).write("Charger").type(KeyCode.ENTER);
+    mouse.click("#object-heading");
+    robot.eraseText(3).write("135").type(KeyCode.ENTER);
     WaitForAsyncUtils.waitForFxEvents();
     ArMapObject o = window.document().content().objects().get(0).object();
     assertEquals("Charger", o.name());
     assertEquals(135, o.pose().th(), 1e-9);
     assertEquals("Rotate", window.document().undoName());
-    robot.clickOn("#object-heading").eraseText(5).write("east").type(KeyCode.ENTER);
+    mouse.click("#object-heading");
+    robot.eraseText(5).write("east").type(KeyCode.ENTER);
     WaitForAsyncUtils.waitForFxEvents();
     assertEquals(1, prompts.errors.size());
     assertTrue(prompts.errors.get(0).contains("'east' is not a number"), prompts.errors::toString);
@@ -402,7 +414,7 @@ class MapperWindowTest {
   @Test
   void viewOptionsAndWindowPlaceAreRemembered(FxRobot robot) throws Exception {
     openAndWait(null);
-    robot.clickOn("#map-view");
+    mouse.click("#map-view");
     robot.press(KeyCode.CONTROL).type(KeyCode.G).release(KeyCode.CONTROL);
     assertFalse(window.view().options().grid());
     FxRuntime.run(

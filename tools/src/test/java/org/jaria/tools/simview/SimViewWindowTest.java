@@ -7,7 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import javafx.geometry.Point2D;
-import javafx.scene.input.MouseButton;
 import javafx.stage.Stage;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
@@ -16,8 +15,10 @@ import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimWorld;
 import org.jaria.tools.fx.AppEnvironment;
 import org.jaria.tools.fx.FxRuntime;
+import org.jaria.tools.fx.Mouse;
 import org.jaria.tools.fx.ScriptedPrompts;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.testfx.api.FxRobot;
@@ -30,6 +31,13 @@ import org.testfx.util.WaitForAsyncUtils;
 class SimViewWindowTest {
 
   private final ScriptedPrompts prompts = new ScriptedPrompts();
+  private Mouse mouse;
+
+  @BeforeEach
+  void mouse(FxRobot robot) {
+    mouse = new Mouse(robot);
+  }
+
   private SimWorld world;
   private SimViewWindow window;
 
@@ -59,8 +67,8 @@ class SimViewWindowTest {
     assertFalse(window.controller().isRunning());
     long steps = world.getStepCount();
     long t0 = world.getClock().nanoTime();
-    robot.clickOn("#step");
-    robot.clickOn("#step");
+    mouse.click("#step");
+    mouse.click("#step");
     assertTrue(window.work().awaitIdle(10, TimeUnit.SECONDS));
     WaitForAsyncUtils.waitForFxEvents();
     assertEquals(steps + 2 * SimViewWindow.STEP_MILLIS / 10, world.getStepCount());
@@ -71,10 +79,10 @@ class SimViewWindowTest {
   @Test
   void clickToPlaceRobotWithHeading(FxRobot robot) throws Exception {
     window.ready().get(10, TimeUnit.SECONDS);
-    robot.clickOn("#tool-place");
-    robot.clickOn("#robot").clickOn("p3at-sh_2");
+    mouse.click("#tool-place");
+    mouse.click("#robot").click("p3at-sh_2");
     Point2D at = onWorld(15000, 3000);
-    robot.drag(at, MouseButton.PRIMARY).dropTo(onWorld(15000, 5000));
+    mouse.drag(at, onWorld(15000, 5000));
     WaitForAsyncUtils.waitForFxEvents();
     ArPose p = world.getRobot(1).getTruePose();
     double pixel = 1 / window.canvas().viewport().scale();
@@ -89,8 +97,8 @@ class SimViewWindowTest {
     window.ready().get(10, TimeUnit.SECONDS);
     SimObstacle box = world.injectBox(20000, 15000, 1000, 1000, 0);
     FxRuntime.run(window.canvas()::refresh, 10);
-    robot.clickOn("#tool-move");
-    robot.drag(onWorld(20500, 15000), MouseButton.PRIMARY).dropTo(onWorld(22500, 14000));
+    mouse.click("#tool-move");
+    mouse.drag(onWorld(20500, 15000), onWorld(22500, 14000));
     WaitForAsyncUtils.waitForFxEvents();
     List<SimObstacle> now = world.getObstacles();
     assertEquals(1, now.size());
@@ -106,10 +114,10 @@ class SimViewWindowTest {
   @Test
   void runAndPause(FxRobot robot) throws Exception {
     window.ready().get(10, TimeUnit.SECONDS);
-    robot.clickOn("#run");
+    mouse.click("#run");
     assertTrue(window.controller().isRunning());
     assertTrue(world.isRealTime());
-    robot.clickOn("#run");
+    mouse.click("#run");
     assertFalse(window.controller().isRunning());
     assertFalse(world.isRealTime());
   }
