@@ -32,13 +32,13 @@ import org.jaria.acts.color.ChannelLutFile;
 import org.jaria.acts.color.ColorPlane;
 import org.jaria.acts.color.PlaneLimits;
 import org.jaria.acts.image.ImageSource;
-import org.jaria.acts.image.RgbImage;
 import org.jaria.acts.image.TestScene;
 import org.jaria.geom.ArPose;
 import org.jaria.tools.fx.AppEnvironment;
 import org.jaria.tools.fx.FxRuntime;
 import org.jaria.tools.fx.Mouse;
 import org.jaria.tools.fx.ScriptedPrompts;
+import org.jaria.tools.fx.TestImages;
 import org.jaria.tools.simvision.TrainingScene;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -307,26 +307,6 @@ class EzTrainWindowTest {
     assertTrue(prompts.errors.get(1).contains("Load Image"), prompts.errors::toString);
   }
 
-  /** The bounding box {x0, y0, x1, y1} of the frame's clearly red pixels, or null. */
-  private static int[] redBox(RgbImage f) {
-    int[] b = {Integer.MAX_VALUE, Integer.MAX_VALUE, -1, -1};
-    for (int y = 0; y < f.height(); y++) {
-      for (int x = 0; x < f.width(); x++) {
-        int p = f.get(x, y);
-        int r = (p >> 16) & 0xFF;
-        int g = (p >> 8) & 0xFF;
-        int bl = p & 0xFF;
-        if (r > 90 && r > 2 * g && r > 2 * bl) {
-          b[0] = Math.min(b[0], x);
-          b[1] = Math.min(b[1], y);
-          b[2] = Math.max(b[2], x);
-          b[3] = Math.max(b[3], y);
-        }
-      }
-    }
-    return b[2] < 0 ? null : b;
-  }
-
   private int[] askActs(int channel) throws Exception {
     assertTrue(window.awaitServerFrames(20_000), "the server tracks frames");
     try (ArACTS_1_2 acts = new ArACTS_1_2()) {
@@ -358,7 +338,7 @@ class EzTrainWindowTest {
     }
 
     // The camera sees the red ball in front of the robot: train channel 1 on it.
-    int[] ball = redBox(window.session().frame());
+    int[] ball = TestImages.redBox(window.session().frame());
     assertTrue(ball != null, "the red ball is in view");
     int qx = (ball[2] - ball[0]) / 4;
     int qy = (ball[3] - ball[1]) / 4;
@@ -379,10 +359,10 @@ class EzTrainWindowTest {
     // Turn the robot away (as a program driving it would): the live video loses the ball.
     ArPose p = scene.robot().getTruePose();
     scene.robot().setTruePose(new ArPose(p.x(), p.y(), 180));
-    for (int i = 0; i < 200 && redBox(window.session().frame()) != null; i++) {
+    for (int i = 0; i < 200 && TestImages.redBox(window.session().frame()) != null; i++) {
       window.refresh().get(20, TimeUnit.SECONDS);
     }
-    assertEquals(null, redBox(window.session().frame()), "the ball left the picture");
+    assertEquals(null, TestImages.redBox(window.session().frame()), "the ball left the picture");
     assertEquals(0, askActs(1).length, "and the robot program no longer sees it");
 
     FxRuntime.run(window::close, 10);
