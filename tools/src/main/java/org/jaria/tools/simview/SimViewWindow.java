@@ -60,6 +60,9 @@ import org.jaria.tools.simvision.TrainingScene;
  */
 public final class SimViewWindow implements DesktopApp {
 
+  private static final long MIN_FRAME_NANOS = 1_000_000_000L / 30;
+  private static final long PAUSED_FRAME_NANOS = 250_000_000L;
+
   /** Simulated time one press of Step advances (one SIP cycle), ms. */
   public static final long STEP_MILLIS = 100;
 
@@ -83,12 +86,27 @@ public final class SimViewWindow implements DesktopApp {
   private final AppEnvironment env;
   private final List<EzTrainWindow> ezTrains = new ArrayList<>();
   private EzTrainOptions ezTrainOptions = EzTrainOptions.defaults();
+  // Draws the world at most 30 times a second while it runs, and never more often than every
+  // other frame's drawing time (a big map on a software renderer must not take the whole JavaFX
+  // thread); while paused, four times a second picks up changes made from outside (a program
+  // adding obstacles), and the view's own changes draw at once.
   private final AnimationTimer timer =
       new AnimationTimer() {
+        private long lastFrame;
+        private long lastCost;
+
         @Override
         public void handle(long now) {
+          long interval =
+              controller.isRunning() ? Math.max(MIN_FRAME_NANOS, 2 * lastCost) : PAUSED_FRAME_NANOS;
+          if (now - lastFrame < interval) {
+            return;
+          }
+          long t = System.nanoTime();
           canvas.refresh();
           updateClock();
+          lastCost = System.nanoTime() - t;
+          lastFrame = now;
         }
       };
 
