@@ -38,6 +38,12 @@ public final class MapRenderer {
   private static final int SELECTED_ARGB = 0xFF1E78FF;
 
   private final Font font = Font.font("System", 11);
+  private boolean scaleBar = true;
+
+  /** Whether to draw the scale bar in the bottom-left corner (on by default). */
+  public void setScaleBar(boolean on) {
+    scaleBar = on;
+  }
 
   /**
    * Draws everything.
@@ -67,7 +73,9 @@ public final class MapRenderer {
       boolean selected = selection != null && selection.contains(e.id());
       drawObject(gc, vp, e.object(), selected, opt.labels(), 0, 0);
     }
-    drawScaleBar(gc, vp);
+    if (scaleBar) {
+      drawScaleBar(gc, vp);
+    }
   }
 
   // Grid lines are 1-pixel filled rectangles, not stroked lines: axis-aligned fills are an order

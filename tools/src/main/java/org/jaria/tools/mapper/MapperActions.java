@@ -1,6 +1,8 @@
 package org.jaria.tools.mapper;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.BitSet;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
@@ -8,6 +10,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import javafx.application.Platform;
 import javafx.scene.control.CheckMenuItem;
 import javafx.scene.control.Menu;
 import javafx.scene.control.MenuBar;
@@ -18,10 +21,11 @@ import javafx.scene.control.ToggleButton;
 import javafx.scene.control.ToggleGroup;
 import javafx.scene.control.ToolBar;
 import javafx.scene.control.Tooltip;
-import javafx.scene.image.WritableImage;
 import javafx.scene.input.KeyCode;
 import javafx.scene.input.KeyCombination;
-import org.jaria.tools.fx.FxImages;
+import org.jaria.acts.image.ImageFiles;
+import org.jaria.acts.image.RgbImage;
+import org.jaria.tools.fx.BackgroundWork;
 
 /**
  * The map editor's menus and tool bar, and the actions behind them. Menu shortcuts use the
@@ -309,25 +313,43 @@ final class MapperActions {
         .ifPresent(this::export);
   }
 
-  /** Renders the whole map (at most 4000 pixels a side) and writes it as PNG off the UI thread. */
+  /**
+   * Renders the whole map (at most 4000 pixels a side) and writes it as PNG, on the worker thread:
+   * the tiles are drawn on the JavaFX thread one at a time, so the window keeps answering, and the
+   * status bar shows the progress.
+   */
   void export(Path file) {
-    WritableImage img = MapExport.render(w.document().content(), w.view().options(), 4000);
-    w.work()
-        .submit(
-            "Exporting " + file.getFileName(),
-            () -> {
-              FxImages.writePng(img, file);
-              return file;
-            },
-            f -> w.status("Exported " + f),
-            e ->
-                w.prompts()
-                    .error(
-                        "Cannot export",
-                        "Writing "
-                            + file
-                            + " failed: "
-                            + e.getMessage()
-                            + "\n\nChoose a writable folder."));
+    MapContent content = w.document().content();
+    RenderOptions options = w.view().options();
+    BackgroundWork work = w.work();
+    work.submit(
+        "Exporting " + file.getFileName(),
+        () -> {
+          RgbImage img =
+              MapExport.render(
+                  content,
+                  options,
+                  4000,
+                  f -> Platform.runLater(() -> work.progressProperty().set(f)));
+          Path abs = file.toAbsolutePath();
+          Path tmp = abs.resolveSibling("." + abs.getFileName() + ".saving");
+          try {
+            Files.write(tmp, ImageFiles.encode(img, "png"));
+            Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
+          } finally {
+            Files.deleteIfExists(tmp);
+          }
+          return file;
+        },
+        f -> w.status("Exported " + f),
+        e ->
+            w.prompts()
+                .error(
+                    "Cannot export",
+                    "Writing "
+                        + file
+                        + " failed: "
+                        + e.getMessage()
+                        + "\n\nChoose a writable folder."));
   }
 }
