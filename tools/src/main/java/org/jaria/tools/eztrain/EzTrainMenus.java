@@ -52,6 +52,16 @@ final class EzTrainMenus {
                 null,
                 item("Blob Stats", "menu-blob-stats", "Shortcut+B", w::blobStats),
                 item("Timing", "menu-timing", "Shortcut+T", w::timing)));
+    addHelp(w);
+  }
+
+  private void addHelp(EzTrainWindow w) {
+    bar.getMenus()
+        .add(
+            new Menu(
+                "_Help",
+                null,
+                item("Keyboard Shortcuts", "menu-keys", "F1", () -> w.showShortcuts(bar))));
   }
 
   MenuBar menuBar() {

@@ -1,5 +1,6 @@
 package org.jaria.tools.eztrain;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -10,6 +11,7 @@ import javafx.geometry.Insets;
 import javafx.geometry.Pos;
 import javafx.scene.Scene;
 import javafx.scene.control.Label;
+import javafx.scene.control.MenuBar;
 import javafx.scene.control.ProgressBar;
 import javafx.scene.control.ScrollPane;
 import javafx.scene.control.SplitPane;
@@ -39,6 +41,7 @@ import org.jaria.tools.fx.AppPrefs;
 import org.jaria.tools.fx.BackgroundWork;
 import org.jaria.tools.fx.DesktopApp;
 import org.jaria.tools.fx.Prompts;
+import org.jaria.tools.fx.ShortcutHelp;
 import org.jaria.tools.fx.WindowState;
 
 /**
@@ -592,6 +595,28 @@ public final class EzTrainWindow implements DesktopApp {
     }
     b.append("; ").append(server.timing());
     print(b.toString());
+  }
+
+  // ---- help
+
+  /** Help → Keyboard Shortcuts. */
+  void showShortcuts(MenuBar menus) {
+    List<String> intro = new ArrayList<>();
+    intro.add("Keys (not while typing in a field)");
+    for (ViewMode m : ViewMode.values()) {
+      intro.add(String.format(Locale.ROOT, "  %-18s %s view", m.key(), m.label()));
+    }
+    for (TrainTool t : TrainTool.values()) {
+      intro.add(String.format(Locale.ROOT, "  %-18s %s tool", t.key().getName(), t.label()));
+    }
+    intro.add("  Esc                cancel a drag, or quit");
+    intro.add("");
+    intro.add("Mouse on the image");
+    intro.add("  Left drag          Add/Remove: a rectangle; Draw/Erase: a brush stroke");
+    intro.add("  Left click         Pick: print the pixel's colour");
+    intro.add("  Right click        next view mode");
+    intro.add("  Middle click       grab a frame (single-frame video)");
+    prompts.info("Keyboard shortcuts", ShortcutHelp.text(intro, menus));
   }
 
   // ---- quitting

@@ -3,10 +3,12 @@ package org.jaria.tools.mapper;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
 import java.util.BitSet;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
@@ -26,6 +28,7 @@ import javafx.scene.input.KeyCombination;
 import org.jaria.acts.image.ImageFiles;
 import org.jaria.acts.image.RgbImage;
 import org.jaria.tools.fx.BackgroundWork;
+import org.jaria.tools.fx.ShortcutHelp;
 
 /**
  * The map editor's menus and tool bar, and the actions behind them. Menu shortcuts use the
@@ -60,6 +63,7 @@ final class MapperActions {
     tool("forbidden-area", new AreaTool(), KeyCode.A, false);
     tool("measure", new MeasureTool(), KeyCode.M, false);
     menuBar = new MenuBar(fileMenu(), editMenu(), viewMenu(), toolsMenu());
+    menuBar.getMenus().add(helpMenu());
     toolBar = new ToolBar();
     for (ToolEntry t : tools.values()) {
       ToggleButton b = new ToggleButton(t.tool().name());
@@ -234,6 +238,30 @@ final class MapperActions {
       m.getItems().add(i);
     }
     return m;
+  }
+
+  private Menu helpMenu() {
+    return new Menu(
+        "_Help", null, item("Keyboard Shortcuts", "menu-keys", "F1", this::showShortcuts));
+  }
+
+  /** Help → Keyboard Shortcuts. */
+  void showShortcuts() {
+    List<String> intro = new ArrayList<>();
+    intro.add("Tools (keys work while the map has the keyboard)");
+    for (ToolEntry t : tools.values()) {
+      intro.add(String.format(Locale.ROOT, "  %-18s %s", keyText(t), t.tool().name()));
+    }
+    intro.add("");
+    intro.add("Mouse and keys on the map");
+    intro.add("  Wheel              zoom about the pointer");
+    intro.add("  Right/middle drag  pan (also Space + drag, or the arrow keys)");
+    intro.add("  Shift              lines at 45° steps; headings and rotation in 15° steps");
+    intro.add("  Double-click       rename an object (Select tool)");
+    intro.add("  Del, Backspace     delete the selection");
+    intro.add("  Esc                cancel a drag, select nothing");
+    intro.add("  Ctrl+Shift+Z       redo");
+    w.prompts().info("Keyboard shortcuts", ShortcutHelp.text(intro, menuBar));
   }
 
   // ------------------------------------------------------------------ actions

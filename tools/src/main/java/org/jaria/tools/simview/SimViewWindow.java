@@ -45,6 +45,7 @@ import org.jaria.tools.fx.AppPrefs;
 import org.jaria.tools.fx.BackgroundWork;
 import org.jaria.tools.fx.DesktopApp;
 import org.jaria.tools.fx.Prompts;
+import org.jaria.tools.fx.ShortcutHelp;
 import org.jaria.tools.fx.WindowState;
 import org.jaria.tools.simvision.SimCameraSource;
 import org.jaria.tools.simvision.TrainingScene;
@@ -283,8 +284,28 @@ public final class SimViewWindow implements DesktopApp {
             "menu-eztrain",
             "Shortcut+T",
             this::openEzTrain);
-    return new MenuBar(
-        sim, new Menu("_View", null, fit, in, out, grid), new Menu("_Camera", null, train));
+    MenuBar bar =
+        new MenuBar(
+            sim, new Menu("_View", null, fit, in, out, grid), new Menu("_Camera", null, train));
+    bar.getMenus()
+        .add(
+            new Menu(
+                "_Help",
+                null,
+                item("Keyboard Shortcuts", "menu-keys", "F1", () -> showShortcuts(bar))));
+    return bar;
+  }
+
+  private void showShortcuts(MenuBar bar) {
+    List<String> intro =
+        List.of(
+            "Mouse on the world",
+            "  Wheel              zoom about the pointer",
+            "  Right/middle drag  pan (Move tool: also a left drag on empty space)",
+            "  Move tool          drag a robot, an obstacle or a coloured object",
+            "  Place robot tool   press where the robot stands, drag towards where it faces",
+            "  Add box tool       drag a rectangle");
+    prompts.info("Keyboard shortcuts", ShortcutHelp.text(intro, bar));
   }
 
   private static MenuItem item(String text, String id, String accel, Runnable action) {

@@ -427,6 +427,11 @@ class EzTrainWindowTest {
     assertEquals(4, window.trainingPane().magnification());
     assertEquals(640, window.trainingPane().getWidth(), 0.5);
 
+    robot.type(KeyCode.F1);
+    assertEquals(1, prompts.infos.size());
+    String keys = prompts.infos.get(0);
+    assertTrue(keys.contains("Thresh view") && keys.contains("Blob Stats"), keys);
+
     // Esc asks before quitting with unsaved channels; "Cancel" keeps the window.
     prompts.confirmAnswer = false;
     robot.type(KeyCode.ESCAPE);

@@ -415,6 +415,10 @@ class MapperWindowTest {
   void viewOptionsAndWindowPlaceAreRemembered(FxRobot robot) throws Exception {
     openAndWait(null);
     mouse.click("#map-view");
+    robot.type(KeyCode.F1);
+    assertEquals(1, prompts.infos.size());
+    String keys = prompts.infos.get(0);
+    assertTrue(keys.contains("Forbidden area") && keys.contains("Save As"), keys);
     robot.press(KeyCode.CONTROL).type(KeyCode.G).release(KeyCode.CONTROL);
     assertFalse(window.view().options().grid());
     FxRuntime.run(

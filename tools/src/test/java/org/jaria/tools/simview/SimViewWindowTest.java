@@ -145,6 +145,9 @@ class SimViewWindowTest {
     assertTrue(window.work().awaitIdle(10, TimeUnit.SECONDS));
     assertEquals(t0 + SimViewWindow.STEP_MILLIS * 1_000_000, world.getClock().nanoTime());
 
+    robot.type(KeyCode.F1);
+    assertTrue(prompts.infos.get(0).contains("Run / Pause"), prompts.infos::toString);
+
     mouse.click("#speed").click("10×");
     assertEquals(10, window.controller().speedup());
     mouse.click("#run");
