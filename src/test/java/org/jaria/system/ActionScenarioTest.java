@@ -161,20 +161,40 @@ class ActionScenarioTest {
   }
 
   @Test
-  void gotoReachesEveryPoseWithinItsCloseDistance() {
+  void gotoReachesEveryPoseWithinItsCloseDistanceAroundABoxOnTheWay() {
     try (SimWorld world = SimWorld.bundled("hall", SimOptions.builder().seed(9).build())) {
       SimRobot r = world.addRobot("p3dx-sh");
+      // A small box in the middle of the first leg: the avoid actions must take the robot round.
+      ArPose home = r.getTruePose();
+      double t = Math.toRadians(home.th());
+      world.injectBox(
+          home.x() + 750 * Math.cos(t), home.y() + 750 * Math.sin(t), 250, 250, home.th());
       try (SimulatedRobot sim = SimulatedRobot.connect(world, r)) {
         ArRobot robot = sim.robot();
         addWanderActions(robot);
         robot.remAction("Constant Velocity");
         ArActionGoto go = new ArActionGoto("goto", GotoExample.SQUARE.get(0), 100, 400, 150, 7);
         robot.addAction(go, 40);
+        int[] stalledSteps = {0};
+        double[] widestOnFirstLeg = {0};
+        world.addStepListener(
+            () -> {
+              stalledSteps[0] += r.isStalled() ? 1 : 0;
+              if (robot.getX() < 1200) {
+                widestOnFirstLeg[0] = Math.max(widestOnFirstLeg[0], Math.abs(robot.getY()));
+              }
+            });
         for (ArPose goal : GotoExample.SQUARE) {
           go.setGoal(goal);
+          if (goal.equals(GotoExample.SQUARE.get(1))) {
+            assertTrue(
+                widestOnFirstLeg[0] > 200,
+                "the first leg swerved round the box (" + widestOnFirstLeg[0] + " mm)");
+          }
           assertTrue(sim.runUntil(go::haveAchievedGoal, Duration.ofSeconds(60)), "reached " + goal);
           assertTrue(robot.getPose().findDistanceTo(goal) <= 100, "within 100 mm of " + goal);
         }
+        assertEquals(0, stalledSteps[0], "the robot went round the box without touching it");
       }
     }
   }

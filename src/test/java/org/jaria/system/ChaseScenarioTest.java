@@ -7,17 +7,20 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.time.Duration;
 import org.jaria.action.ArActionConstantVelocity;
+import org.jaria.action.ArActionKeydrive;
 import org.jaria.action.ArActionLimiterForwards;
 import org.jaria.acts.ArACTS_1_2;
 import org.jaria.acts.blob.TrackerSettings;
 import org.jaria.acts.server.ActsLink;
 import org.jaria.acts.server.VisionPipeline;
 import org.jaria.connection.PipeConnection;
+import org.jaria.input.ArKeyHandler;
 import org.jaria.robot.ArRobot;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
 import org.jaria.sim.client.SimulatedRobot;
+import org.jaria.tools.examples.ActsColorFollowingExample;
 import org.jaria.tools.examples.Chase;
 import org.jaria.tools.simvision.ChaseScene;
 import org.jaria.tools.simvision.SimCameraPtz;
@@ -38,6 +41,8 @@ class ChaseScenarioTest {
   private SimulatedRobot sim;
   private ArRobot robot;
   private Chase chase;
+  private final ArKeyHandler keys = new ArKeyHandler();
+  private ArActionKeydrive keydrive;
 
   @BeforeEach
   void setUp() throws IOException {
@@ -67,6 +72,12 @@ class ChaseScenarioTest {
     assertTrue(acts.openPort(robot, pipe.a()), acts.getOpenMessage());
     chase = new Chase(acts, new SimCameraPtz(scene.camera));
     robot.addAction(new ArActionLimiterForwards("speed limiter near", 350, 800, 200), 7);
+    // As in the thesis: keyboard driving at priority 4, off until 'a' is pressed.
+    keydrive = new ArActionKeydrive(keys);
+    keys.addKeyHandler('a', () -> ActsColorFollowingExample.toggleAction(keydrive));
+    keys.attachKeyHandler(robot, false, null);
+    robot.addAction(keydrive, 4);
+    keydrive.deactivate();
     robot.addAction(chase, 3);
     robot.addAction(new ArActionConstantVelocity("stop", 0), 1);
     robot.enableMotors();
@@ -74,6 +85,7 @@ class ChaseScenarioTest {
 
   @AfterEach
   void tearDown() {
+    keys.close();
     sim.close();
     world.close();
   }
@@ -114,5 +126,25 @@ class ChaseScenarioTest {
         "lost after a second without blobs");
     sim.runMillis(3000);
     assertEquals(0, robot.getVel(), 5, "the stop action has the robot");
+  }
+
+  @Test
+  void keyAHandsTheRobotToTheKeyboardAndBack() {
+    scene.removeBall();
+    sim.runMillis(3000);
+    assertEquals(0, robot.getVel(), 5, "no ball: the stop action holds the robot");
+    keys.feedKey('a');
+    sim.runMillis(100);
+    assertTrue(keydrive.isActive(), "'a' switched keyboard driving on");
+    for (int i = 0; i < 8; i++) {
+      keys.feedKey(ArKeyHandler.UP);
+      sim.runMillis(100);
+    }
+    sim.runMillis(2000);
+    assertTrue(robot.getVel() > 100, "the arrow keys drive: " + robot.getVel() + " mm/s");
+    keys.feedKey('a');
+    sim.runMillis(3000);
+    assertTrue(!keydrive.isActive(), "'a' switched it off again");
+    assertEquals(0, robot.getVel(), 5, "back to the chase, which has no ball: stopped");
   }
 }

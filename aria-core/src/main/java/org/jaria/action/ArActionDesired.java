@@ -61,9 +61,26 @@ public class ArActionDesired {
 
   private static final int FIRST_LIMIT = 3;
 
+  /** Names of the channels in {@link #all}, for log messages. */
+  private static final String[] CHANNEL_NAMES = {
+    "vel",
+    "rotVel",
+    "deltaHeading",
+    "maxVel",
+    "maxNegVel",
+    "transAccel",
+    "transDecel",
+    "maxRotVel",
+    "maxRotVelPos",
+    "maxRotVelNeg",
+    "rotAccel",
+    "rotDecel"
+  };
+
   private double heading;
   private double headingStrength;
   private boolean headingSet;
+  private boolean headingRejected;
 
   // ------------------------------------------------------------------ setters
 
@@ -97,6 +114,10 @@ public class ArActionDesired {
    * heading ({@link #accountForRobotHeading}).
    */
   public void setHeading(double degrees, double strength) {
+    if (!Double.isFinite(degrees) || Double.isNaN(strength)) {
+      headingRejected = true;
+      return;
+    }
     heading = degrees;
     headingStrength = strength;
     headingSet = true;
@@ -429,9 +450,19 @@ public class ArActionDesired {
 
   /**
    * Corrects values no robot can use (negative maximum speeds, a positive backwards limit...),
-   * logging which action asked for them.
+   * logging which action asked for them. Values that were NaN or infinite were already dropped when
+   * set (the channel has no strength); this logs which action set them.
    */
   public void sanityCheck(String actionName) {
+    for (int i = 0; i < all.length; i++) {
+      if (all[i].takeRejected()) {
+        log.warn("action '{}' set {} to NaN or infinity; ignored", actionName, CHANNEL_NAMES[i]);
+      }
+    }
+    if (headingRejected) {
+      headingRejected = false;
+      log.warn("action '{}' set heading to NaN or infinity; ignored", actionName);
+    }
     check(actionName, "maxVel", maxVel.checkLowerBound(0));
     check(actionName, "maxNegVel", maxNegVel.checkUpperBound(0));
     check(actionName, "transAccel", transAccel.checkLowerBound(1));

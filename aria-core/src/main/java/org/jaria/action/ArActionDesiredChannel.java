@@ -23,6 +23,7 @@ public final class ArActionDesiredChannel {
   private double desired;
   private double strength;
   private boolean allowOverride;
+  private boolean rejected;
   private double desiredTotal;
   private double strengthTotal;
 
@@ -41,6 +42,15 @@ public final class ArActionDesiredChannel {
    * @param allowOverride combine with others by taking the most restrictive value
    */
   void setDesired(double value, double desiredStrength, boolean allowOverride) {
+    if (!Double.isFinite(value) || Double.isNaN(desiredStrength)) {
+      // A NaN or infinite speed would reach the robot as garbage: drop the desire, and let
+      // sanityCheck name the action that asked for it.
+      this.desired = 0;
+      this.strength = NO_STRENGTH;
+      this.allowOverride = allowOverride;
+      this.rejected = true;
+      return;
+    }
     this.desired = value;
     this.strength = desiredStrength;
     this.allowOverride = allowOverride;
@@ -67,8 +77,16 @@ public final class ArActionDesiredChannel {
     return allowOverride;
   }
 
+  /** Whether the last value set was NaN or infinite (and so dropped); clears the flag. */
+  boolean takeRejected() {
+    boolean r = rejected;
+    rejected = false;
+    return r;
+  }
+
   /** Clears the desire. */
   void reset() {
+    rejected = false;
     desired = 0;
     strength = NO_STRENGTH;
     allowOverride = true;

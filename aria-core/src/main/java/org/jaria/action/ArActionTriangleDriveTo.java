@@ -83,9 +83,33 @@ public class ArActionTriangleDriveTo extends ArAction {
   private List<ArLineFinderSegment> lines = List.of();
   private LaserScan linesScan;
 
-  /** "triangleDriveTo" with ARIA's defaults and no laser yet ({@link #setLaserScanSource}). */
+  /**
+   * "triangleDriveTo" with ARIA's defaults; the laser is the robot's (the first range device that
+   * gives laser scans) unless one is set with {@link #setLaserScanSource}.
+   */
   public ArActionTriangleDriveTo() {
     this("triangleDriveTo", null);
+  }
+
+  /**
+   * ARIA's constructor: the laser is the robot's (the first of its range devices that gives laser
+   * scans, found when the action starts) unless one is set with {@link #setLaserScanSource}.
+   */
+  public ArActionTriangleDriveTo(
+      String name,
+      double finalDistFromVertex,
+      double approachDistFromVertex,
+      double speed,
+      double closeDist,
+      double acquireTurnSpeed) {
+    this(
+        name,
+        null,
+        finalDistFromVertex,
+        approachDistFromVertex,
+        speed,
+        closeDist,
+        acquireTurnSpeed);
   }
 
   /** ARIA's defaults (final 400 mm, approach 1000 mm, 200 mm/s, close 100 mm, 30 deg/s). */
@@ -273,11 +297,25 @@ public class ArActionTriangleDriveTo extends ArAction {
       vertexSeenLastNanos = r == null ? 0 : r.getClock().nanoTime();
       originalAngle = r == null ? Double.NaN : r.getTh();
       linesCounter = -1;
+      if (laser == null && r != null) {
+        laser = robotsLaser(r);
+      }
       state = laser != null ? State.STATE_ACQUIRE : State.STATE_FAILED;
       if (laser == null) {
-        log.warn("{}: no laser scan source; set one with setLaserScanSource", getName());
+        log.warn(
+            "{}: no laser: add one to the robot (addRangeDevice) or call setLaserScanSource",
+            getName());
       }
     }
+  }
+
+  private static LaserScanSource robotsLaser(ArRobot r) {
+    for (Object d : r.getRangeDeviceList()) {
+      if (d instanceof LaserScanSource l) {
+        return l;
+      }
+    }
+    return null;
   }
 
   @Override

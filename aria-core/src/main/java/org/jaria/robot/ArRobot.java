@@ -186,9 +186,17 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
     return params;
   }
 
-  /** Where user parameter files ({@code <subtype>.p}, {@code <name>.p}) are looked for. */
+  /**
+   * Where user parameter files ({@code <subtype>.p}, {@code <name>.p}) are looked for; by default
+   * {@code $JARIA_PARAMS}, else {@code ~/.jaria/params}. Null uses only the bundled files.
+   */
   public void setParamsDirectory(Path dir) {
     connection.setParamsDirectory(dir);
+  }
+
+  /** Where user parameter files are looked for (see {@link #setParamsDirectory}); may be null. */
+  public Path getParamsDirectory() {
+    return connection.paramsDirectory();
   }
 
   /**

@@ -31,6 +31,7 @@ public class ArRobotConnector {
   private String remoteHost;
   private int remotePort = ArTcpConnection.DEFAULT_PORT;
   private boolean parsed;
+  private String lastOpenFailure = "no connection could be opened";
 
   /** A connector for {@code robot} that takes its options from {@code parser}. */
   public ArRobotConnector(ArArgumentParser parser, ArRobot robot) {
@@ -106,6 +107,7 @@ public class ArRobotConnector {
     }
     ArDeviceConnection conn = chooseConnection();
     if (conn == null) {
+      robot.connection.openFailed(lastOpenFailure);
       return false;
     }
     robot.setDeviceConnection(conn);
@@ -141,12 +143,21 @@ public class ArRobotConnector {
     return robot == null ? org.jaria.clock.Clock.system() : robot.getClock();
   }
 
-  private static ArDeviceConnection open(ArDeviceConnection c) {
+  private ArDeviceConnection open(ArDeviceConnection c) {
     try {
       c.open();
       return c;
     } catch (IOException e) {
-      log.error("could not open {}: {}", c.getPortName(), e.getMessage());
+      lastOpenFailure =
+          "could not open "
+              + c.getPortName()
+              + ": "
+              + e.getMessage()
+              + (c instanceof ArSerialConnection
+                  ? " (is the robot plugged in and switched on? give its port with -rp, and check"
+                      + " that you may use it: add yourself to the 'dialout' group)"
+                  : " (is the robot or simulator running there? start one with ./jaria sim)");
+      log.error("{}", lastOpenFailure);
       return null;
     }
   }

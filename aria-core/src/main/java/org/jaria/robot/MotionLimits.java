@@ -155,6 +155,11 @@ final class MotionLimits {
     }
   }
 
+  /** An action's maximum rotational velocity as used: rounded and capped at the top value. */
+  synchronized double cappedRotVelMax(double wanted) {
+    return Math.round(Math.min(wanted, absMaxRotVel));
+  }
+
   /**
    * Sends an action's maximum rotational velocity (capped at the top value) even when the robot's
    * own maxima are not settable, as ARIA does; returns the value used.

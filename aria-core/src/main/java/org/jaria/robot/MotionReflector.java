@@ -53,6 +53,8 @@ final class MotionReflector {
   private boolean hasMoveCommand = true;
   private double vel2Divisor = 20;
   private final MotionLimits limits = new MotionLimits();
+  private final SentTimes sent = new SentTimes();
+  private final ActionReflection actions;
 
   private TransType transType = TransType.NONE;
   private double transVal;
@@ -66,18 +68,9 @@ final class MotionReflector {
   private int lastTransVal;
   private int lastTransVal2;
   private TransType lastTransType = TransType.NONE;
-  private long lastTransSent;
   private int lastRotVal;
   private RotType lastRotType = RotType.NONE;
-  private long lastRotSent;
-  private long lastPulseSent;
 
-  private int lastActionTransVal;
-  private boolean actionTransSet;
-  private int lastActionRotVal;
-  private boolean lastActionRotStopped;
-  private boolean lastActionRotHeading;
-  private boolean actionRotSet;
   private boolean transWasDirect;
   private boolean rotWasDirect;
   private boolean tryingToMove;
@@ -89,6 +82,7 @@ final class MotionReflector {
     this.clock = clock;
     this.sender = sender;
     this.status = status;
+    this.actions = new ActionReflection(sender, limits, sent);
   }
 
   // ---------------------------------------------------------------- configuration
@@ -127,14 +121,8 @@ final class MotionReflector {
     lastTransType = TransType.NONE;
     lastRotType = RotType.NONE;
     limits.forgetSent();
-    lastActionTransVal = 0;
-    lastActionRotVal = 0;
-    lastActionRotStopped = false;
-    lastActionRotHeading = false;
-    long now = clock.nanoTime();
-    lastTransSent = now;
-    lastRotSent = now;
-    lastPulseSent = now;
+    actions.reset();
+    sent.resetTo(clock.nanoTime());
   }
 
   /** The speed and acceleration limits (thread-safe on their own). */
@@ -248,13 +236,11 @@ final class MotionReflector {
     rotSetTime = now;
     lastTransVal = 0;
     lastTransType = TransType.VEL;
-    lastTransSent = now;
     lastRotVal = 0;
     lastRotType = RotType.VEL;
-    lastRotSent = now;
-    lastActionTransVal = 0;
-    lastActionRotStopped = true;
-    lastActionRotHeading = false;
+    sent.trans = now;
+    sent.rot = now;
+    actions.stopped();
   }
 
   synchronized void clearDirectMotion() {
@@ -322,39 +308,46 @@ final class MotionReflector {
         reflectDirectTrans(now, s);
         transWasDirect = true;
       } else {
-        reflectActionTrans(now, desired);
+        tryingToMove |= actions.reflectTrans(now, refreshNanos, desired, transWasDirect);
         transWasDirect = false;
       }
       if (hasPrecedence(rotType != RotType.NONE, rotSetTime, now)) {
         reflectDirectRot(now, s, encoderTransformTh);
         rotWasDirect = true;
       } else {
-        reflectActionRot(now, s, desired, encoderTransformTh);
+        tryingToMove |=
+            actions.reflectRot(
+                now,
+                refreshNanos,
+                desired,
+                s.pose().th(),
+                th -> robotHeading(th, s, encoderTransformTh),
+                rotWasDirect);
         rotWasDirect = false;
       }
     }
-    if (now - lastRotSent > refreshNanos
-        && now - lastTransSent > refreshNanos
-        && now - lastPulseSent > refreshNanos) {
+    if (now - sent.rot > refreshNanos
+        && now - sent.trans > refreshNanos
+        && now - sent.pulse > refreshNanos) {
       sender.com(ArCommands.PULSE.getNumber());
-      lastPulseSent = now;
+      sent.pulse = now;
     }
   }
 
   private void reflectDirectTrans(long now, RobotStatus s) {
-    actionTransSet = false;
+    actions.directTrans();
     double transVelMax = limits.getTransVelMax();
     limits.sendTrans(sender, transVelMax, limits.getTransAccel(), limits.getTransDecel());
     int val = clampShort(transVal);
     int val2 = 0;
-    boolean refresh = now - lastTransSent >= refreshNanos;
+    boolean refresh = now - sent.trans >= refreshNanos;
     switch (transType) {
       case VEL -> {
         int max = clampShort(transVelMax);
         val = Math.max(-max, Math.min(max, val));
         if (lastTransVal != val || lastTransType != transType || refresh) {
           sender.comInt(ArCommands.VEL.getNumber(), val);
-          lastTransSent = now;
+          sent.trans = now;
         }
         tryingToMove |= Math.abs(val) > 0;
       }
@@ -363,7 +356,7 @@ final class MotionReflector {
         val2 = vel2Byte(transVal2);
         if (lastTransVal != val || lastTransVal2 != val2 || lastTransType != transType || refresh) {
           sender.com2Bytes(ArCommands.VEL2.getNumber(), val, val2);
-          lastTransSent = now;
+          sent.trans = now;
         }
         tryingToMove |= val != 0 || val2 != 0;
       }
@@ -387,144 +380,47 @@ final class MotionReflector {
         sender.comInt(ArCommands.VEL.getNumber(), 0);
         transType = TransType.VEL;
         transVal = 0;
-        lastTransSent = now;
+        sent.trans = now;
         return;
       }
       tryingToMove = true;
       double v = Math.min(Math.sqrt(toGo * 200 * 2), limits.getTransVelMax());
       sender.comInt(ArCommands.VEL.getNumber(), clampShort(transVal < 0 ? -v : v));
-      lastTransSent = now;
+      sent.trans = now;
     } else if (transType == TransType.DIST_NEW) {
       sender.comInt(ArCommands.MOVE.getNumber(), val);
-      lastTransSent = now;
+      sent.trans = now;
       transType = TransType.DIST;
       tryingToMove = true;
     } else if (refresh) {
       sender.com(ArCommands.PULSE.getNumber());
-      lastPulseSent = now;
-      lastTransSent = now;
+      sent.pulse = now;
+      sent.trans = now;
     }
-  }
-
-  private void reflectActionTrans(long now, ArActionDesired d) {
-    double accel =
-        d.getTransAccelStrength() >= ArActionDesired.MIN_STRENGTH
-            ? Math.round(d.getTransAccel())
-            : limits.getTransAccel();
-    double decel =
-        d.getTransDecelStrength() >= ArActionDesired.MIN_STRENGTH
-            ? Math.round(d.getTransDecel())
-            : limits.getTransDecel();
-    double transVelMax = limits.getTransVelMax();
-    limits.sendTrans(sender, transVelMax, accel, decel);
-    double maxVel =
-        d.getMaxVelStrength() >= ArActionDesired.MIN_STRENGTH
-            ? Math.min(d.getMaxVel(), transVelMax)
-            : transVelMax;
-    double maxNeg =
-        d.getMaxNegVelStrength() >= ArActionDesired.MIN_STRENGTH
-            ? Math.max(-Math.abs(d.getMaxNegVel()), -transVelMax)
-            : -transVelMax;
-    int val;
-    if (d.getVelStrength() >= ArActionDesired.MIN_STRENGTH) {
-      val = clampShort(d.getVel());
-      actionTransSet = true;
-    } else {
-      val = lastActionTransVal;
-    }
-    tryingToMove |= Math.abs(val) > 0;
-    val = Math.max(clampShort(maxNeg), Math.min(clampShort(maxVel), val));
-    if (actionTransSet
-        && (now - lastTransSent >= refreshNanos || val != lastActionTransVal || transWasDirect)) {
-      sender.comInt(ArCommands.VEL.getNumber(), val);
-      lastTransSent = now;
-    }
-    lastActionTransVal = val;
   }
 
   private void reflectDirectRot(long now, RobotStatus s, double encoderTransformTh) {
-    actionRotSet = false;
+    actions.directRot();
     limits.sendRot(sender, limits.getRotVelMax(), limits.getRotAccel(), limits.getRotDecel());
     int val = clampShort(rotVal);
-    boolean refresh = now - lastRotSent >= refreshNanos;
+    boolean refresh = now - sent.rot >= refreshNanos;
     if (rotType == RotType.HEADING) {
       val = robotHeading(rotVal, s, encoderTransformTh);
       double error = Math.abs(ArMath.subAngle(rotVal, s.pose().th()));
       if (lastRotVal != val || lastRotType != rotType || error > 1 || refresh) {
         sender.comInt(ArCommands.HEAD.getNumber(), val);
-        lastRotSent = now;
+        sent.rot = now;
       }
       tryingToMove |= error > 1;
     } else if (rotType == RotType.VEL) {
       if (lastRotVal != val || lastRotType != rotType || refresh) {
         sender.comInt(ArCommands.RVEL.getNumber(), val);
-        lastRotSent = now;
+        sent.rot = now;
         tryingToMove |= val != 0;
       }
     }
     lastRotVal = val;
     lastRotType = rotType;
-  }
-
-  private void reflectActionRot(
-      long now, RobotStatus s, ArActionDesired d, double encoderTransformTh) {
-    double accel =
-        d.getRotAccelStrength() >= ArActionDesired.MIN_STRENGTH
-            ? Math.round(d.getRotAccel())
-            : limits.getRotAccel();
-    double decel =
-        d.getRotDecelStrength() >= ArActionDesired.MIN_STRENGTH
-            ? Math.round(d.getRotDecel())
-            : limits.getRotDecel();
-    double velMax = limits.getRotVelMax();
-    if (d.getMaxRotVelStrength() >= ArActionDesired.MIN_STRENGTH) {
-      velMax = limits.sendActionRotVelMax(sender, d.getMaxRotVel());
-    }
-    limits.sendRot(sender, velMax, accel, decel);
-    boolean stopped;
-    boolean heading;
-    int val;
-    if (d.getDeltaHeadingStrength() >= ArActionDesired.MIN_STRENGTH) {
-      if (Math.round(d.getDeltaHeading()) == 0) {
-        stopped = true;
-        heading = false;
-        val = 0;
-      } else {
-        val = robotHeading(s.pose().th() + d.getDeltaHeading(), s, encoderTransformTh);
-        stopped = false;
-        heading = true;
-        tryingToMove = true;
-      }
-      actionRotSet = true;
-    } else if (d.getRotVelStrength() >= ArActionDesired.MIN_STRENGTH) {
-      val = clampShort(d.getRotVel());
-      stopped = val == 0;
-      heading = false;
-      tryingToMove |= val != 0;
-      actionRotSet = true;
-    } else {
-      stopped = lastActionRotStopped;
-      val = lastActionRotVal;
-      heading = lastActionRotHeading;
-    }
-    if (actionRotSet
-        && (now - lastRotSent > refreshNanos
-            || rotWasDirect
-            || stopped != lastActionRotStopped
-            || val != lastActionRotVal
-            || heading != lastActionRotHeading)) {
-      if (stopped) {
-        sender.comInt(ArCommands.RVEL.getNumber(), 0);
-      } else if (heading) {
-        sender.comInt(ArCommands.HEAD.getNumber(), val);
-      } else {
-        sender.comInt(ArCommands.RVEL.getNumber(), val);
-      }
-      lastRotSent = now;
-    }
-    lastActionRotVal = val;
-    lastActionRotStopped = stopped;
-    lastActionRotHeading = heading;
   }
 
   /**

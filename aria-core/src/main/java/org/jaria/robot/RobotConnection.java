@@ -33,7 +33,7 @@ final class RobotConnection implements Handshake.Host {
   private volatile String robotType = "";
   private volatile String robotSubType = "";
   private volatile ArConfigPacket config;
-  private volatile Path paramsDir;
+  private volatile Path paramsDir = defaultParamsDirectory();
   private volatile long timeoutMs = 8000;
 
   RobotConnection(ArRobot robot) {
@@ -77,6 +77,23 @@ final class RobotConnection implements Handshake.Host {
     return config;
   }
 
+  /**
+   * Where a robot's own parameter files are looked for unless the program says otherwise: the
+   * folder named by the {@code JARIA_PARAMS} environment variable, else {@code ~/.jaria/params}
+   * (ARIA's {@code /usr/local/Aria/params} in a user's home).
+   */
+  static Path defaultParamsDirectory() {
+    String env = System.getenv("JARIA_PARAMS");
+    if (env != null && !env.isBlank()) {
+      return Path.of(env);
+    }
+    return Path.of(System.getProperty("user.home", "."), ".jaria", "params");
+  }
+
+  Path paramsDirectory() {
+    return paramsDir;
+  }
+
   void setParamsDirectory(Path dir) {
     paramsDir = dir;
   }
@@ -90,6 +107,13 @@ final class RobotConnection implements Handshake.Host {
   }
 
   // ---------------------------------------------------------------- connecting
+
+  /** Records that no connection could even be opened (the connector's case) and says so. */
+  void openFailed(String reason) {
+    failure = reason;
+    log.warn("cannot connect: {}", reason);
+    robot.failedConnectCBs.invokeAll();
+  }
 
   boolean asyncConnect() {
     if (conn == null) {

@@ -99,7 +99,7 @@ final class SipProcessor {
     } else {
       qx = wrap15(x - lastX);
       qy = wrap15(y - lastY);
-      qth = th - lastTh;
+      qth = wrapHeading(th - lastTh);
     }
     lastX = x;
     lastY = y;
@@ -187,6 +187,15 @@ final class SipProcessor {
   }
 
   /** A 15-bit counter difference, corrected for wrap-around. */
+  /**
+   * A heading change in angle units (4096 per turn), folded into -2048..2047: the SIP reports
+   * -180..+180 degrees, so crossing 180 would otherwise look like a whole turn the other way.
+   */
+  static int wrapHeading(int delta) {
+    int d = Math.floorMod(delta + 2048, 4096) - 2048;
+    return d;
+  }
+
   static int wrap15(int delta) {
     if (delta > 0x1000) {
       return delta - 0x8000;

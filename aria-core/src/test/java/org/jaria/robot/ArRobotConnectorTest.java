@@ -96,6 +96,50 @@ class ArRobotConnectorTest {
   }
 
   @Test
+  void withoutOptionsASimulatorOnLocalhostIsTriedFirst() throws Exception {
+    AtomicBoolean stop = new AtomicBoolean();
+    try (ServerSocket server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+      Thread accept =
+          new Thread(
+              () -> {
+                try (Socket s = server.accept()) {
+                  serve(ArTcpConnection.wrap(s, Clock.system()), stop).join();
+                } catch (IOException | InterruptedException e) {
+                  Thread.currentThread().interrupt();
+                }
+              },
+              "accept-sim");
+      accept.start();
+      ArRobot robot = new ArRobot("sim first");
+      ArRobotConnector connector =
+          new ArRobotConnector(
+              new ArArgumentParser(new String[] {"-rrtp", String.valueOf(server.getLocalPort())}),
+              robot);
+      assertTrue(connector.connectRobot(), robot.getConnectFailure());
+      assertTrue(robot.getDeviceConnection() instanceof ArTcpConnection);
+      assertTrue(robot.getDeviceConnection().getPortName().startsWith("tcp localhost"));
+      robot.close();
+      stop.set(true);
+      accept.join(10_000);
+    }
+  }
+
+  @Test
+  void aPortThatWillNotOpenIsReportedWithWhatToDo() throws Exception {
+    ArRobot robot = new ArRobot("nowhere");
+    AtomicBoolean failedCb = new AtomicBoolean();
+    robot.addFailedConnectCB(() -> failedCb.set(true));
+    String port = dir.resolve("no-such-tty").toString();
+    ArRobotConnector connector =
+        new ArRobotConnector(new ArArgumentParser(new String[] {"-rp", port}), robot);
+    assertFalse(connector.connectRobot());
+    assertTrue(failedCb.get(), "the failed-connect callbacks ran");
+    String why = robot.getConnectFailure();
+    assertTrue(why.contains("could not open serial " + port), why);
+    assertTrue(why.contains("-rp"), "says how to pick another port: " + why);
+  }
+
+  @Test
   void withoutASimulatorTheSerialPortIsUsed() throws Exception {
     AtomicBoolean stop = new AtomicBoolean();
     try (SocatPty pty = new SocatPty(dir)) {

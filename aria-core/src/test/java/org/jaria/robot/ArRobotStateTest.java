@@ -50,6 +50,18 @@ class ArRobotStateTest {
   }
 
   @Test
+  void turningThroughOneEightyCountsOnlyTheSmallTurn() {
+    rig.sip.setPos(0, 0, 2040); // just under +180 degrees
+    rig.run(100);
+    double odo = rig.robot.getOdometerDegrees();
+    rig.sip.setPos(0, 0, -2040); // just past it, on the other side
+    rig.run(100);
+    assertEquals(180, Math.abs(rig.robot.getTh()), 1.0);
+    double turned = rig.robot.getOdometerDegrees() - odo;
+    assertEquals(16 * 360.0 / 4096, turned, 0.05, "16 units, not a whole turn back");
+  }
+
+  @Test
   void drivingForwardAtAHeadingMovesAlongIt() {
     rig.sip.setPos(0, 0, 1024);
     rig.run(100);

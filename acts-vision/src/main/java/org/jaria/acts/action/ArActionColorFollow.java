@@ -31,7 +31,7 @@ public class ArActionColorFollow extends ArAction {
   }
 
   /** Where the blob was last, relative to the image centre. */
-  public enum LastLocation {
+  public enum LocationState {
     LEFT,
     CENTER,
     RIGHT
@@ -50,7 +50,7 @@ public class ArActionColorFollow extends ArAction {
   private volatile boolean killMovement = true;
   private volatile TargetState state = TargetState.NO_TARGET;
   private volatile MoveState move = MoveState.STOPPED;
-  private LastLocation location = LastLocation.CENTER;
+  private LocationState location = LocationState.CENTER;
   private long lastSeenNanos = Long.MIN_VALUE / 2;
   private final long maxTimeNanos = TimeUnit.MILLISECONDS.toNanos(2000);
 
@@ -153,16 +153,16 @@ public class ArActionColorFollow extends ArAction {
    */
   private void steer(double xRel) {
     if (Math.abs(xRel) < .10) {
-      location = LastLocation.CENTER;
+      location = LocationState.CENTER;
       desired.setDeltaHeading(0);
     } else if (Math.abs(xRel * 10) <= 10) {
-      location = xRel < 0 ? LastLocation.RIGHT : LastLocation.LEFT;
+      location = xRel < 0 ? LocationState.RIGHT : LocationState.LEFT;
       desired.setDeltaHeading(-xRel * 10);
     } else if (xRel < 0) {
-      location = LastLocation.RIGHT;
+      location = LocationState.RIGHT;
       desired.setDeltaHeading(10);
     } else {
-      location = LastLocation.LEFT;
+      location = LocationState.LEFT;
       desired.setDeltaHeading(-10);
     }
   }

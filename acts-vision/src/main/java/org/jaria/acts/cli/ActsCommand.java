@@ -108,9 +108,12 @@ public final class ActsCommand implements Callable<Integer> {
 
   @Option(
       names = "-t",
+      arity = "0..1",
+      fallbackValue = "",
       paramLabel = "CONFIG",
-      description = "Load this runtime configuration and run without graphics (always the case).")
-  Path headlessConfig;
+      description =
+          "Run without graphics (always the case), loading CONFIG if given, as ACTS's -t does.")
+  String headlessConfig;
 
   @Option(names = "-V", paramLabel = "PAL|NTSC", description = "Video standard (ignored).")
   String videoStandard;
@@ -200,7 +203,8 @@ public final class ActsCommand implements Callable<Integer> {
       err.println("acts: " + e.getMessage());
       return 1;
     }
-    Path cfgPath = headlessConfig != null ? headlessConfig : config;
+    Path cfgPath =
+        headlessConfig != null && !headlessConfig.isEmpty() ? Path.of(headlessConfig) : config;
     if (cfgPath == null && !prefs.configFile().isEmpty()) {
       cfgPath = Path.of(prefs.configFile());
     }

@@ -4,15 +4,29 @@ import java.io.IOException;
 
 /**
  * Loads OpenCV's native library once per process (through {@code nu.pattern.OpenCV.loadLocally()},
- * which unpacks the library for this operating system from the openpnp jar). Thread-safe.
+ * which unpacks the library for this operating system from the openpnp jar). Thread-safe: the JVM
+ * initialises the holder class once, so the library is loaded (or fails) exactly once, on first
+ * use.
  */
 public final class OpenCvLoader {
 
-  private static final Object LOCK = new Object();
-  private static boolean loaded;
-  private static String failure;
-
   private OpenCvLoader() {}
+
+  /** Holds the outcome of the one load attempt: null if it worked, else why not. */
+  private static final class Outcome {
+    static final String FAILURE = tryLoad();
+
+    private static String tryLoad() {
+      try {
+        nu.pattern.OpenCV.loadLocally();
+        return null;
+      } catch (RuntimeException | LinkageError e) {
+        return "OpenCV's native library could not be loaded on this machine ("
+            + e
+            + "); cameras need it, still images (-f) do not";
+      }
+    }
+  }
 
   /**
    * Makes sure OpenCV is loaded.
@@ -21,23 +35,8 @@ public final class OpenCvLoader {
    *     why); every later call fails the same way without retrying
    */
   public static void load() throws IOException {
-    synchronized (LOCK) {
-      if (loaded) {
-        return;
-      }
-      if (failure == null) {
-        try {
-          nu.pattern.OpenCV.loadLocally();
-          loaded = true;
-          return;
-        } catch (RuntimeException | LinkageError e) {
-          failure =
-              "OpenCV's native library could not be loaded on this machine ("
-                  + e
-                  + "); cameras need it, still images (-f) do not";
-        }
-      }
-      throw new IOException(failure);
+    if (Outcome.FAILURE != null) {
+      throw new IOException(Outcome.FAILURE);
     }
   }
 }

@@ -1,6 +1,8 @@
 package org.jaria.acts.ptz;
 
 import java.util.function.Consumer;
+import org.jaria.protocol.ArCommands;
+import org.jaria.robot.ArRobot;
 
 /**
  * The Canon VC-C4 / VC-C50i pan-tilt-zoom camera (ARIA's {@code ArVCC4}), the camera of the
@@ -9,10 +11,11 @@ import java.util.function.Consumer;
  * serial port (ARIA's TTY2 command); in tests the sink records it.
  *
  * <p>This class talks one way, like ARIA's unidirectional mode: the getters report the last
- * position requested, and the sink is responsible for pacing (the camera ignores a command that
- * arrives while it is still busy with the previous one; ARIA waits 300 ms between frames when it
- * gets no answers). Limits, from ARIA: pan ±98°, tilt −30°..+88°, zoom 0..1960, pan speed 1..90°/s,
- * tilt speed 1..69°/s.
+ * position requested. The camera ignores a command that arrives while it is still busy with the
+ * previous one, so frames must be paced: {@link #ArVCC4(ArRobot)} (ARIA's form) sends them through
+ * the robot's AUX port at most one per 300 ms, the newest position replacing a queued one ({@link
+ * PacedFrameSink}); with a plain sink the caller paces. Limits, from ARIA: pan ±98°, tilt
+ * −30°..+88°, zoom 0..1960, pan speed 1..90°/s, tilt speed 1..69°/s.
  *
  * <p>Thread-safe.
  */
@@ -38,6 +41,24 @@ public class ArVCC4 implements ArPTZ {
   private double panSlew = MAX_PAN_SLEW;
   private double tiltSlew = MAX_TILT_SLEW;
   private boolean power;
+
+  /**
+   * A camera on {@code robot}'s AUX serial port (ARIA's {@code ArVCC4(&robot)}): frames go out with
+   * the TTY2 command, paced at one per 300 ms by a task on the robot's cycle.
+   */
+  public ArVCC4(ArRobot robot) {
+    this(pacedOn(robot), false);
+  }
+
+  private static Consumer<byte[]> pacedOn(ArRobot robot) {
+    PacedFrameSink paced =
+        new PacedFrameSink(
+            frame -> robot.comDataN(ArCommands.TTY2, frame),
+            robot.getClock(),
+            PacedFrameSink.DEFAULT_INTERVAL_MS);
+    robot.addUserTask("vcc4 pacing", 60, paced::flush);
+    return paced;
+  }
 
   /** A camera whose command frames go to {@code sink}. */
   public ArVCC4(Consumer<byte[]> sink) {

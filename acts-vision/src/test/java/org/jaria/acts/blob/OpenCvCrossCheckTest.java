@@ -93,6 +93,51 @@ class OpenCvCrossCheckTest {
     compare(scene, tables, 1, binary);
   }
 
+  @Test
+  void aRealPhotographAgreesAtFullAndWorkingSize() throws IOException {
+    RgbImage photo;
+    try (java.io.InputStream in =
+        OpenCvCrossCheckTest.class.getResourceAsStream("/org/jaria/acts/photos/fruits.jpg")) {
+      photo = org.jaria.acts.image.ImageFiles.read(in, "fruits.jpg");
+    }
+    assertEquals(512, photo.width());
+    // Red apples; the orange; the yellow bananas; and a loose box that takes in half the picture.
+    int[][] boxes = {
+      {150, 255, 0, 90, 0, 90},
+      {200, 255, 90, 180, 0, 80},
+      {180, 255, 170, 255, 0, 120},
+      {0, 160, 0, 255, 0, 255}
+    };
+    ChannelBank red = new ChannelBank();
+    Pictures.box(red, 1, 150, 255, 0, 90, 0, 90);
+    ChannelComponents apples = new ChannelComponents();
+    new BlobTracker()
+        .components(
+            photo.pixels(),
+            photo.width(),
+            photo.height(),
+            red.tables(),
+            1,
+            apples,
+            new int[photo.pixels().length]);
+    assertTrue(apples.count() > 0, "the photo has red regions to compare");
+    for (int[] box : boxes) {
+      compareBox(photo, box);
+      compareBox(photo.scaled(160, 120), box);
+    }
+    // The same with a channel trained by hand on an apple, as EZ-Train would.
+    ChannelBank bank = new ChannelBank();
+    new Trainer(bank).addRect(photo, 60, 330, 120, 400);
+    LookupTables tables = bank.tables();
+    byte[] mask = new byte[photo.pixels().length];
+    for (int i = 0; i < mask.length; i++) {
+      mask[i] = (byte) ((tables.classify(photo.pixels()[i]) & 1) != 0 ? 255 : 0);
+    }
+    Mat binary = new Mat(photo.height(), photo.width(), CvType.CV_8UC1);
+    binary.put(0, 0, mask);
+    compare(photo, tables, 1, binary);
+  }
+
   private static void compareBox(RgbImage img, int[] box) {
     ChannelBank bank = new ChannelBank();
     Pictures.box(bank, 1, box[0], box[1], box[2], box[3], box[4], box[5]);

@@ -98,7 +98,7 @@ class ActsCommandTest {
         CompletableFuture.supplyAsync(
             () ->
                 cl.execute(
-                    "-c",
+                    "-t", // ACTS's headless start with a configuration
                     dir.resolve("actsconfig").toString(),
                     "-f",
                     image.toString(),
@@ -152,12 +152,14 @@ class ActsCommandTest {
                     "--bind",
                     "127.0.0.1",
                     "--allow-quit",
+                    "-t", // alone: headless, no configuration
                     "-i",
                     "-R",
                     "100"));
     assertTrue(cmd.awaitStarted(30, TimeUnit.SECONDS));
     assertNotNull(cmd.server(), err.toString());
     assertTrue(out.toString().contains("80x60"), out.toString());
+    assertTrue(err.toString().contains("-t: this server never shows graphics"), err.toString());
     try (ArACTS_1_2 acts = new ArACTS_1_2()) {
       assertTrue(acts.openPort("127.0.0.1", cmd.server().getPort()));
       acts.requestQuit();

@@ -115,7 +115,9 @@ class ArVCC4Test {
 
   @Test
   void invalidArgumentsAreRejected() {
-    assertThrows(IllegalArgumentException.class, () -> new ArVCC4(null));
+    assertThrows(
+        IllegalArgumentException.class,
+        () -> new ArVCC4((java.util.function.Consumer<byte[]>) null));
     assertThrows(IllegalArgumentException.class, () -> VCC4Packets.ledControl(5));
     assertThrows(IllegalArgumentException.class, () -> VCC4Packets.digitalZoom(4));
     assertThrows(IllegalArgumentException.class, () -> VCC4Packets.zoom(-1));

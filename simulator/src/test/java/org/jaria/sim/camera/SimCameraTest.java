@@ -74,6 +74,43 @@ class SimCameraTest {
     }
   }
 
+  /** Mean row of red pixels, or NaN. */
+  private static double redRow(int[] img, int w, int h) {
+    long sum = 0;
+    int n = 0;
+    for (int i = 0; i < w * h; i++) {
+      if (reddish(img[i])) {
+        sum += i / w;
+        n++;
+      }
+    }
+    return n == 0 ? Double.NaN : (double) sum / n;
+  }
+
+  @Test
+  void tiltingUpMovesTheBallDownInTheImage() {
+    try (SimWorld world = room()) {
+      SimRobot robot = world.addRobot("p3dx-sh");
+      world
+          .coloredObjects()
+          .add(ColoredObject.cylinder("ball", 2000, 0, 250, 250, 0xD02020), false);
+      SimCamera cam = SimCamera.onTop(world, robot);
+      int w = cam.getWidth();
+      int h = cam.getHeight();
+      int[] img = new int[w * h];
+      cam.setPanTilt(0, -15);
+      cam.render(img);
+      double low = redRow(img, w, h);
+      cam.setPanTilt(0, -5);
+      cam.render(img);
+      double high = redRow(img, w, h);
+      assertTrue(!Double.isNaN(low) && !Double.isNaN(high), "the ball is seen at both tilts");
+      assertTrue(
+          high > low + 5, "tilting up by 10 degrees moved the ball down: " + low + " -> " + high);
+      assertEquals(-5, cam.getTilt(), 1e-9);
+    }
+  }
+
   @Test
   void wallsHideWhatIsBehindThem() {
     try (SimWorld world = room()) {

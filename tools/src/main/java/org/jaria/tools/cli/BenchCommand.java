@@ -17,6 +17,7 @@ import picocli.CommandLine.Spec;
       BenchCommand.Sim.class,
       BenchCommand.Vision.class,
       BenchCommand.Arnl.class,
+      BenchCommand.Actions.class,
       BenchCommand.Mapper.class
     })
 final class BenchCommand implements Runnable {
@@ -95,6 +96,24 @@ final class BenchCommand implements Runnable {
     @Override
     public Integer call() {
       spec.commandLine().getOut().println(org.jaria.arnl.bench.ArnlBenchmark.run(quick));
+      return 0;
+    }
+  }
+
+  /** {@code jaria bench actions}. */
+  @Command(
+      name = "actions",
+      description = "Resolver and whole-cycle time with 20 active actions on a simulated P3-DX.")
+  static final class Actions implements Callable<Integer> {
+
+    @Spec CommandSpec spec;
+
+    @Option(names = "--quick", description = "Fewer samples (less precise).")
+    boolean quick;
+
+    @Override
+    public Integer call() {
+      spec.commandLine().getOut().println(org.jaria.tools.bench.ActionsBenchmark.run(quick));
       return 0;
     }
   }

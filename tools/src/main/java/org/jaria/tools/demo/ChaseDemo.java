@@ -3,12 +3,12 @@ package org.jaria.tools.demo;
 import java.io.PrintWriter;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import java.util.concurrent.TimeUnit;
 import org.jaria.acts.blob.TrackerSettings;
 import org.jaria.acts.server.ActsServer;
 import org.jaria.acts.server.ServerSettings;
 import org.jaria.acts.server.VisionPipeline;
 import org.jaria.clock.Clock;
+import org.jaria.input.ArKeyHandler;
 import org.jaria.robot.ArRobot;
 import org.jaria.tools.examples.ActsColorFollowingExample;
 import org.jaria.tools.simvision.ChaseScene;
@@ -36,6 +36,11 @@ final class ChaseDemo extends DemoOptions implements Callable<Integer> {
       defaultValue = "150")
   double ballSpeed = 150;
 
+  @Option(
+      names = "--keys",
+      description = "Read keys from this terminal: 'a' toggles keyboard driving, arrows drive.")
+  boolean keys;
+
   ChaseDemo() {
     map = "hall";
   }
@@ -60,8 +65,10 @@ final class ChaseDemo extends DemoOptions implements Callable<Integer> {
           new VisionPipeline(
               new SimCameraSource(scene.camera), scene.bank, TrackerSettings.DEFAULT);
       try (ActsServer acts =
-          new ActsServer(
-              pipeline, ServerSettings.DEFAULT.withAddress("127.0.0.1", 0), Clock.system())) {
+              new ActsServer(
+                  pipeline, ServerSettings.DEFAULT.withAddress("127.0.0.1", 0), Clock.system());
+          DemoTicker ticker = new DemoTicker("demo-status", seconds);
+          ArKeyHandler keyHandler = keys ? ArKeyHandler.forTerminal() : new ArKeyHandler()) {
         acts.start();
         out.printf(
             Locale.ROOT,
@@ -78,39 +85,26 @@ final class ChaseDemo extends DemoOptions implements Callable<Integer> {
           String.valueOf(acts.getPort())
         };
         return ActsColorFollowingExample.run(
-            args, new SimCameraPtz(scene.camera), robot -> watch(robot, scene, out));
+            args,
+            new SimCameraPtz(scene.camera),
+            keyHandler,
+            robot -> watch(ticker, robot, scene, out));
       }
     }
   }
 
-  private void watch(ArRobot robot, ChaseScene scene, PrintWriter out) {
-    Thread t =
-        new Thread(
-            () -> {
-              long start = System.nanoTime();
-              try {
-                for (int s = 1; seconds == 0 || s <= seconds; s++) {
-                  TimeUnit.NANOSECONDS.sleep(
-                      start + TimeUnit.SECONDS.toNanos(s) - System.nanoTime());
-                  if (!robot.isRunning()) {
-                    return;
-                  }
-                  out.printf(
-                      Locale.ROOT,
-                      "t=%3ds  robot %-26s vel %4.0f mm/s  ball %.0f mm away%n",
-                      s,
-                      scene.robot.getTruePose(),
-                      robot.getVel(),
-                      scene.distanceToBall());
-                  out.flush();
-                }
-              } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-              }
-              robot.stopRunning();
-            },
-            "demo-status");
-    t.setDaemon(true);
-    t.start();
+  private static void watch(DemoTicker ticker, ArRobot robot, ChaseScene scene, PrintWriter out) {
+    ticker.start(
+        robot,
+        s -> {
+          out.printf(
+              Locale.ROOT,
+              "t=%3ds  robot %-26s vel %4.0f mm/s  ball %.0f mm away%n",
+              s,
+              scene.robot.getTruePose(),
+              robot.getVel(),
+              scene.distanceToBall());
+          out.flush();
+        });
   }
 }

@@ -3,7 +3,6 @@ package org.jaria.tools.demo;
 import java.io.PrintWriter;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import java.util.concurrent.TimeUnit;
 import org.jaria.geom.ArPose;
 import org.jaria.robot.ArRobot;
 import org.jaria.tools.examples.GotoActionExample;
@@ -58,9 +57,12 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
     public Integer call() throws Exception {
       PrintWriter out = spec.commandLine().getOut();
       if (remote != null) {
-        return GotoActionExample.run(remoteArgs(), robot -> watch(robot, null, out));
+        try (DemoTicker ticker = new DemoTicker("demo-status", seconds)) {
+          return GotoActionExample.run(remoteArgs(), robot -> watch(ticker, robot, null, out));
+        }
       }
-      try (EmbeddedSimulator sim = new EmbeddedSimulator(map, model, seed)) {
+      try (EmbeddedSimulator sim = new EmbeddedSimulator(map, model, seed);
+          DemoTicker ticker = new DemoTicker("demo-status", seconds)) {
         out.printf(
             Locale.ROOT,
             "Simulator: %s map, a %s on tcp port %d (real time).%n",
@@ -68,7 +70,8 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
             model,
             sim.port());
         out.flush();
-        int status = GotoActionExample.run(sim.connectArgs(), robot -> watch(robot, sim, out));
+        int status =
+            GotoActionExample.run(sim.connectArgs(), robot -> watch(ticker, robot, sim, out));
         ArPose truth = sim.robot.getTruePose();
         out.printf(Locale.ROOT, "Finished; the simulator's true pose of the robot is %s.%n", truth);
         out.flush();
@@ -77,29 +80,13 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
     }
 
     /** Prints a status line every second and stops the robot after the time limit. */
-    void watch(ArRobot robot, EmbeddedSimulator sim, PrintWriter out) {
-      Thread t =
-          new Thread(
-              () -> {
-                long start = System.nanoTime();
-                try {
-                  for (int s = 1; seconds == 0 || s <= seconds; s++) {
-                    TimeUnit.NANOSECONDS.sleep(
-                        start + TimeUnit.SECONDS.toNanos(s) - System.nanoTime());
-                    if (!robot.isRunning()) {
-                      return;
-                    }
-                    out.println(statusLine(s, robot, sim));
-                    out.flush();
-                  }
-                } catch (InterruptedException e) {
-                  Thread.currentThread().interrupt();
-                }
-                robot.stopRunning();
-              },
-              "demo-status");
-      t.setDaemon(true);
-      t.start();
+    void watch(DemoTicker ticker, ArRobot robot, EmbeddedSimulator sim, PrintWriter out) {
+      ticker.start(
+          robot,
+          second -> {
+            out.println(statusLine(second, robot, sim));
+            out.flush();
+          });
     }
   }
 

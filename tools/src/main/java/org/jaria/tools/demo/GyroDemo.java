@@ -6,7 +6,6 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import java.util.concurrent.TimeUnit;
 import org.jaria.input.ArKeyHandler;
 import org.jaria.robot.ArRobot;
 import org.jaria.sim.RobotOptions;
@@ -36,56 +35,24 @@ final class GyroDemo extends DemoOptions implements Callable<Integer> {
         new PrintStream(new WriterOutputStream(writer), true, StandardCharsets.UTF_8.name());
     try (EmbeddedSimulator sim =
             new EmbeddedSimulator(map, RobotOptions.of(model).withGyro(true), seed);
-        ArKeyHandler keyHandler = keys ? ArKeyHandler.forTerminal() : new ArKeyHandler()) {
+        ArKeyHandler keyHandler = keys ? ArKeyHandler.forTerminal() : new ArKeyHandler();
+        DemoTicker ticker = new DemoTicker("demo-keys", seconds)) {
       out.printf(Locale.ROOT, "Simulator: a %s with a gyro on tcp port %d.%n", model, sim.port());
-      return GyroExample.run(sim.connectArgs(), keyHandler, out, 10, r -> script(r, keyHandler));
+      return GyroExample.run(
+          sim.connectArgs(), keyHandler, out, 10, r -> script(ticker, r, keyHandler));
     }
   }
 
-  private void script(ArRobot robot, ArKeyHandler keyHandler) {
-    Thread t =
-        new Thread(
-            () -> {
-              String presses = keys ? "" : "sdfa";
-              long start = System.nanoTime();
-              int limit = seconds == 0 ? Integer.MAX_VALUE : seconds;
-              try {
-                for (int s = 1; s <= limit && robot.isRunning(); s++) {
-                  TimeUnit.NANOSECONDS.sleep(
-                      start + TimeUnit.SECONDS.toNanos(s) - System.nanoTime());
-                  int k = s / 4 - 1;
-                  if (s % 4 == 0 && k >= 0 && k < presses.length()) {
-                    keyHandler.feedKey(presses.charAt(k));
-                  }
-                }
-              } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-              }
-              robot.stopRunning();
-            },
-            "demo-keys");
-    t.setDaemon(true);
-    t.start();
-  }
-
-  /** Bridges the program's PrintStream output to picocli's writer. */
-  private static final class WriterOutputStream extends java.io.OutputStream {
-    private final PrintWriter w;
-    private final java.io.ByteArrayOutputStream line = new java.io.ByteArrayOutputStream();
-
-    WriterOutputStream(PrintWriter w) {
-      this.w = w;
-    }
-
-    @Override
-    public synchronized void write(int b) {
-      if (b == '\n') {
-        w.println(line.toString(StandardCharsets.UTF_8));
-        w.flush();
-        line.reset();
-      } else {
-        line.write(b);
-      }
-    }
+  /** Without --keys, presses s, d, f, a at 4, 8, 12 and 16 seconds. */
+  private void script(DemoTicker ticker, ArRobot robot, ArKeyHandler keyHandler) {
+    String presses = keys ? "" : "sdfa";
+    ticker.start(
+        robot,
+        s -> {
+          int k = s / 4 - 1;
+          if (s % 4 == 0 && k >= 0 && k < presses.length()) {
+            keyHandler.feedKey(presses.charAt(k));
+          }
+        });
   }
 }

@@ -1,12 +1,15 @@
 package org.jaria.tools.examples;
 
 import java.util.function.Consumer;
+import org.jaria.action.ArAction;
 import org.jaria.action.ArActionConstantVelocity;
+import org.jaria.action.ArActionKeydrive;
 import org.jaria.action.ArActionLimiterBackwards;
 import org.jaria.action.ArActionLimiterForwards;
 import org.jaria.acts.ArACTS_1_2;
 import org.jaria.acts.ptz.ArPTZ;
 import org.jaria.acts.ptz.ArVCC4;
+import org.jaria.input.ArKeyHandler;
 import org.jaria.protocol.ArCommands;
 import org.jaria.range.ArSonarDevice;
 import org.jaria.robot.ArRobot;
@@ -26,24 +29,38 @@ public final class ActsColorFollowingExample {
   private ActsColorFollowingExample() {}
 
   /** Runs against a real robot (VC-C4 on the AUX port) or a simulator; exits with its status. */
-  public static void main(String[] args) {
-    System.exit(run(args, null, robot -> {}));
+  public static void main(String[] args) throws java.io.IOException {
+    try (ArKeyHandler keyHandler = ArKeyHandler.forTerminal()) {
+      System.exit(run(args, null, keyHandler, robot -> {}));
+    }
+  }
+
+  /** The thesis's toggleAction: switches an action on or off, saying which. */
+  public static void toggleAction(ArAction action) {
+    if (action.isActive()) {
+      action.deactivate();
+      System.out.println(action.getName() + " action is now deactivated.");
+    } else {
+      action.activate();
+      System.out.println(action.getName() + " action is now activated.");
+    }
   }
 
   /**
    * The program. {@code camera} is the pan/tilt/zoom camera to use, or null for a VC-C4 on the
-   * robot's AUX serial port.
+   * robot's AUX serial port; {@code keyHandler} gives the keys ('a' switches keyboard driving on
+   * and off, the arrows drive, Escape ends).
    *
    * @return 0 normal, 1 no robot, 2 no ACTS
    */
-  public static int run(String[] args, ArPTZ camera, Consumer<ArRobot> started) {
+  public static int run(
+      String[] args, ArPTZ camera, ArKeyHandler keyHandler, Consumer<ArRobot> started) {
     // The robot
     ArRobot robot = new ArRobot();
     // Sonar, for basic obstacle avoidance
     ArSonarDevice sonar = new ArSonarDevice();
     // Camera (Canon VC-C4 through the robot's AUX port, unless one is given)
-    ArPTZ vcc4 =
-        camera != null ? camera : new ArVCC4(bytes -> robot.comDataN(ArCommands.TTY2, bytes));
+    ArPTZ vcc4 = camera != null ? camera : new ArVCC4(robot);
     // ACTS, for colour blob tracking
     ArACTS_1_2 acts = new ArACTS_1_2(robot.getClock());
     // Command-line arguments
@@ -66,6 +83,12 @@ public final class ActsColorFollowingExample {
     ArActionConstantVelocity stop = new ArActionConstantVelocity("stop", 0);
     // The action that follows the colour
     Chase chase = new Chase(acts, vcc4);
+    // Keyboard teleoperation
+    ArActionKeydrive keydriveAction = new ArActionKeydrive(keyHandler);
+    // 'a' switches keyboard driving on and off
+    keyHandler.addKeyHandler('a', () -> toggleAction(keydriveAction));
+    // Attach the keys to the robot
+    keyHandler.attachKeyHandler(robot, true, null);
 
     // Add the sonar to the robot
     robot.addRangeDevice(sonar);
@@ -93,10 +116,15 @@ public final class ActsColorFollowingExample {
     robot.addAction(limiter, 7);
     robot.addAction(limiterFar, 6);
     robot.addAction(backwardsLimiter, 5);
+    robot.addAction(keydriveAction, 4);
     robot.addAction(chase, 3);
     robot.addAction(stop, 1);
+    // Start with keyboard driving off: 'a' turns it on
+    keydriveAction.deactivate();
 
-    System.out.println("Running. Train ACTS to detect a color to drive towards an object.");
+    System.out.println(
+        "Running. Train ACTS to detect a color to drive towards an object, or use 'a' key to"
+            + " switch to keyboard driving mode.");
     robot.runAsync(true);
     started.accept(robot);
     try {
