@@ -380,6 +380,13 @@ class EzTrainWindowTest {
     assertTrue(window.stage().getTitle().contains("channel 11"), window.stage()::getTitle);
     assertEquals("channel11.lut", robot.lookup("#channel-file").queryTextInputControl().getText());
 
+    // Blobs tracked goes up to 10, no further.
+    for (int i = 0; i < 9; i++) {
+      mouse.click("#tracked-blobs .increment-arrow-button");
+    }
+    settle();
+    assertEquals(10, window.session().bank().getTrackedBlobs(11));
+
     // Tool keys over the image.
     mouse.moveTo(pixel(robot, 20, 20));
     for (TrainTool t :
