@@ -253,6 +253,14 @@ class EzTrainWindowTest {
     settle();
     PlaneLimits l = window.session().bank().copyOf(1).getLimits(ColorPlane.RG);
     assertTrue(l.highBright() < PlaneLimits.MAX_BRIGHT, l::toString);
+    // The first colour-threshold slider up, the Low Bright slider up: both limits are set.
+    mouse.click("#plane-rg-first");
+    robot.type(KeyCode.RIGHT);
+    mouse.click("#plane-rg-low");
+    robot.type(KeyCode.RIGHT);
+    settle();
+    l = window.session().bank().copyOf(1).getLimits(ColorPlane.RG);
+    assertTrue(l.firstColor() > 0 && l.lowBright() > 0, l::toString);
     mouse.click("#plane-rg-reset");
     settle();
     assertEquals(PlaneLimits.NONE, window.session().bank().copyOf(1).getLimits(ColorPlane.RG));
