@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import javafx.geometry.Point2D;
+import javafx.scene.Node;
 import javafx.scene.input.KeyCode;
 import javafx.stage.Stage;
 import org.jaria.geom.ArLineSegment;
@@ -33,6 +34,7 @@ import org.testfx.api.FxRobot;
 import org.testfx.framework.junit5.ApplicationExtension;
 import org.testfx.framework.junit5.Start;
 import org.testfx.util.WaitForAsyncUtils;
+import picocli.CommandLine;
 
 /** The simulator view driven like a user: step it, place a robot, drag an obstacle, run it. */
 @ExtendWith(ApplicationExtension.class)
@@ -232,5 +234,33 @@ class SimViewWindowTest {
     FxRuntime.run(() -> ez.stage().hide(), 10);
     assertTrue(window.canvas().cameraViews().isEmpty(), "closing EZ-Train puts the camera away");
     assertTrue(window.ezTrainWindows().isEmpty());
+  }
+
+  @Test
+  void theSimviewCommandOpensAViewThatStepsWithItsButton(FxRobot robot) throws Exception {
+    SimViewCommand c = new SimViewCommand();
+    new CommandLine(c).parseArgs("--map", "hall", "--robots", "2", "--paused", "--no-listen");
+    SimViewWindow w =
+        (SimViewWindow)
+            FxRuntime.call(() -> c.open(new Stage(), AppEnvironment.scripted(prompts)), 20);
+    try {
+      w.ready().get(10, TimeUnit.SECONDS);
+      SimWorld built = w.controller().world();
+      assertEquals(2, built.getRobots().size());
+      assertFalse(w.controller().isRunning());
+      long t0 = built.getClock().nanoTime();
+      mouse.click(robot.from(w.stage().getScene().getRoot()).lookup("#step").<Node>query());
+      assertTrue(w.work().awaitIdle(10, TimeUnit.SECONDS));
+      WaitForAsyncUtils.waitForFxEvents();
+      assertEquals(t0 + SimViewWindow.STEP_MILLIS * 1_000_000, built.getClock().nanoTime());
+      assertEquals(built.getClock().nanoTime(), w.canvas().snapshot().simTimeNanos());
+    } finally {
+      FxRuntime.run(
+          () -> {
+            w.stage().hide();
+            w.close();
+          },
+          10);
+    }
   }
 }
