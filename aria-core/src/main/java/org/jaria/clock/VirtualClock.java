@@ -4,9 +4,11 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.PriorityQueue;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.Lock;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.BooleanSupplier;
 
 /**
  * A clock that stands still until someone calls {@link #advance}. Tests and the simulator's
@@ -103,6 +105,49 @@ public final class VirtualClock implements Clock {
     }
   }
 
+  /**
+   * Blocks until at least {@code n} threads are waiting on this clock, or {@code timeout} of real
+   * time has passed. A test that drives other threads on virtual time calls it to know they have
+   * done their work and parked before it advances the clock; the timeout only keeps a broken test
+   * from hanging, it is not part of the synchronisation.
+   *
+   * @return whether {@code n} threads were waiting
+   * @throws InterruptedException if the calling thread is interrupted
+   */
+  public boolean awaitWaiters(int n, Duration timeout) throws InterruptedException {
+    return awaitWaiters(n, timeout, () -> false);
+  }
+
+  /**
+   * As {@link #awaitWaiters(int, Duration)}, but also returns, with false, as soon as {@code
+   * orUntil} is true. Whoever makes it true must then call {@link #wakeWatchers()} (for example a
+   * thread that ends instead of waiting on the clock).
+   */
+  public boolean awaitWaiters(int n, Duration timeout, BooleanSupplier orUntil)
+      throws InterruptedException {
+    long end = System.nanoTime() + timeout.toNanos();
+    synchronized (monitor) {
+      while (waiters.size() < n) {
+        if (orUntil.getAsBoolean()) {
+          return false;
+        }
+        long left = end - System.nanoTime();
+        if (left <= 0) {
+          return false;
+        }
+        TimeUnit.NANOSECONDS.timedWait(monitor, left);
+      }
+      return true;
+    }
+  }
+
+  /** Wakes the threads in {@link #awaitWaiters} so they check their condition again. */
+  public void wakeWatchers() {
+    synchronized (monitor) {
+      monitor.notifyAll();
+    }
+  }
+
   @Override
   public void sleepNanos(long nanos) throws InterruptedException {
     long deadline = now + Math.max(0, nanos);
@@ -129,6 +174,7 @@ public final class VirtualClock implements Clock {
       }
       w = new Waiter(deadlineNanos, seq++, lock, condition);
       waiters.add(w);
+      monitor.notifyAll(); // for awaitWaiters
     }
     try {
       condition.await();

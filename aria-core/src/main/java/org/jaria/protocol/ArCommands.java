@@ -194,6 +194,15 @@ public enum ArCommands {
   /** ARIA's name for {@link #GRIPREQUEST}. */
   public static final ArCommands GRIPPERPACREQUEST = GRIPREQUEST;
 
+  /** The spec's other name for command 56, {@link #M_STALL}. */
+  public static final ArCommands E_STALL = M_STALL;
+
+  /** ARIA's name for command 56, {@link #M_STALL}. */
+  public static final ArCommands ESTALL = M_STALL;
+
+  /** ARIA's name for {@link #E_STOP}. */
+  public static final ArCommands ESTOP = E_STOP;
+
   /** ARIA's name for {@link #GYRO}. */
   public static final ArCommands GYROREQUEST = GYRO;
 

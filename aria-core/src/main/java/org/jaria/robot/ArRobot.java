@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.ReentrantLock;
 import org.jaria.action.ArActionDesired;
 import org.jaria.clock.Clock;
@@ -62,14 +63,13 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
   final PacketIntake intake;
   final RobotConnection connection;
   private final RunLoop runLoop;
-  private final java.util.concurrent.atomic.AtomicLong counter =
-      new java.util.concurrent.atomic.AtomicLong();
+  private final AtomicLong counter = new AtomicLong();
   private volatile long cycleTimeMs = 100;
   private volatile long cycleWarningTimeMs = 250;
   private volatile boolean cycleChained = true;
   private volatile long lastCycleNanos;
-  private long lockWarnings;
-  private long overrunWarnings;
+  private final AtomicLong lockWarnings = new AtomicLong();
+  private final AtomicLong overrunWarnings = new AtomicLong();
 
   /** A robot with the default name, timed by the system clock. */
   public ArRobot() {
@@ -346,11 +346,13 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
       robotLock.unlock();
     }
     counter.incrementAndGet();
-    long took = System.nanoTime() - realStart;
-    lastCycleNanos = took;
+    lastCycleNanos = System.nanoTime() - realStart;
+    // Measured on the robot's clock, like every other time in the robot: on a virtual clock a
+    // cycle takes no time unless a task makes time pass, so runs stay deterministic.
+    long took = clock.nanoTime() - start;
     if (cycleWarningTimeMs > 0 && took > TimeUnit.MILLISECONDS.toNanos(cycleWarningTimeMs)) {
       warnRarely(
-          ++overrunWarnings,
+          overrunWarnings.incrementAndGet(),
           "cycle took {} ms, more than the {} ms warning time: a task is too slow",
           TimeUnit.NANOSECONDS.toMillis(took),
           cycleWarningTimeMs);
@@ -371,7 +373,7 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
 
   private void keepAliveWithoutLock(long now) {
     warnRarely(
-        ++lockWarnings,
+        lockWarnings.incrementAndGet(),
         "skipped a cycle: user code held the robot lock for more than {} ms (cycle time {} ms)",
         cycleTimeMs,
         cycleTimeMs);
@@ -474,6 +476,26 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
     return sensorInterpTasks.snapshot();
   }
 
+  /**
+   * The cycle as a tree, as ARIA's {@code getSyncTaskRoot()} shows it: "SyncTasks" with "Packet
+   * Handler" (85), the "Sensor Interp" branch (65) with its tasks, "Action Handler" (55), "State
+   * Reflector" (45) and the "User Tasks" branch (25) with its tasks. A snapshot: ask again after
+   * adding or removing tasks. {@code System.out.print(robot.getSyncTaskRoot())} prints it.
+   */
+  public SyncTaskView getSyncTaskRoot() {
+    return new SyncTaskView(
+        "SyncTasks",
+        0,
+        true,
+        null,
+        List.of(
+            SyncTaskView.step("Packet Handler", 85),
+            SyncTaskView.branch("Sensor Interp", 65, sensorInterpTasks.snapshot()),
+            SyncTaskView.step("Action Handler", 55),
+            SyncTaskView.step("State Reflector", 45),
+            SyncTaskView.branch("User Tasks", 25, userTasks.snapshot())));
+  }
+
   /** Locks the robot: the cycle's tasks do not run until {@link #unlock()}. */
   public void lock() {
     robotLock.lock();
@@ -507,7 +529,10 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
     return cycleTimeMs;
   }
 
-  /** A cycle longer than this logs a warning, ms (default 250; 0 never). */
+  /**
+   * A cycle longer than this, on the robot's clock, logs a warning and is counted ({@link
+   * #getCycleOverrunCount()}), ms (default 250; 0 never).
+   */
   public void setCycleWarningTime(long ms) {
     cycleWarningTimeMs = ms;
   }
@@ -530,6 +555,19 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
   /** Real time the last cycle's tasks took, ns. */
   public long getLastCycleNanos() {
     return lastCycleNanos;
+  }
+
+  /**
+   * How many cycles took longer than the {@link #setCycleWarningTime cycle warning time} on the
+   * robot's clock (each logged a warning, or every hundredth after the first).
+   */
+  public long getCycleOverrunCount() {
+    return overrunWarnings.get();
+  }
+
+  /** How many cycles were skipped because user code held the robot's lock too long. */
+  public long getSkippedCycleCount() {
+    return lockWarnings.get();
   }
 
   // ================================================================ shutdown
@@ -563,8 +601,8 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
         name,
         counter.get(),
         lastCycleNanos / 1e6,
-        lockWarnings,
-        overrunWarnings,
+        lockWarnings.get(),
+        overrunWarnings.get(),
         drops);
   }
 }

@@ -264,6 +264,14 @@ public abstract class RobotMotion extends RobotState {
     return sender.comStr(command.getNumber(), argument);
   }
 
+  /**
+   * Sends a string command with exactly {@code size} bytes now (ARIA's {@code comStrN}): the string
+   * is cut or padded with NULs to {@code size}.
+   */
+  public boolean comStrN(int command, String argument, int size) {
+    return sender.comStrN(command, argument, size);
+  }
+
   /** Sends a string command with exactly {@code size} bytes now. */
   public boolean comStrN(ArCommands command, String argument, int size) {
     return sender.comStrN(command.getNumber(), argument, size);

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
@@ -15,15 +16,11 @@ import org.junit.jupiter.api.Test;
 
 class VirtualClockTest {
 
-  /** Waits (in real time, briefly) until {@code n} threads are parked on the clock. */
+  /** Waits until {@code n} threads are parked on the clock (real time bounds a broken test). */
   private static void awaitWaiters(VirtualClock c, int n) throws InterruptedException {
-    long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-    while (c.waitingCount() < n) {
-      if (System.nanoTime() > end) {
-        throw new AssertionError("only " + c.waitingCount() + " of " + n + " threads waiting");
-      }
-      Thread.onSpinWait();
-    }
+    assertTrue(
+        c.awaitWaiters(n, Duration.ofSeconds(10)),
+        "only " + c.waitingCount() + " of " + n + " threads waiting");
   }
 
   @Test
@@ -41,9 +38,10 @@ class VirtualClockTest {
   void sleepersWakeInDeadlineOrderWhenTimeReachesThem() throws Exception {
     VirtualClock c = new VirtualClock();
     List<String> woke = new CopyOnWriteArrayList<>();
-    CountDownLatch done = new CountDownLatch(2);
-    Thread a = sleepingThread(c, 300, "a", woke, done);
-    Thread b = sleepingThread(c, 100, "b", woke, done);
+    CountDownLatch aDone = new CountDownLatch(1);
+    CountDownLatch bDone = new CountDownLatch(1);
+    Thread a = sleepingThread(c, 300, "a", woke, aDone);
+    Thread b = sleepingThread(c, 100, "b", woke, bDone);
     a.start();
     b.start();
     awaitWaiters(c, 2);
@@ -51,13 +49,11 @@ class VirtualClockTest {
     c.advanceMillis(99);
     assertEquals(2, c.waitingCount());
     c.advanceMillis(1);
-    long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-    while (!woke.contains("b") && System.nanoTime() < end) {
-      Thread.onSpinWait(); // b was signalled; let it record that it woke
-    }
+    assertTrue(bDone.await(10, TimeUnit.SECONDS), "b was signalled and recorded that it woke");
     assertEquals(List.of("b"), woke);
+    assertEquals(1, aDone.getCount(), "a still sleeps");
     c.advanceMillis(500);
-    assertTrue(done.await(10, TimeUnit.SECONDS));
+    assertTrue(aDone.await(10, TimeUnit.SECONDS));
     assertEquals(List.of("b", "a"), woke);
     a.join();
     b.join();
@@ -101,7 +97,8 @@ class VirtualClockTest {
               } finally {
                 lock.unlock();
               }
-            });
+            },
+            "awaiter-deadline");
     t.start();
     awaitWaiters(c, 1);
     c.advance(50);
@@ -127,7 +124,8 @@ class VirtualClockTest {
               } finally {
                 lock.unlock();
               }
-            });
+            },
+            "awaiter-signal");
     t.start();
     awaitWaiters(c, 1);
     lock.lock();
@@ -139,5 +137,12 @@ class VirtualClockTest {
     t.join(10_000);
     assertTrue(result[0]);
     assertEquals(0, c.waitingCount());
+  }
+
+  @Test
+  void awaitWaitersGivesUpAfterItsTimeoutWhenNobodyWaits() throws Exception {
+    VirtualClock c = new VirtualClock();
+    assertTrue(c.awaitWaiters(0, Duration.ZERO));
+    assertFalse(c.awaitWaiters(1, Duration.ofMillis(1)), "nobody waits on this clock");
   }
 }

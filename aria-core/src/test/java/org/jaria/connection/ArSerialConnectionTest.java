@@ -6,9 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import org.jaria.clock.Clock;
 import org.jaria.protocol.ArRobotPacket;
 import org.jaria.protocol.ArRobotPacketReceiver;
@@ -71,13 +73,55 @@ class ArSerialConnectionTest {
   }
 
   @Test
-  void baudCanBeSwitchedWhileOpen() throws Exception {
+  void packetsStillTravelBothWaysAfterABaudSwitch() throws Exception {
     try (SocatPty pty = new SocatPty(dir);
-        ArSerialConnection c = new ArSerialConnection(pty.a.toString(), 9600, Clock.system())) {
-      c.open();
-      assertTrue(c.setBaud(38400));
-      assertEquals(38400, c.getBaud());
+        ArSerialConnection client = new ArSerialConnection(pty.a.toString(), 9600, Clock.system());
+        ArSerialConnection robot = new ArSerialConnection(pty.b.toString(), 9600, Clock.system())) {
+      client.open();
+      robot.open();
+      exchange(client, robot, 1);
+      assertEquals("9600", ttySpeed(pty.a));
+      // What ARIA does after connecting: HOSTBAUD to the robot, then both sides switch.
+      for (int baud : new int[] {38400, 115200}) {
+        assertTrue(client.setBaud(baud));
+        assertTrue(robot.setBaud(baud));
+        assertEquals(baud, client.getBaud());
+        assertEquals(String.valueOf(baud), ttySpeed(pty.a), "the tty itself runs at " + baud);
+        exchange(client, robot, baud);
+      }
+      assertEquals(ArDeviceConnection.Status.OPEN, client.getStatus());
     }
+  }
+
+  /** A command from the client and a SIP from the robot, each arriving whole and in order. */
+  private static void exchange(ArDeviceConnection client, ArDeviceConnection robot, int tag)
+      throws IOException {
+    byte[] vel = CommandCodec.comInt(new ArRobotPacket(), 11, tag % 1000).toByteArray();
+    byte[] pulse = CommandCodec.com(new ArRobotPacket(), 0).toByteArray();
+    client.write(vel, 0, vel.length);
+    client.write(pulse, 0, pulse.length);
+    List<byte[]> atRobot = readPackets(robot, 2);
+    assertEquals(2, atRobot.size(), "both commands arrived at " + tag);
+    assertArrayEquals(vel, atRobot.get(0));
+    assertArrayEquals(pulse, atRobot.get(1));
+    byte[] sip =
+        new StandardSip().setPos(tag % 30000, 7, 9).encode(new ArRobotPacket()).toByteArray();
+    robot.write(sip, 0, sip.length);
+    List<byte[]> atClient = readPackets(client, 1);
+    assertEquals(1, atClient.size(), "the SIP arrived at " + tag);
+    assertArrayEquals(sip, atClient.get(0));
+  }
+
+  /** The speed the kernel's terminal layer reports for {@code device}, as stty prints it. */
+  private static String ttySpeed(Path device) throws IOException, InterruptedException {
+    Process p =
+        new ProcessBuilder("stty", "-F", device.toRealPath().toString(), "speed")
+            .redirectErrorStream(true)
+            .start();
+    String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.US_ASCII).trim();
+    assertTrue(p.waitFor(10, TimeUnit.SECONDS), "stty ended");
+    assertEquals(0, p.exitValue(), "stty: " + out);
+    return out;
   }
 
   @Test

@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.util.concurrent.TimeUnit;
+import java.time.Duration;
 import org.jaria.clock.VirtualClock;
 import org.junit.jupiter.api.Test;
 
@@ -72,12 +72,10 @@ class PipeConnectionTest {
               } catch (IOException e) {
                 result[0] = -3;
               }
-            });
+            },
+            "pipe-reader");
     reader.start();
-    long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-    while (clock.waitingCount() == 0 && System.nanoTime() < end) {
-      Thread.onSpinWait();
-    }
+    assertTrue(clock.awaitWaiters(1, Duration.ofSeconds(10)), "the reader waits on the clock");
     clock.advanceMillis(499);
     assertTrue(reader.isAlive());
     clock.advanceMillis(1);

@@ -104,12 +104,14 @@ class ArRobotCycleTest {
               } finally {
                 rig.robot.unlock();
               }
-            });
+            },
+            "test-lock-holder");
     holder.start();
     assertTrue(locked.await(10, TimeUnit.SECONDS));
     rig.fake.clearReceived();
     rig.run(1500);
     assertEquals(0, runs.get());
+    assertTrue(rig.robot.getSkippedCycleCount() > 0, "the skipped cycles were counted");
     assertFalse(rig.fake.received(ArCommands.PULSE).isEmpty(), "pulses while the lock is held");
     release.countDown();
     holder.join(10_000);

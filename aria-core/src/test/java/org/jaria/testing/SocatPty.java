@@ -3,6 +3,10 @@ package org.jaria.testing;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardWatchEventKinds;
+import java.nio.file.WatchKey;
+import java.nio.file.WatchService;
+import java.time.Duration;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -12,6 +16,12 @@ import java.util.concurrent.TimeUnit;
  */
 public final class SocatPty implements AutoCloseable {
 
+  /** How long socat may take to create both ends before the test gives up. */
+  private static final Duration STARTUP = Duration.ofSeconds(10);
+
+  /** Longest wait for a file event before checking that socat is still alive. */
+  private static final long CHECK_ALIVE_NANOS = TimeUnit.MILLISECONDS.toNanos(200);
+
   /** One end (give it to the client). */
   public final Path a;
 
@@ -20,24 +30,42 @@ public final class SocatPty implements AutoCloseable {
 
   private final Process process;
 
-  /** Starts socat with its links in {@code dir}; returns once both ends exist. */
+  /**
+   * Starts socat with its links in {@code dir}; returns once both ends exist.
+   *
+   * @throws IOException if socat is missing, exits, or has not made both links within 10 s
+   */
   public SocatPty(Path dir) throws IOException, InterruptedException {
     a = dir.resolve("ttyA");
     b = dir.resolve("ttyB");
-    process =
-        new ProcessBuilder("socat", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b)
-            .redirectErrorStream(true)
-            .redirectOutput(dir.resolve("socat.log").toFile())
-            .start();
-    long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-    while (!(Files.exists(a) && Files.exists(b))) {
-      if (!process.isAlive() || System.nanoTime() > end) {
-        throw new IOException(
-            "socat did not create the pty pair (is socat installed? apt-get install socat): "
-                + Files.readString(dir.resolve("socat.log")));
+    Path log = dir.resolve("socat.log");
+    // Watch the folder before socat starts, so the creation of a link cannot be missed.
+    try (WatchService watcher = dir.getFileSystem().newWatchService()) {
+      dir.register(watcher, StandardWatchEventKinds.ENTRY_CREATE);
+      process =
+          new ProcessBuilder("socat", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b)
+              .redirectErrorStream(true)
+              .redirectOutput(log.toFile())
+              .start();
+      long deadline = System.nanoTime() + STARTUP.toNanos();
+      while (!(Files.exists(a) && Files.exists(b))) {
+        long left = deadline - System.nanoTime();
+        if (!process.isAlive() || left <= 0) {
+          process.destroy();
+          throw new IOException(
+              "socat did not create the pty pair within "
+                  + STARTUP.toSeconds()
+                  + " s (is socat installed? apt-get install socat): "
+                  + Files.readString(log));
+        }
+        // Woken by the next file created in the folder; the cap only lets a socat that died
+        // without creating anything be noticed before the deadline.
+        WatchKey key = watcher.poll(Math.min(left, CHECK_ALIVE_NANOS), TimeUnit.NANOSECONDS);
+        if (key != null) {
+          key.pollEvents();
+          key.reset();
+        }
       }
-      // socat needs a moment to create both links; poll the file system, not the clock
-      process.waitFor(10, TimeUnit.MILLISECONDS);
     }
   }
 

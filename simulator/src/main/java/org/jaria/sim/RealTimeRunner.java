@@ -13,8 +13,8 @@ final class RealTimeRunner {
 
   private static final Logger log = LoggerFactory.getLogger(RealTimeRunner.class);
 
-  /** Name of the world thread. */
-  static final String THREAD_NAME = "jaria-sim-world";
+  /** What the world thread's name starts with; the world's name follows. */
+  static final String THREAD_PREFIX = "jaria-sim-";
 
   private final SimWorld world;
   private final long realTickNanos;
@@ -25,7 +25,7 @@ final class RealTimeRunner {
   RealTimeRunner(SimWorld world, long tickNanos, double speedup) {
     this.world = world;
     this.realTickNanos = speedup > 0 ? (long) (tickNanos / speedup) : 0;
-    this.thread = new Thread(this::run, THREAD_NAME);
+    this.thread = new Thread(this::run, THREAD_PREFIX + world.getName());
     thread.setDaemon(true);
   }
 

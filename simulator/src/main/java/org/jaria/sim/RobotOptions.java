@@ -14,6 +14,10 @@ import org.jaria.geom.ArPose;
  * @param gyro whether it carries a rate gyro (CONFIGpac HasGyro 1, GYROpac on request)
  * @param gripper whether it carries a gripper (CONFIGpac HasGripper 1)
  * @param port TCP port (-1: the world's base port plus the robot's number; 0: any free port)
+ * @param legacyLaserCommands whether commands 35–38 set up the laser (enable, start angle, end
+ *     angle, increment), as the laser commands of older simulators that old ARIA clients send,
+ *     instead of their ARCOS meanings (ADSEL, GRIPPERVAL, GRIPREQUEST, GYROCALCW). Off by default;
+ *     only for a robot with a laser.
  */
 public record RobotOptions(
     String subtype,
@@ -22,7 +26,8 @@ public record RobotOptions(
     boolean laser,
     boolean gyro,
     boolean gripper,
-    int port) {
+    int port,
+    boolean legacyLaserCommands) {
 
   /** Checks and normalises the values (the subtype is lower-cased). */
   public RobotOptions {
@@ -33,40 +38,54 @@ public record RobotOptions(
     if (port < -1 || port > 65535) {
       throw new IllegalArgumentException("port must be -1 (automatic) or 0..65535, was " + port);
     }
+    if (legacyLaserCommands && !laser) {
+      throw new IllegalArgumentException(
+          "legacy laser commands need a laser: add withLaser(true) (or --laser) first");
+    }
   }
 
   /** A robot of {@code subtype} with a gripper, no laser, no gyro, default start and port. */
   public static RobotOptions of(String subtype) {
-    return new RobotOptions(subtype, null, null, false, false, true, -1);
+    return new RobotOptions(subtype, null, null, false, false, true, -1, false);
   }
 
   /** These options with another name. */
   public RobotOptions withName(String n) {
-    return new RobotOptions(subtype, n, startPose, laser, gyro, gripper, port);
+    return new RobotOptions(subtype, n, startPose, laser, gyro, gripper, port, legacyLaserCommands);
   }
 
   /** These options with another start pose. */
   public RobotOptions withStartPose(ArPose p) {
-    return new RobotOptions(subtype, name, p, laser, gyro, gripper, port);
+    return new RobotOptions(subtype, name, p, laser, gyro, gripper, port, legacyLaserCommands);
   }
 
   /** These options with or without a laser. */
   public RobotOptions withLaser(boolean on) {
-    return new RobotOptions(subtype, name, startPose, on, gyro, gripper, port);
+    return new RobotOptions(
+        subtype, name, startPose, on, gyro, gripper, port, on && legacyLaserCommands);
   }
 
   /** These options with or without a gyro. */
   public RobotOptions withGyro(boolean on) {
-    return new RobotOptions(subtype, name, startPose, laser, on, gripper, port);
+    return new RobotOptions(
+        subtype, name, startPose, laser, on, gripper, port, legacyLaserCommands);
   }
 
   /** These options with or without a gripper. */
   public RobotOptions withGripper(boolean on) {
-    return new RobotOptions(subtype, name, startPose, laser, gyro, on, port);
+    return new RobotOptions(subtype, name, startPose, laser, gyro, on, port, legacyLaserCommands);
   }
 
   /** These options with another TCP port. */
   public RobotOptions withPort(int p) {
-    return new RobotOptions(subtype, name, startPose, laser, gyro, gripper, p);
+    return new RobotOptions(subtype, name, startPose, laser, gyro, gripper, p, legacyLaserCommands);
+  }
+
+  /**
+   * These options with commands 35–38 read as the old laser set-up commands (see {@link
+   * #legacyLaserCommands()}); the robot must carry a laser.
+   */
+  public RobotOptions withLegacyLaserCommands(boolean on) {
+    return new RobotOptions(subtype, name, startPose, laser, gyro, gripper, port, on);
   }
 }

@@ -64,6 +64,9 @@ final class RobotSlot {
             o.laser(),
             o.gyro(),
             o.gripper());
+    if (o.legacyLaserCommands()) {
+      body.laser().setAcceptsLegacyCommands(true);
+    }
     int base = options.basePort();
     int port = o.port() >= 0 ? o.port() : (base == 0 ? 0 : base + index);
     return new RobotSlot(world, body, o, port);

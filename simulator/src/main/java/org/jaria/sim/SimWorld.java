@@ -4,17 +4,19 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
-import java.util.BitSet;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.IntConsumer;
+import java.util.function.Supplier;
 import org.jaria.clock.Clock;
 import org.jaria.clock.VirtualClock;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
+import org.jaria.sim.camera.ColoredObjects;
 import org.jaria.sim.robot.RobotModel;
 import org.jaria.sim.world.WorldGeometry;
 import org.jaria.sim.world.WorldMap;
@@ -48,20 +50,26 @@ public final class SimWorld implements AutoCloseable {
 
   private static final Logger log = LoggerFactory.getLogger(SimWorld.class);
 
+  /** Numbers worlds for their names (and their threads' names) only; holds no simulation state. */
+  private static final AtomicInteger WORLD_NUMBERS = new AtomicInteger();
+
   final ReentrantLock lock = new ReentrantLock();
   private final SimOptions options;
+  private final String name;
   private final VirtualClock clock;
   private final long tickNanos;
   private final WorldGeometry geometry = new WorldGeometry();
   private final List<RobotSlot> slots = new ArrayList<>();
   private final WorldStatics statics;
   private final List<Runnable> stepListeners = new CopyOnWriteArrayList<>();
-  private final org.jaria.sim.camera.ColoredObjects colored =
-      new org.jaria.sim.camera.ColoredObjects(this);
-  private final BitSet unknownLogged = new BitSet(256);
+  private final ColoredObjects colored = new ColoredObjects(this);
+  private final IgnoredCommandLog ignored = new IgnoredCommandLog();
   private final WorldHost host = new WorldHost(this);
-  private TcpServers servers;
-  private RealTimeRunner runner;
+  // The world's jobs besides stepping: map and obstacles, ground-truth queries, and the outside
+  // (TCP ports, real-time thread). This class holds the lock and the public API over them.
+  private final WorldObstacles obstacles;
+  private final WorldQueries queries;
+  private final WorldServing serving = new WorldServing(lock);
   private volatile IntConsumer exitHandler =
       code -> log.warn("a client asked the simulator to exit with code {}; no exit handler", code);
   private long steps;
@@ -70,9 +78,29 @@ public final class SimWorld implements AutoCloseable {
 
   private SimWorld(WorldMap map, SimOptions options, VirtualClock clock) {
     this.statics = new WorldStatics(map, geometry);
+    this.obstacles = new WorldObstacles(statics, geometry, colored);
+    this.queries = new WorldQueries(statics, geometry);
     this.options = options;
     this.clock = clock;
     this.tickNanos = options.tick().toNanos();
+    this.name = "world-" + WORLD_NUMBERS.incrementAndGet() + "-" + shortName(map.source());
+  }
+
+  /** "office" for "bundled:office", "hall" for "/maps/hall.map". */
+  private static String shortName(String source) {
+    String s = source == null || source.isBlank() ? "map" : source;
+    s =
+        s.substring(
+            Math.max(s.lastIndexOf('/'), Math.max(s.lastIndexOf('\\'), s.lastIndexOf(':'))) + 1);
+    return s.endsWith(".map") ? s.substring(0, s.length() - 4) : s;
+  }
+
+  /**
+   * The world's name: a number unique in this program and the name of the map it started with, e.g.
+   * {@code world-3-office}. Its real-time thread is called {@code jaria-sim-} plus this name.
+   */
+  public String getName() {
+    return name;
   }
 
   // ---------------------------------------------------------------- creation
@@ -158,9 +186,7 @@ public final class SimWorld implements AutoCloseable {
       }
       maxSpeed = Math.max(maxSpeed, model.getTransVelTop());
       slots.add(slot);
-      if (servers != null) {
-        servers.bindLate(slot);
-      }
+      serving.robotAdded(slot);
       log.info("added robot {} ({}) at {}", name, model.getSubtype(), start);
       return slot.handle;
     } finally {
@@ -184,22 +210,14 @@ public final class SimWorld implements AutoCloseable {
 
   /** Robot number {@code index}. */
   public SimRobot getRobot(int index) {
-    lock.lock();
-    try {
-      return slots.get(index).handle;
-    } finally {
-      lock.unlock();
-    }
+    return locked(() -> slots.get(index).handle);
   }
 
   /** The robot named {@code name}, if any. */
   public Optional<SimRobot> findRobot(String name) {
-    lock.lock();
-    try {
-      return slots.stream().filter(s -> s.body.name().equals(name)).map(s -> s.handle).findFirst();
-    } finally {
-      lock.unlock();
-    }
+    return locked(
+        () ->
+            slots.stream().filter(s -> s.body.name().equals(name)).map(s -> s.handle).findFirst());
   }
 
   // ---------------------------------------------------------------- time
@@ -212,10 +230,7 @@ public final class SimWorld implements AutoCloseable {
   public void step() {
     lock.lock();
     try {
-      if (runner != null && !runner.isRunnerThread()) {
-        throw new IllegalStateException(
-            "the world runs in real time; stop it with stopRealTime() before stepping by hand");
-      }
+      serving.checkMayStep();
       requireOpen();
       stepLocked();
     } finally {
@@ -242,9 +257,7 @@ public final class SimWorld implements AutoCloseable {
   private void stepLocked() {
     long now = clock.nanoTime();
     statics.rebuild();
-    if (servers != null) {
-      servers.acceptPending((slot, c) -> TcpServers.attach(slot, c, clock, host));
-    }
+    serving.acceptPending(clock, host);
     for (RobotSlot s : slots) {
       s.poll(now);
       if (closed) {
@@ -291,12 +304,7 @@ public final class SimWorld implements AutoCloseable {
 
   /** Ticks run so far. */
   public long getStepCount() {
-    lock.lock();
-    try {
-      return steps;
-    } finally {
-      lock.unlock();
-    }
+    return locked(() -> steps);
   }
 
   /** The options the world was made with. */
@@ -316,27 +324,21 @@ public final class SimWorld implements AutoCloseable {
     lock.lock();
     try {
       requireOpen();
-      if (servers != null) {
-        return;
-      }
-      servers = TcpServers.openAll(slots);
+      serving.listen(slots);
     } finally {
       lock.unlock();
     }
   }
 
   /**
-   * Starts a thread ("jaria-sim-world") that steps the world in real time times {@code speedup} (≤
-   * 0: as fast as it can). Idempotent while running.
+   * Starts a thread ("jaria-sim-" and the {@link #getName() world's name}) that steps the world in
+   * real time times {@code speedup} (≤ 0: as fast as it can). Idempotent while running.
    */
   public void startRealTime(double speedup) {
     lock.lock();
     try {
       requireOpen();
-      if (runner == null) {
-        runner = new RealTimeRunner(this, tickNanos, speedup);
-        runner.start();
-      }
+      serving.startRealTime(this, tickNanos, speedup);
     } finally {
       lock.unlock();
     }
@@ -344,44 +346,22 @@ public final class SimWorld implements AutoCloseable {
 
   /** Stops the real-time thread and waits for it to end; the world can then be stepped by hand. */
   public void stopRealTime() {
-    RealTimeRunner r;
-    lock.lock();
-    try {
-      r = runner;
-    } finally {
-      lock.unlock();
-    }
-    if (r != null) {
-      r.stopAndJoin();
-      lock.lock();
-      try {
-        runner = null;
-      } finally {
-        lock.unlock();
-      }
-    }
+    serving.stopRealTime();
   }
 
   /** Whether a real-time thread is stepping the world. */
   public boolean isRealTime() {
-    lock.lock();
-    try {
-      return runner != null;
-    } finally {
-      lock.unlock();
-    }
+    return locked(serving::isRealTime);
   }
 
   /** Real milliseconds a tick should take (0 when stepped by hand or unthrottled). */
   int realIntervalMillis() {
-    RealTimeRunner r = runner;
-    return r == null ? 0 : r.realIntervalMillis();
+    return serving.realIntervalMillis();
   }
 
   /** Real milliseconds the last tick took (0 when stepped by hand). */
   int lastIntervalMillis() {
-    RealTimeRunner r = runner;
-    return r == null ? 0 : r.lastIntervalMillis();
+    return serving.lastIntervalMillis();
   }
 
   /**
@@ -401,33 +381,21 @@ public final class SimWorld implements AutoCloseable {
 
   /** Replaces the map; robots move to free spots near the new map's start position. */
   public void loadMap(ArMap newMap, String source) {
-    setMap(MapSupport.fromArMap(newMap, source));
-    colored.replaceFromMap(newMap);
+    whileLocked(() -> obstacles.loadMap(newMap, source, slots));
   }
 
   void setMap(WorldMap m) {
-    lock.lock();
-    try {
-      statics.setMap(m);
-      Placement.replaceAll(slots, m.home(), geometry);
-    } finally {
-      lock.unlock();
-    }
+    whileLocked(() -> obstacles.setMap(m, slots));
   }
 
   /** Whether the world has a map with anything solid in it. */
   boolean haveMap() {
-    return !statics.map().isEmpty();
+    return obstacles.haveMap();
   }
 
   /** The current map's physical content. */
   public WorldMap getMap() {
-    lock.lock();
-    try {
-      return statics.map();
-    } finally {
-      lock.unlock();
-    }
+    return locked(obstacles::map);
   }
 
   /** Adds a wall that robots bump into and sensors see. */
@@ -437,12 +405,7 @@ public final class SimWorld implements AutoCloseable {
 
   /** Adds an obstacle made of several walls. */
   public SimObstacle injectObstacle(List<ArLineSegment> walls) {
-    lock.lock();
-    try {
-      return statics.add(walls);
-    } finally {
-      lock.unlock();
-    }
+    return locked(() -> obstacles.inject(walls));
   }
 
   /** Adds a rectangular box centred at (cx, cy), {@code w} × {@code h} mm, turned {@code thDeg}. */
@@ -452,22 +415,12 @@ public final class SimWorld implements AutoCloseable {
 
   /** Removes an injected obstacle; returns whether it was there. */
   public boolean removeObstacle(SimObstacle o) {
-    lock.lock();
-    try {
-      return statics.remove(o);
-    } finally {
-      lock.unlock();
-    }
+    return locked(() -> obstacles.remove(o));
   }
 
   /** The injected obstacles. */
   public List<SimObstacle> getObstacles() {
-    lock.lock();
-    try {
-      return statics.list();
-    } finally {
-      lock.unlock();
-    }
+    return locked(obstacles::list);
   }
 
   /**
@@ -483,21 +436,12 @@ public final class SimWorld implements AutoCloseable {
    * sensors that sit inside their own robot's outline, such as a camera).
    */
   public double castRay(double x, double y, double thDeg, double maxRange, SimRobot self) {
-    lock.lock();
-    try {
-      statics.rebuild();
-      org.jaria.sim.world.RayHit hit = new org.jaria.sim.world.RayHit();
-      double r = Math.toRadians(thDeg);
-      geometry.cast(
-          x, y, Math.cos(r), Math.sin(r), maxRange, self == null ? -1 : self.getIndex(), hit);
-      return hit.distance;
-    } finally {
-      lock.unlock();
-    }
+    return locked(
+        () -> queries.castRay(x, y, thDeg, maxRange, self == null ? -1 : self.getIndex()));
   }
 
   /** The coloured objects cameras see (from the map, or added). */
-  public org.jaria.sim.camera.ColoredObjects coloredObjects() {
+  public ColoredObjects coloredObjects() {
     return colored;
   }
 
@@ -505,26 +449,12 @@ public final class SimWorld implements AutoCloseable {
 
   /** A consistent picture of every robot and obstacle, safe to use from any thread. */
   public SimSnapshot snapshot() {
-    lock.lock();
-    try {
-      List<SimSnapshot.RobotView> views = new ArrayList<>(slots.size());
-      for (RobotSlot s : slots) {
-        views.add(Views.robot(s));
-      }
-      return new SimSnapshot(clock.nanoTime(), views, statics.list());
-    } finally {
-      lock.unlock();
-    }
+    return locked(() -> queries.snapshot(clock.nanoTime(), slots));
   }
 
   /** Number of robots with a client connected. */
   public int connectedClientCount() {
-    lock.lock();
-    try {
-      return (int) slots.stream().filter(s -> s.session != null).count();
-    } finally {
-      lock.unlock();
-    }
+    return locked(() -> queries.connectedClientCount(slots));
   }
 
   WorldHost host() {
@@ -535,16 +465,40 @@ public final class SimWorld implements AutoCloseable {
     return geometry;
   }
 
-  boolean logUnknownOnce(int command) {
-    if (unknownLogged.get(command)) {
-      return false;
-    }
-    unknownLogged.set(command);
-    return true;
+  IgnoredCommandLog ignoredCommands() {
+    return ignored;
+  }
+
+  /**
+   * The commands the robots received but did not carry out (unknown numbers, commands the simulator
+   * does not simulate, commands for devices a robot does not carry), with counts.
+   */
+  public List<org.jaria.sim.server.IgnoredCommand> getIgnoredCommands() {
+    return locked(ignored::snapshot);
   }
 
   List<RobotSlot> slots() {
     return slots;
+  }
+
+  /** Runs {@code query} under the world's lock. */
+  private <T> T locked(Supplier<T> query) {
+    lock.lock();
+    try {
+      return query.get();
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** Runs {@code change} under the world's lock. */
+  private void whileLocked(Runnable change) {
+    lock.lock();
+    try {
+      change.run();
+    } finally {
+      lock.unlock();
+    }
   }
 
   void requireOpen() {
@@ -565,12 +519,8 @@ public final class SimWorld implements AutoCloseable {
       closed = true;
       for (RobotSlot s : slots) {
         s.endSession("the simulator is shutting down");
-        TcpServers.unbind(s);
       }
-      if (servers != null) {
-        servers.close();
-        servers = null;
-      }
+      serving.closePorts(slots);
     } finally {
       lock.unlock();
     }

@@ -3,7 +3,9 @@ package org.jaria.sim;
 import java.io.IOException;
 import java.nio.file.Path;
 import org.jaria.clock.Clock;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
+import org.jaria.sim.server.IgnoredCommand;
 import org.jaria.sim.server.ServerPackets;
 import org.jaria.sim.server.SessionHost;
 import org.jaria.sim.world.WorldGeometry;
@@ -48,12 +50,26 @@ final class WorldHost implements SessionHost {
   }
 
   @Override
-  public void unknownCommand(int command, String robotName) {
-    if (world.logUnknownOnce(command)) {
-      log.warn(
-          "{}: command {} is not supported by the simulator and is ignored (logged once)",
-          robotName,
-          command);
+  public void ignoredCommand(int command, IgnoredCommand.Reason reason, String robotName) {
+    if (!world.ignoredCommands().record(command, reason)) {
+      return;
+    }
+    ArCommands c = ArCommands.fromNumber(command);
+    String what = c == null ? "command " + command : "command " + command + " (" + c + ")";
+    switch (reason) {
+      case UNKNOWN ->
+          log.warn("{}: {} is not an ARCOS command; ignored (logged once)", robotName, what);
+      case NOT_SIMULATED ->
+          log.warn(
+              "{}: {} is not simulated (no such device in the simulator); ignored (logged once)",
+              robotName,
+              what);
+      case NO_DEVICE ->
+          log.warn(
+              "{}: {} needs a device this robot does not carry; ignored (logged once). Give the"
+                  + " robot the device (RobotOptions.withLaser/withGyro/withGripper, or --laser)",
+              robotName,
+              what);
     }
   }
 

@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Predicate;
 import org.jaria.connection.ArDeviceConnection;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
 import org.jaria.protocol.ArRobotPacketReceiver;
 import org.jaria.protocol.CommandCodec;
@@ -68,7 +69,7 @@ final class ArcosTestClient {
       // the connection was dropped: tests look at what arrived before
     }
     if (pulseEveryTicks > 0 && ticks % pulseEveryTicks == 0) {
-      com(0);
+      com(ArCommands.PULSE);
     }
   }
 
@@ -110,6 +111,26 @@ final class ArcosTestClient {
     send(out);
   }
 
+  void com(ArCommands cmd) {
+    com(cmd.getNumber());
+  }
+
+  void comInt(ArCommands cmd, int v) {
+    comInt(cmd.getNumber(), v);
+  }
+
+  void com2Bytes(ArCommands cmd, int hi, int lo) {
+    com2Bytes(cmd.getNumber(), hi, lo);
+  }
+
+  void comData(ArCommands cmd, byte[] data) {
+    comData(cmd.getNumber(), data);
+  }
+
+  void comPayload(ArCommands cmd, byte[] payload) {
+    comPayload(cmd.getNumber(), payload);
+  }
+
   /** Steps until a packet matching {@code p} arrived (at most {@code maxTicks}); returns it. */
   ArRobotPacket awaitPacket(Predicate<ArRobotPacket> p, int maxTicks) {
     int from = received.size();
@@ -142,9 +163,9 @@ final class ArcosTestClient {
       com(sync);
       awaitId(sync);
     }
-    comInt(1, 1);
+    comInt(ArCommands.OPEN, 1);
     awaitPacket(q -> PacketIds.isStandardSip(q.getID()), 50);
-    comInt(4, 1);
+    comInt(ArCommands.ENABLE, 1);
     world.step();
     return this;
   }

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.packets.StandardSip;
 import org.jaria.sim.robot.RobotBody;
 import org.junit.jupiter.api.Test;
@@ -31,7 +32,7 @@ class CollisionTest {
     try (SimWorld w = corridor()) {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(11, 300);
+      c.comInt(ArCommands.VEL, 300);
       w.advanceMillis(6000);
       double front = r.getModel().getLengthFront();
       double x = r.getTruePose().x();
@@ -49,7 +50,7 @@ class CollisionTest {
       assertEquals(1 << 2, r.getFrontBumpers());
       assertEquals(0, r.getRearBumpers());
 
-      c.comInt(11, -300);
+      c.comInt(ArCommands.VEL, -300);
       w.advanceMillis(500);
       assertFalse(r.isStalled(), "backing away clears the stall");
       assertTrue(r.getTruePose().x() < x - 20, "backed away");
@@ -61,7 +62,7 @@ class CollisionTest {
     try (SimWorld w = corridor()) {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(11, -300);
+      c.comInt(ArCommands.VEL, -300);
       w.advanceMillis(6000);
       double x = r.getTruePose().x();
       double rear = r.getModel().getLengthRear();
@@ -79,7 +80,7 @@ class CollisionTest {
     try (SimWorld w = SimWorld.ofLines(walls, ArPose.ORIGIN, OPTS)) {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(11, 200);
+      c.comInt(ArCommands.VEL, 200);
       w.advanceMillis(8000);
       assertTrue(r.isStalled());
       int bumpers = r.getFrontBumpers();
@@ -95,7 +96,7 @@ class CollisionTest {
       SimRobot a = w.addRobot(RobotOptions.of("p3dx-sh").withStartPose(new ArPose(0, 0, 0)));
       SimRobot b = w.addRobot(RobotOptions.of("p3at-sh").withStartPose(new ArPose(1500, 0, 180)));
       ArcosTestClient c = new ArcosTestClient(w, a).open();
-      c.comInt(11, 300);
+      c.comInt(ArCommands.VEL, 300);
       w.advanceMillis(8000);
       assertTrue(a.isStalled());
       double gap = b.getTruePose().x() - a.getTruePose().x();
@@ -110,8 +111,8 @@ class CollisionTest {
     try (SimWorld w = corridor()) {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(44, 1); // BUMPSTALL front
-      c.comInt(11, 300);
+      c.comInt(ArCommands.BUMPSTALL, 1); // front
+      c.comInt(ArCommands.VEL, 300);
       w.advanceMillis(6000);
       assertFalse(r.isStalled(), "the drive stopped after the bump, nothing pushes any more");
       assertEquals(0, r.getVel(), 1e-9);
@@ -124,7 +125,7 @@ class CollisionTest {
       SimRobot r = w.addRobot("p3dx-sh");
       w.injectObstacle(new ArLineSegment(100, -1000, 100, 1000));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(11, -300);
+      c.comInt(ArCommands.VEL, -300);
       w.advanceMillis(2000);
       assertTrue(r.getTruePose().x() < -300, "moved away from the wall it stood in");
     }

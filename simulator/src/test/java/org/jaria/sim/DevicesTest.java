@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
 import org.jaria.protocol.packets.EncoderPacket;
 import org.jaria.protocol.packets.GripState;
@@ -32,7 +33,7 @@ class DevicesTest {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
       assertEquals(GripState.PADDLES_CLOSED | GripState.LIFT_UP, r.getGripState(), "starts stored");
-      c.comInt(33, 8); // deploy: open paddles, lower lift
+      c.comInt(ArCommands.GRIPPER, 8); // deploy: open paddles, lower lift
       w.step();
       int moving = r.getGripState();
       assertTrue((moving & GripState.PADDLES_MOVING) != 0);
@@ -45,13 +46,13 @@ class DevicesTest {
       w.advanceMillis((long) (Gripper.LIFT_TRAVEL_MS - Gripper.PADDLE_TRAVEL_MS));
       assertEquals(GripState.PADDLES_OPEN | GripState.LIFT_DOWN, r.getGripState());
       assertEquals(r.getGripState(), c.lastSip().getGripState(), "GRIP_STATE in the SIP");
-      c.comInt(37, 1); // GRIPREQUEST one packet
+      c.comInt(ArCommands.GRIPREQUEST, 1); // one packet
       GripperPacket g = GripperPacket.decode(c.awaitId(PacketIds.GRIPPER));
       assertEquals(1, g.hasGripper());
       assertEquals(GripState.PADDLES_OPEN | GripState.LIFT_DOWN, g.gripState());
-      c.comInt(33, 2); // close
+      c.comInt(ArCommands.GRIPPER, 2); // close
       w.advanceMillis(1000);
-      c.comInt(33, 3); // stop half way
+      c.comInt(ArCommands.GRIPPER, 3); // stop half way
       w.advanceMillis(2000);
       int half = r.getGripState();
       assertEquals(
@@ -64,8 +65,8 @@ class DevicesTest {
     try (SimWorld w = SimWorld.empty(OPTS)) {
       SimRobot r = w.addRobot(RobotOptions.of("p3at-sh").withGyro(true));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(58, 1);
-      c.comInt(21, 60);
+      c.comInt(ArCommands.GYRO, 1);
+      c.comInt(ArCommands.RVEL, 60);
       w.advanceMillis(3000);
       c.clear();
       w.advanceMillis(1000);
@@ -131,9 +132,9 @@ class DevicesTest {
       ArcosTestClient c = new ArcosTestClient(w, r).open();
       r.setDigitalInputs(0xA5);
       r.setAnalog(2, 1000);
-      c.com2Bytes(30, 0x0F, 0x05); // DIGOUT: mask 0x0F, states 0x05
-      c.comInt(35, 2); // ADSEL port 2
-      c.comInt(40, 1); // IOREQUEST one
+      c.com2Bytes(ArCommands.DIGOUT, 0x0F, 0x05); // mask 0x0F, states 0x05
+      c.comInt(ArCommands.ADSEL, 2); // port 2
+      c.comInt(ArCommands.IOREQUEST, 1); // one
       IoPacket io = IoPacket.decode(c.awaitId(PacketIds.IO));
       assertEquals(0xA5, io.digIn()[0]);
       assertEquals(0x05, io.digOut()[0]);
@@ -146,8 +147,8 @@ class DevicesTest {
       assertEquals(0xA5, c.lastSip().getDigIn());
       assertEquals(0x05, c.lastSip().getDigOut());
 
-      c.comInt(19, 2); // ENCODER continuous
-      c.comInt(11, 500);
+      c.comInt(ArCommands.ENCODER, 2); // continuous
+      c.comInt(ArCommands.VEL, 500);
       w.advanceMillis(3000);
       List<ArRobotPacket> enc = c.packets(PacketIds.ENCODER);
       assertTrue(enc.size() >= 25);
@@ -155,7 +156,7 @@ class DevicesTest {
       EncoderPacket last = EncoderPacket.decode(enc.get(enc.size() - 1));
       assertTrue(
           last.left() > first.left() && last.right() > first.right(), "wheels turned forward");
-      c.comInt(19, 0);
+      c.comInt(ArCommands.ENCODER, 0);
       w.step();
       int count = c.packets(PacketIds.ENCODER).size();
       w.advanceMillis(500);
@@ -168,22 +169,22 @@ class DevicesTest {
     try (SimWorld w = SimWorld.empty(OPTS)) {
       SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withStartPose(new ArPose(0, 0, 90)));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(17, 1);
+      c.comInt(ArCommands.JOYREQUEST, 1);
       JoystickPacket j = JoystickPacket.decode(c.awaitId(PacketIds.JOYSTICK));
       assertEquals(512, j.x());
       assertEquals(0, c.lastSip().getCompass(), "no compass until TCM2");
-      c.comInt(45, 1);
-      c.comInt(250, 115); // BATTEST 11.5 V
+      c.comInt(ArCommands.TCM2, 1);
+      c.comInt(ArCommands.BATTEST, 115); // 11.5 V
       w.advanceMillis(200);
       assertEquals(45, c.lastSip().getCompass(), "90° true heading, 2° per unit");
       assertEquals(115, c.lastSip().getBattery());
-      c.comInt(45, 2);
+      c.comInt(ArCommands.TCM2, 2);
       ArRobotPacket t = c.awaitId(PacketIds.TCM2);
       t.resetRead();
       assertEquals(900, t.bufToByte2(), "TCM2pac heading, 0.1°");
-      c.comInt(250, 0);
-      c.comData(15, new byte[] {10, 60, 5, 0, 10, 64}); // SAY: three (duration, tone) pairs
-      c.comInt(92, 0); // SOUNDTOG off
+      c.comInt(ArCommands.BATTEST, 0);
+      c.comData(ArCommands.SAY, new byte[] {10, 60, 5, 0, 10, 64}); // three (duration, tone) pairs
+      c.comInt(ArCommands.SOUNDTOG, 0); // off
       w.advanceMillis(200);
       assertEquals(130, c.lastSip().getBattery());
       assertArrayEquals(new byte[] {10, 60, 5, 0, 10, 64}, r.body().io().getLastSay());
@@ -197,7 +198,7 @@ class DevicesTest {
     try (SimWorld w = SimWorld.ofLines(walls, ArPose.ORIGIN, OPTS)) {
       SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withLaser(true));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(230, 1);
+      c.comInt(ArCommands.SIM_LRF_ENABLE, 1);
       c.clear();
       w.advanceMillis(100);
       List<ArRobotPacket> scan = c.packets(PacketIds.SIM_LASER);
@@ -229,15 +230,16 @@ class DevicesTest {
   }
 
   @Test
-  void ariaSimulatedLaserCommandsGiveExtendedPackets() {
+  void legacyLaserCommandsGiveExtendedPacketsWhenEnabled() {
     try (SimWorld w = SimWorld.empty(OPTS)) {
-      SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withLaser(true));
+      SimRobot r =
+          w.addRobot(RobotOptions.of("p3dx-sh").withLaser(true).withLegacyLaserCommands(true));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      // What ARIA's ArSimulatedLaser sends: start, end, increment ×100, enable extended.
-      c.comInt(36, -45);
-      c.comInt(37, 45);
-      c.comInt(38, 50);
-      c.comInt(35, 2);
+      // What old ARIA's ArSimulatedLaser sends: start, end, increment ×100, enable extended.
+      c.comInt(ArCommands.GRIPPERVAL, -45);
+      c.comInt(ArCommands.GRIPREQUEST, 45);
+      c.comInt(ArCommands.GYROCALCW, 50);
+      c.comInt(ArCommands.ADSEL, 2);
       c.clear();
       w.advanceMillis(100);
       List<ArRobotPacket> scan = c.packets(PacketIds.SIM_LASER_EXTENDED);

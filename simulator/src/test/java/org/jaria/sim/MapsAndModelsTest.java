@@ -83,7 +83,7 @@ class MapsAndModelsTest {
         2D-Map
         Cairn: ForbiddenLine 1000 -1000 0.0 "" ICON "" 1000 -1000 1000 1000
         Cairn: ForbiddenArea 0 0 0.0 "" ICON "" 1500 -500 2000 500
-        Cairn: Dock 0 0 0.0 "" ICON "dock"
+        Cairn: Dock -1500 800 90.0 "" ICON "dock"
         LINES
         3000 -1000 3000 1000
         DATA
@@ -91,7 +91,8 @@ class MapsAndModelsTest {
     try (SimWorld w = SimWorld.load(map, SimOptions.defaults())) {
       assertEquals(3000, w.castRay(0, 0, 0, 10_000), 1e-6);
       SimRobot r = w.addRobot("p3dx-sh");
-      assertEquals(ArPose.ORIGIN, r.getTruePose(), "no RobotHome: the Dock");
+      // Away from the origin, so that starting at the Dock cannot pass for the origin fallback.
+      assertEquals(new ArPose(-1500, 800, 90), r.getTruePose(), "no RobotHome: the Dock");
     }
   }
 

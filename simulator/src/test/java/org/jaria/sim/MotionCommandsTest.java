@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.packets.ArConfigPacket;
 import org.jaria.protocol.packets.PacketIds;
 import org.jaria.protocol.packets.StandardSip;
@@ -33,9 +34,9 @@ class MotionCommandsTest {
 
   @Test
   void velocityFollowsTrapezoidWithSetAccelerations() {
-    client.comInt(5, 500); // SETA +500: acceleration
-    client.comInt(5, -250); // SETA -250: deceleration
-    client.comInt(11, 1000);
+    client.comInt(ArCommands.SETA, 500); // +500: acceleration
+    client.comInt(ArCommands.SETA, -250); // -250: deceleration
+    client.comInt(ArCommands.VEL, 1000);
     world.advanceMillis(500);
     assertEquals(250, robot.getVel(), 1e-6);
     world.advanceMillis(500);
@@ -44,7 +45,7 @@ class MotionCommandsTest {
     assertEquals(1000, robot.getVel(), 1e-6);
     world.advanceMillis(1000);
     assertEquals(1000, robot.getVel(), 1e-6);
-    client.comInt(11, 0);
+    client.comInt(ArCommands.VEL, 0);
     world.advanceMillis(2000);
     assertEquals(500, robot.getVel(), 1e-6);
     world.advanceMillis(2000);
@@ -57,7 +58,7 @@ class MotionCommandsTest {
 
   @Test
   void sipReportsWheelVelocitiesWhileMoving() {
-    client.comInt(11, 400);
+    client.comInt(ArCommands.VEL, 400);
     world.advanceMillis(3000);
     StandardSip sip = client.lastSip();
     assertEquals(400, sip.getLeftVel());
@@ -69,13 +70,13 @@ class MotionCommandsTest {
   @Test
   void moveTravelsTheDistanceAccurately() {
     ArPose start = robot.getTruePose();
-    client.comInt(6, 400); // SETV
-    client.comInt(8, 1000); // MOVE
+    client.comInt(ArCommands.SETV, 400);
+    client.comInt(ArCommands.MOVE, 1000);
     world.advanceMillis(8000);
     ArPose end = robot.getTruePose();
     assertEquals(1000, end.findDistanceTo(start), 0.5);
     assertEquals(0, robot.getVel(), 1e-9);
-    client.comInt(8, -500);
+    client.comInt(ArCommands.MOVE, -500);
     world.advanceMillis(6000);
     assertEquals(500, robot.getTruePose().findDistanceTo(start), 0.5);
   }
@@ -83,24 +84,24 @@ class MotionCommandsTest {
   @Test
   void moveIsClampedToFiveMetres() {
     ArPose start = robot.getTruePose();
-    client.comInt(6, 1500);
-    client.comInt(8, 9000);
+    client.comInt(ArCommands.SETV, 1500);
+    client.comInt(ArCommands.MOVE, 9000);
     world.advanceMillis(15_000);
     assertEquals(5000, robot.getTruePose().findDistanceTo(start), 0.5);
   }
 
   @Test
   void headTakesTheShortestWayAcrossPlusMinus180() {
-    client.comInt(10, 100); // SETRV
-    client.comInt(12, 170);
+    client.comInt(ArCommands.SETRV, 100);
+    client.comInt(ArCommands.HEAD, 170);
     world.advanceMillis(5000);
     assertEquals(170, robot.getTruePose().th(), 0.05);
-    client.comInt(12, -170);
+    client.comInt(ArCommands.HEAD, -170);
     world.advanceMillis(200);
     assertTrue(robot.getRotVel() > 0, "turns counter-clockwise through 180, not 340° back");
     world.advanceMillis(3000);
     assertEquals(0, ArMath.subAngle(robot.getTruePose().th(), -170), 0.05);
-    client.comInt(13, 270); // DHEAD 270 = -90 the short way
+    client.comInt(ArCommands.DHEAD, 270); // 270 = -90 the short way
     world.advanceMillis(200);
     assertTrue(robot.getRotVel() < 0, "DHEAD 270 turns clockwise");
     world.advanceMillis(4000);
@@ -112,21 +113,21 @@ class MotionCommandsTest {
 
   @Test
   void dcheadIsRelativeToTheLastSetpoint() {
-    client.comInt(10, 100);
-    client.comInt(12, 30);
-    client.comInt(22, 30); // DCHEAD: 30 beyond the setpoint 30, whatever the heading now
+    client.comInt(ArCommands.SETRV, 100);
+    client.comInt(ArCommands.HEAD, 30);
+    client.comInt(ArCommands.DCHEAD, 30); // 30 beyond the setpoint 30, whatever the heading now
     world.advanceMillis(4000);
     assertEquals(60, robot.getTruePose().th(), 0.05);
   }
 
   @Test
   void vel2IsDecomposedIntoTranslationAndRotation() {
-    client.com2Bytes(32, 10, 20); // left 200 mm/s, right 400 mm/s
+    client.com2Bytes(ArCommands.VEL2, 10, 20); // left 200 mm/s, right 400 mm/s
     world.advanceMillis(3000);
     double track = 2 / robot.getModel().getDiffConvFactor();
     assertEquals(300, robot.getVel(), 1e-6);
     assertEquals(Math.toDegrees(200 / track), robot.getRotVel(), 1e-6);
-    client.com2Bytes(32, -10, -10); // both back at 200 mm/s
+    client.com2Bytes(ArCommands.VEL2, -10, -10); // both back at 200 mm/s
     world.advanceMillis(4000);
     assertEquals(-200, robot.getVel(), 1e-6);
     assertEquals(0, robot.getRotVel(), 1e-6);
@@ -134,35 +135,35 @@ class MotionCommandsTest {
 
   @Test
   void eStopUsesTheMaximumDecelerationAndIgnoresMotionUntilStopped() {
-    client.comInt(11, 1000);
+    client.comInt(ArCommands.VEL, 1000);
     world.advanceMillis(5000);
     assertEquals(1000, robot.getVel(), 1e-6);
-    client.com(55);
+    client.com(ArCommands.E_STOP);
     world.advanceMillis(250);
     double top = robot.getModel().getTransAccTop();
     assertEquals(1000 - top * 0.25, robot.getVel(), 1e-6);
-    client.comInt(11, 600); // ignored while e-stopping
+    client.comInt(ArCommands.VEL, 600); // ignored while e-stopping
     world.advanceMillis(250);
     assertEquals(0, robot.getVel(), 1e-6);
     world.advanceMillis(1000);
     assertEquals(0, robot.getVel(), 1e-6, "stays stopped until a new motion command");
-    client.comInt(11, 600);
+    client.comInt(ArCommands.VEL, 600);
     world.advanceMillis(3000);
     assertEquals(600, robot.getVel(), 1e-6);
   }
 
   @Test
   void setvAndSetrvAreClampedByTheFirmwareTops() {
-    client.comInt(6, 5000);
-    client.comInt(10, 1000);
-    client.comInt(5, 30_000);
-    client.comInt(23, 30_000);
-    client.comInt(11, 3000);
-    client.comInt(21, 900);
+    client.comInt(ArCommands.SETV, 5000);
+    client.comInt(ArCommands.SETRV, 1000);
+    client.comInt(ArCommands.SETA, 30_000);
+    client.comInt(ArCommands.SETRA, 30_000);
+    client.comInt(ArCommands.VEL, 3000);
+    client.comInt(ArCommands.RVEL, 900);
     world.advanceMillis(4000);
     assertEquals(robot.getModel().getTransVelTop(), robot.getVel(), 1e-6);
     assertEquals(robot.getModel().getRotVelTop(), robot.getRotVel(), 1e-6);
-    client.comInt(18, 1);
+    client.comInt(ArCommands.CONFIG, 1);
     ArConfigPacket c = ArConfigPacket.decode(client.awaitId(PacketIds.CONFIG));
     assertEquals(2200, c.getTransVelMax());
     assertEquals(500, c.getRotVelMax());
@@ -171,22 +172,22 @@ class MotionCommandsTest {
 
   @Test
   void velocityIsLimitedBySetv() {
-    client.comInt(6, 300);
-    client.comInt(11, 800);
+    client.comInt(ArCommands.SETV, 300);
+    client.comInt(ArCommands.VEL, 800);
     world.advanceMillis(3000);
     assertEquals(300, robot.getVel(), 1e-6);
-    client.comInt(20, -40); // SETRVDIR: clockwise maximum only
-    client.comInt(21, -90);
+    client.comInt(ArCommands.SETRVDIR, -40); // clockwise maximum only
+    client.comInt(ArCommands.RVEL, -90);
     world.advanceMillis(3000);
     assertEquals(-40, robot.getRotVel(), 1e-6);
   }
 
   @Test
   void stopDeceleratesNormally() {
-    client.comInt(11, 600);
-    client.comInt(21, 30);
+    client.comInt(ArCommands.VEL, 600);
+    client.comInt(ArCommands.RVEL, 30);
     world.advanceMillis(3000);
-    client.com(29);
+    client.com(ArCommands.STOP);
     world.advanceMillis(1000);
     assertEquals(300, robot.getVel(), 1e-6);
     world.advanceMillis(2000);
@@ -205,13 +206,13 @@ class MotionCommandsTest {
         c.com(s);
         c.awaitId(s);
       }
-      c.comInt(1, 1);
-      c.comInt(11, 500);
+      c.comInt(ArCommands.OPEN, 1);
+      c.comInt(ArCommands.VEL, 500);
       w.advanceMillis(1000);
       assertEquals(0, r.getVel(), 1e-9);
       assertEquals(0, c.lastSip().getFlags() & 1);
-      c.comInt(4, 1);
-      c.comInt(11, 500);
+      c.comInt(ArCommands.ENABLE, 1);
+      c.comInt(ArCommands.VEL, 500);
       w.advanceMillis(3000);
       assertEquals(500, r.getVel(), 1e-9);
     } finally {

@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Arrays;
 import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.packets.ArConfigPacket;
 import org.jaria.protocol.packets.PacketIds;
 import org.jaria.protocol.packets.StandardSip;
@@ -20,15 +21,15 @@ class OdometryAndDeterminismTest {
   /** Drives a fixed script: straight, turn, straight; returns the client. */
   private static ArcosTestClient drive(SimWorld w, SimRobot r) {
     ArcosTestClient c = new ArcosTestClient(w, r).autoPulse(500).open();
-    c.comInt(11, 500);
+    c.comInt(ArCommands.VEL, 500);
     w.advanceMillis(4000);
-    c.comInt(11, 0);
-    c.comInt(21, 45);
+    c.comInt(ArCommands.VEL, 0);
+    c.comInt(ArCommands.RVEL, 45);
     w.advanceMillis(3000);
-    c.comInt(21, 0);
-    c.comInt(11, 400);
+    c.comInt(ArCommands.RVEL, 0);
+    c.comInt(ArCommands.VEL, 400);
     w.advanceMillis(3000);
-    c.comInt(11, 0);
+    c.comInt(ArCommands.VEL, 0);
     w.advanceMillis(3000);
     return c;
   }
@@ -63,15 +64,15 @@ class OdometryAndDeterminismTest {
     try (SimWorld w = SimWorld.empty(opts(e, 1))) {
       SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withStartPose(ArPose.ORIGIN));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(11, 500);
+      c.comInt(ArCommands.VEL, 500);
       w.advanceMillis(3000);
-      c.comInt(11, 0);
+      c.comInt(ArCommands.VEL, 0);
       w.advanceMillis(3000);
       double trueDist = r.getTruePose().x();
       assertEquals(1.05 * trueDist, r.getOdometryPose().x(), 1e-6);
-      c.comInt(21, 30);
+      c.comInt(ArCommands.RVEL, 30);
       w.advanceMillis(2000);
-      c.comInt(21, 0);
+      c.comInt(ArCommands.RVEL, 0);
       w.advanceMillis(2000);
       double trueTurn = r.getTruePose().th();
       assertEquals(0.9 * trueTurn, r.getOdometryPose().th(), 1e-6);
@@ -84,7 +85,7 @@ class OdometryAndDeterminismTest {
     try (SimWorld w = SimWorld.empty(opts(e, 1))) {
       SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withStartPose(ArPose.ORIGIN));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(8, 1100);
+      c.comInt(ArCommands.MOVE, 1100);
       w.advanceMillis(8000);
       assertEquals(1100, r.getOdometryPose().x(), 0.5);
       assertEquals(1000, r.getTruePose().x(), 0.5);
@@ -120,40 +121,41 @@ class OdometryAndDeterminismTest {
     try (SimWorld w = SimWorld.empty(opts(OdometryError.NONE, 1))) {
       SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withStartPose(ArPose.ORIGIN));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(18, 1);
+      c.comInt(ArCommands.CONFIG, 1);
       ArConfigPacket cfg = ArConfigPacket.decode(c.awaitId(PacketIds.CONFIG));
       int ticks = cfg.getTicksMM();
       int rev = cfg.getInt(ArConfigPacket.Field.REV_COUNT);
       assertTrue(ticks > 0 && rev > 0);
 
-      c.comInt(93, 2 * ticks); // TICKSMM doubled: every distance reads half
-      c.comInt(11, 500);
+      c.comInt(ArCommands.TICKSMM, 2 * ticks); // doubled: every distance reads half
+      c.comInt(ArCommands.VEL, 500);
       w.advanceMillis(3000);
-      c.comInt(11, 0);
+      c.comInt(ArCommands.VEL, 0);
       w.advanceMillis(3000);
       assertEquals(r.getTruePose().x() / 2, r.getOdometryPose().x(), 1e-6);
 
-      c.comInt(93, ticks);
+      c.comInt(ArCommands.TICKSMM, ticks);
       int half = rev / 2;
-      c.comInt(88, half); // REVCOUNT halved: every turn reads (about) double
-      c.com(7);
-      c.comInt(21, 30);
+      c.comInt(ArCommands.REVCOUNT, half); // halved: every turn reads (about) double
+      c.com(ArCommands.SETO);
+      c.comInt(ArCommands.RVEL, 30);
       w.advanceMillis(2000);
-      c.comInt(21, 0);
+      c.comInt(ArCommands.RVEL, 0);
       w.advanceMillis(2000);
       double turned = r.getTruePose().th();
       assertTrue(Math.abs(turned) > 30 && Math.abs(turned) < 90, "turned " + turned);
       assertEquals(turned * rev / (double) half, r.getOdometryPose().th(), 0.05);
 
-      c.comInt(88, rev);
-      c.comInt(89, 819); // DRIFTFACTOR +10 %: the left wheel reads long, odometry veers right
-      c.com(7);
+      c.comInt(ArCommands.REVCOUNT, rev);
+      c.comInt(
+          ArCommands.DRIFTFACTOR, 819); // +10 %: the left wheel reads long, odometry veers right
+      c.com(ArCommands.SETO);
       double th0 = r.getTruePose().th();
-      c.comInt(11, 400);
+      c.comInt(ArCommands.VEL, 400);
       w.advanceMillis(3000);
       assertEquals(th0, r.getTruePose().th(), 1e-9, "the robot really drives straight");
       assertTrue(r.getOdometryPose().th() < -1, "odometry " + r.getOdometryPose());
-      c.comInt(18, 1);
+      c.comInt(ArCommands.CONFIG, 1);
       c.clear();
       cfg = ArConfigPacket.decode(c.awaitId(PacketIds.CONFIG));
       assertEquals(819, cfg.getInt(ArConfigPacket.Field.DRIFT_FACTOR));
@@ -183,13 +185,13 @@ class OdometryAndDeterminismTest {
         SimRobot r = w.addRobot(RobotOptions.of("p3at-sh").withGyro(true).withLaser(true));
         w.addRobot("p3dx-sh");
         ArcosTestClient c = new ArcosTestClient(w, r).autoPulse(500).open();
-        c.comInt(58, 1);
-        c.comInt(230, 1);
-        c.comInt(237, 2);
-        c.comInt(19, 2);
+        c.comInt(ArCommands.GYRO, 1);
+        c.comInt(ArCommands.SIM_LRF_ENABLE, 1);
+        c.comInt(ArCommands.SIM_STAT, 2);
+        c.comInt(ArCommands.ENCODER, 2);
         for (int leg = 0; leg < 6; leg++) {
-          c.comInt(11, 300 + 50 * leg);
-          c.comInt(21, leg % 2 == 0 ? 20 : -25);
+          c.comInt(ArCommands.VEL, 300 + 50 * leg);
+          c.comInt(ArCommands.RVEL, leg % 2 == 0 ? 20 : -25);
           w.advanceMillis(5000);
         }
         runs[k] = c.rawIn.toByteArray();

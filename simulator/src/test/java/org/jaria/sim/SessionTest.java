@@ -14,6 +14,7 @@ import java.util.SplittableRandom;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
 import org.jaria.protocol.CommandCodec;
 import org.jaria.protocol.DropReason;
@@ -21,6 +22,7 @@ import org.jaria.protocol.Hex;
 import org.jaria.protocol.packets.ArConfigPacket;
 import org.jaria.protocol.packets.PacketIds;
 import org.jaria.protocol.packets.SimStatPacket;
+import org.jaria.sim.server.IgnoredCommand;
 import org.junit.jupiter.api.Test;
 
 /** The ARCOS session: handshake bytes, watchdog, simulator commands, bad input. */
@@ -45,13 +47,13 @@ class SessionTest {
       c.rawIn.reset();
       c.sendRaw(Hex.parse("FA FB 03 02 00 02"));
       w.step();
-      ArRobotPacket expected = new ArRobotPacket(2);
+      ArRobotPacket expected = new ArRobotPacket(ArCommands.SYNC2);
       expected.strToBuf("JAriaSim").strToBuf("Pioneer").strToBuf("p3at-sh").finalizePacket();
       assertArrayEquals(expected.toByteArray(), c.rawIn.toByteArray());
       c.rawIn.reset();
       w.advanceMillis(500);
       assertEquals(0, c.rawIn.size(), "no SIPs before OPEN");
-      c.comInt(1, 1);
+      c.comInt(ArCommands.OPEN, 1);
       w.step();
       assertTrue(c.rawIn.size() > 0);
       assertTrue(PacketIds.isStandardSip(c.received.get(c.received.size() - 1).getID()));
@@ -74,16 +76,16 @@ class SessionTest {
     try (SimWorld w = SimWorld.empty(opts(2000))) {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient first = new ArcosTestClient(w, r).open();
-      first.comInt(11, 200);
+      first.comInt(ArCommands.VEL, 200);
       w.advanceMillis(300);
       // The first client vanishes without CLOSE; the watchdog stops the robot.
       w.advanceMillis(4000);
       assertEquals(0, r.getVel(), 1e-9);
       first.clear();
-      first.com(0); // a new client program on the same line: SYNC0
+      first.com(ArCommands.SYNC0); // a new client program on the same line
       ArRobotPacket answer = first.awaitPacket(p -> true, 20);
       assertEquals(PacketIds.SIP_STOPPED, answer.getID(), "an open robot answers SYNC0 with a SIP");
-      first.comInt(2, 1); // CLOSE, as ARIA sends it
+      first.comInt(ArCommands.CLOSE, 1); // as ARIA sends it
       w.advanceMillis(300);
       first.clear();
       w.advanceMillis(500);
@@ -93,7 +95,7 @@ class SessionTest {
         first.com(s);
         assertEquals(s, first.awaitPacket(p -> true, 20).getID());
       }
-      first.comInt(1, 1);
+      first.comInt(ArCommands.OPEN, 1);
       first.awaitPacket(p -> PacketIds.isStandardSip(p.getID()), 20);
       assertTrue(r.isSessionOpen());
       assertFalse(r.areMotorsEnabled(), "motors start disabled in every session");
@@ -104,17 +106,17 @@ class SessionTest {
   void outOfSequenceSyncIsIgnoredAndSync0Restarts() {
     try (SimWorld w = SimWorld.empty(opts(2000))) {
       ArcosTestClient c = new ArcosTestClient(w, w.addRobot("p3dx-sh"));
-      c.com(1);
+      c.com(ArCommands.SYNC1);
       w.advanceMillis(100);
       assertTrue(c.received.isEmpty());
-      c.com(0);
+      c.com(ArCommands.SYNC0);
       assertEquals(0, c.awaitPacket(p -> true, 5).getID());
-      c.com(2);
+      c.com(ArCommands.SYNC2);
       w.advanceMillis(100);
       assertEquals(1, c.received.size(), "SYNC2 before SYNC1 gets no answer");
-      c.com(0);
-      c.com(1);
-      c.com(2);
+      c.com(ArCommands.SYNC0);
+      c.com(ArCommands.SYNC1);
+      c.com(ArCommands.SYNC2);
       ArRobotPacket p = c.awaitId(2);
       p.resetRead();
       assertEquals("JAriaSim", p.bufToString());
@@ -126,17 +128,17 @@ class SessionTest {
     try (SimWorld w = SimWorld.empty(opts(2000))) {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(11, 500);
+      c.comInt(ArCommands.VEL, 500);
       w.advanceMillis(1900);
       assertEquals(500, r.getVel(), 1e-9);
       w.advanceMillis(300);
       assertTrue(r.getVel() < 500, "the watchdog decelerates the robot");
       w.advanceMillis(2000);
       assertEquals(0, r.getVel(), 1e-9);
-      c.com(0); // PULSE keeps the link alive but does not restart the motion
+      c.com(ArCommands.PULSE); // keeps the link alive but does not restart the motion
       w.advanceMillis(1000);
       assertEquals(0, r.getVel(), 1e-9);
-      c.comInt(5, 300); // any other command: the robot resumes its last setpoint
+      c.comInt(ArCommands.SETA, 300); // any other command: the robot resumes its last setpoint
       w.advanceMillis(2000);
       assertEquals(500, r.getVel(), 1e-9, "resumes the last speed");
     }
@@ -148,7 +150,7 @@ class SessionTest {
     try (SimWorld w = SimWorld.empty(o)) {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(11, 300);
+      c.comInt(ArCommands.VEL, 300);
       w.advanceMillis(5000);
       assertEquals(300, r.getVel(), 1e-9);
     }
@@ -159,7 +161,7 @@ class SessionTest {
     try (SimWorld w = SimWorld.empty(opts(2000))) {
       SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withGyro(true));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(18, 1);
+      c.comInt(ArCommands.CONFIG, 1);
       ArConfigPacket cfg = ArConfigPacket.decode(c.awaitId(PacketIds.CONFIG));
       assertNotNull(cfg);
       assertEquals("Pioneer", cfg.getType());
@@ -191,21 +193,21 @@ class SessionTest {
               .putInt(4567)
               .putInt(-45)
               .array();
-      c.comPayload(224, pose);
+      c.comPayload(ArCommands.SIM_SET_POSE, pose);
       w.step();
       assertEquals(new ArPose(-3210, 4567, -45), r.getTruePose());
       assertEquals(ArPose.ORIGIN, r.getOdometryPose(), "odometry does not notice");
-      c.comInt(237, 1);
+      c.comInt(ArCommands.SIM_STAT, 1);
       SimStatPacket s = SimStatPacket.decode(c.awaitId(PacketIds.SIMSTAT));
       assertEquals(-3210, s.trueX());
       assertEquals(4567, s.trueY());
       assertEquals(-45, s.trueTh());
       assertEquals(10, s.simInterval());
-      c.comInt(237, 2);
+      c.comInt(ArCommands.SIM_STAT, 2);
       c.clear();
       w.advanceMillis(1000);
       assertEquals(10, c.packets(PacketIds.SIMSTAT).size(), "one before every SIP");
-      c.com(225); // SIM_RESET
+      c.com(ArCommands.SIM_RESET);
       w.step();
       assertEquals(ArPose.ORIGIN, r.getTruePose());
     }
@@ -216,9 +218,9 @@ class SessionTest {
     try (SimWorld w = SimWorld.empty(opts(0))) {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(11, 500);
+      c.comInt(ArCommands.VEL, 500);
       w.advanceMillis(2000);
-      c.com(7);
+      c.com(ArCommands.SETO);
       w.step();
       assertTrue(r.getOdometryPose().findDistanceTo(ArPose.ORIGIN) < 10);
       byte[] p32 =
@@ -229,7 +231,7 @@ class SessionTest {
               .putInt(-200)
               .putInt(90)
               .array();
-      c.comPayload(7, p32);
+      c.comPayload(ArCommands.SETO, p32);
       w.step();
       assertEquals(100_000, r.getOdometryPose().x(), 10);
       assertEquals(90, r.getOdometryPose().th(), 1e-9);
@@ -241,7 +243,7 @@ class SessionTest {
               .putShort((short) 20)
               .putShort((short) -30)
               .array();
-      c.comPayload(7, p16);
+      c.comPayload(ArCommands.SETO, p16);
       w.step();
       assertEquals(-30, r.getOdometryPose().th(), 1e-9);
     }
@@ -269,7 +271,7 @@ class SessionTest {
       assertTrue(r.getDropCounters().get(DropReason.TIMEOUT) >= 1);
       assertTrue(r.getDropCounters().skippedBytes() > 0);
       assertEquals(0, r.getVel(), 1e-9, "nothing corrupt was executed");
-      c.comInt(11, 300);
+      c.comInt(ArCommands.VEL, 300);
       w.advanceMillis(2000);
       assertEquals(300, r.getVel(), 1e-9, "the session still works");
     }
@@ -284,9 +286,11 @@ class SessionTest {
       c.comInt(200, 6);
       c.com(201);
       w.advanceMillis(100);
-      assertFalse(w.logUnknownOnce(200), "200 was logged already");
-      assertFalse(w.logUnknownOnce(201));
-      assertTrue(w.logUnknownOnce(202));
+      assertEquals(
+          List.of(
+              new IgnoredCommand(200, "unknown", IgnoredCommand.Reason.UNKNOWN, 2),
+              new IgnoredCommand(201, "unknown", IgnoredCommand.Reason.UNKNOWN, 1)),
+          w.getIgnoredCommands());
       assertTrue(r.isSessionOpen());
     }
   }
@@ -297,7 +301,7 @@ class SessionTest {
       AtomicInteger code = new AtomicInteger(-1);
       w.setExitHandler(code::set);
       ArcosTestClient c = new ArcosTestClient(w, w.addRobot("p3dx-sh")).open();
-      c.comInt(239, 7);
+      c.comInt(ArCommands.SIM_EXIT, 7);
       w.step();
       assertEquals(7, code.get());
     }
@@ -325,7 +329,7 @@ class SessionTest {
       byte[] name = file.toString().getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
       ByteBuffer b = ByteBuffer.allocate(5 + name.length).order(ByteOrder.LITTLE_ENDIAN);
       b.put((byte) 0x3B).putShort((short) 1).putShort((short) name.length).put(name);
-      c.comPayload(236, b.array());
+      c.comPayload(ArCommands.SIM_CTRL, b.array());
       ArRobotPacket changed = c.awaitId(PacketIds.SIM_MAP_CHANGED);
       changed.resetRead();
       assertEquals(0, changed.bufToUByte(), "loaded by a client, not the user");
@@ -338,7 +342,7 @@ class SessionTest {
       ByteBuffer m = ByteBuffer.allocate(5 + missing.length).order(ByteOrder.LITTLE_ENDIAN);
       m.put((byte) 0x3B).putShort((short) 1).putShort((short) missing.length).put(missing);
       c.clear();
-      c.comPayload(236, m.array());
+      c.comPayload(ArCommands.SIM_CTRL, m.array());
       ArRobotPacket failed = c.awaitId(PacketIds.SIM_MAP_CHANGED);
       failed.resetRead();
       failed.bufToUByte();
@@ -354,7 +358,7 @@ class SessionTest {
           new ArcosTestClient(w, w.addRobot(RobotOptions.of("p3dx-sh").withLaser(true))).open();
       ByteBuffer b = ByteBuffer.allocate(3).order(ByteOrder.LITTLE_ENDIAN);
       b.put((byte) 0x3B).putShort((short) 6);
-      c.comPayload(236, b.array());
+      c.comPayload(ArCommands.SIM_CTRL, b.array());
       ArRobotPacket info = c.awaitId(PacketIds.SIMINFO);
       info.resetRead();
       assertEquals("JAriaSim", info.bufToString());
@@ -385,7 +389,7 @@ class SessionTest {
     try (SimWorld w = SimWorld.empty(opts(0))) {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(11, 400);
+      c.comInt(ArCommands.VEL, 400);
       w.advanceMillis(2000);
       r.dropConnection();
       assertFalse(r.isClientConnected());

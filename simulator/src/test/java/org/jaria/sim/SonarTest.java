@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.packets.StandardSip;
 import org.junit.jupiter.api.Test;
 
@@ -127,7 +128,8 @@ class SonarTest {
     try (SimWorld w = SimWorld.empty(OPTS)) {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comData(3, new byte[] {3, 1, 2}); // array 1 fires transducers 2, 0, 1 (0-based)
+      c.comData(
+          ArCommands.POLLING, new byte[] {3, 1, 2}); // array 1 fires transducers 2, 0, 1 (0-based)
       w.step();
       c.clear();
       long front0 = fired(r, 0, 8);
@@ -148,8 +150,8 @@ class SonarTest {
       for (int i = start; i < front.size(); i++) {
         assertEquals(List.of(2, 0, 1).get((i - start) % 3), front.get(i), "firing order");
       }
-      c.comInt(48, 20); // SONARCYCLE 20 ms
-      c.comInt(28, 2 << 1); // SONAR: bit 0 clear = off, bits 1..3 = array 2
+      c.comInt(ArCommands.SONARCYCLE, 20); // 20 ms
+      c.comInt(ArCommands.SONAR, 2 << 1); // bit 0 clear = off, bits 1..3 = array 2
       w.advanceMillis(100);
       front0 = fired(r, 0, 8);
       rear0 = fired(r, 8, 16);
@@ -166,7 +168,7 @@ class SonarTest {
     try (SimWorld w = SimWorld.empty(OPTS)) {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comData(3, new byte[0]);
+      c.comData(ArCommands.POLLING, new byte[0]);
       w.step();
       c.clear();
       w.advanceMillis(500);

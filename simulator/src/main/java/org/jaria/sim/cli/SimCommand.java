@@ -22,8 +22,12 @@ import picocli.CommandLine.Spec;
 
 /**
  * {@code ./jaria sim}: a headless simulator that any ARIA client can connect to, like MobileSim.
- * Prints where each robot listens, runs until Ctrl-C (or a client's SIM_EXIT) and then closes every
- * port.
+ * Prints where each robot listens, runs until Ctrl-C, a client's SIM_EXIT or the end of {@code
+ * --seconds}, and then closes every port. The world runs in real time, {@code --speedup} times
+ * faster, or {@code --unthrottled} (as fast as the machine can; the old name {@code --lockstep}
+ * still works but says it is deprecated). Lockstep with a client, where simulated time passes only
+ * as the client's program allows, is what {@code org.jaria.sim.client.SimulatedRobot} does in
+ * tests.
  */
 @Command(
     name = "sim",
@@ -61,9 +65,21 @@ public final class SimCommand implements Callable<Integer> {
   Double speedup;
 
   @Option(
-      names = "--lockstep",
-      description = "no wall-clock pacing: ticks run back to back on virtual time")
+      names = "--unthrottled",
+      description =
+          "no wall-clock pacing: ticks run back to back, as fast as the machine can (simulated"
+              + " time still passes in whole ticks)")
+  boolean unthrottled;
+
+  /** The old name of --unthrottled: it never meant lockstep with a client. */
+  @Option(names = "--lockstep", hidden = true, description = "deprecated: use --unthrottled")
   boolean lockstep;
+
+  @Option(
+      names = "--seconds",
+      paramLabel = "S",
+      description = "stop after S seconds of simulated time (default: run until Ctrl-C)")
+  Double seconds;
 
   @Option(names = "--seed", description = "random seed (default ${DEFAULT-VALUE})")
   long seed = 1;
@@ -86,6 +102,13 @@ public final class SimCommand implements Callable<Integer> {
 
   @Option(names = "--laser", description = "give every robot a simulated laser (SIM_LRF_ENABLE)")
   boolean laser;
+
+  @Option(
+      names = "--legacy-laser-commands",
+      description =
+          "with --laser: commands 35-38 set up the laser as in older simulators (old ARIA"
+              + " clients), not ADSEL/GRIPPERVAL/GRIPREQUEST/GYROCALCW")
+  boolean legacyLaserCommands;
 
   private final CountDownLatch stop = new CountDownLatch(1);
   private final AtomicInteger exitCode = new AtomicInteger();
@@ -115,7 +138,8 @@ public final class SimCommand implements Callable<Integer> {
     }
     for (String model : robotModels()) {
       try {
-        world.addRobot(RobotOptions.of(model).withLaser(laser));
+        world.addRobot(
+            RobotOptions.of(model).withLaser(laser).withLegacyLaserCommands(legacyLaserCommands));
       } catch (IllegalArgumentException e) {
         world.close();
         throw new ParameterException(spec.commandLine(), e.getMessage());
@@ -142,12 +166,16 @@ public final class SimCommand implements Callable<Integer> {
 
   /** The world options the command line describes. */
   SimOptions buildOptions() {
-    if (lockstep && speedup != null) {
-      throw new ParameterException(spec.commandLine(), "choose either --speedup or --lockstep");
+    if (isUnthrottled() && speedup != null) {
+      throw new ParameterException(spec.commandLine(), "choose either --speedup or --unthrottled");
     }
     if (speedup != null && !(speedup > 0)) {
       throw new ParameterException(
           spec.commandLine(), "--speedup must be positive, was " + speedup);
+    }
+    if (seconds != null && !(seconds > 0)) {
+      throw new ParameterException(
+          spec.commandLine(), "--seconds must be positive, was " + seconds);
     }
     OdometryError err;
     try {
@@ -169,14 +197,35 @@ public final class SimCommand implements Callable<Integer> {
     }
   }
 
-  /** Speed-up of the world thread (0 = unthrottled). */
-  double pacing() {
-    return lockstep ? 0 : (speedup != null ? speedup : 1);
+  private boolean isUnthrottled() {
+    return unthrottled || lockstep;
+  }
+
+  /**
+   * The speed-up the options ask for: the {@code --speedup} value, 1 by default, or 0 for {@code
+   * --unthrottled} (as fast as possible).
+   */
+  public double pacing() {
+    return isUnthrottled() ? 0 : (speedup != null ? speedup : 1);
+  }
+
+  /**
+   * Says, on {@code err}, that {@code --lockstep} is the old name of {@code --unthrottled}, if it
+   * was used.
+   */
+  public void noteDeprecatedOptions(PrintWriter err) {
+    if (lockstep) {
+      err.println(
+          "note: --lockstep is deprecated; it means --unthrottled (ticks as fast as possible), not"
+              + " lockstep with a client. Use --unthrottled.");
+      err.flush();
+    }
   }
 
   @Override
   public Integer call() throws IOException {
     PrintWriter out = spec.commandLine().getOut();
+    noteDeprecatedOptions(spec.commandLine().getErr());
     SimWorld world = createWorld();
     // On Ctrl-C the JVM exits once the hooks end, so the hook itself closes the world.
     Thread hook =
@@ -199,9 +248,22 @@ public final class SimCommand implements Callable<Integer> {
             r.getName(), r.getModel().getSubtype(), r.getPort());
       }
       out.printf(
-          "map %s, %s; Ctrl-C stops%n",
-          map, lockstep ? "lockstep (unthrottled)" : "speed-up " + pacing());
+          "map %s, %s; %s%n",
+          map,
+          isUnthrottled() ? "unthrottled" : "speed-up " + pacing(),
+          seconds == null
+              ? "Ctrl-C stops"
+              : "stops after " + seconds + " s of simulated time (or Ctrl-C)");
       out.flush();
+      if (seconds != null) {
+        long end = world.getClock().nanoTime() + Math.round(seconds * 1e9);
+        world.addStepListener(
+            () -> {
+              if (world.getClock().nanoTime() >= end) {
+                stop.countDown();
+              }
+            });
+      }
       Runtime.getRuntime().addShutdownHook(hook);
       world.startRealTime(pacing());
       stop.await();

@@ -2,10 +2,14 @@ package org.jaria.sim.client;
 
 import java.time.Duration;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.BooleanSupplier;
+import org.jaria.clock.VirtualClock;
 import org.jaria.robot.ArRobot;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * An {@link ArRobot} connected to a simulated robot in lockstep: both run on the world's virtual
@@ -27,6 +31,11 @@ import org.jaria.sim.SimWorld;
  * nothing of it.
  */
 public final class SimulatedRobot implements AutoCloseable {
+
+  private static final Logger log = LoggerFactory.getLogger(SimulatedRobot.class);
+
+  /** How long a stopped program gets to end after its thread is interrupted, ms (real time). */
+  private static final long PROGRAM_JOIN_MILLIS = 2000;
 
   private final SimWorld world;
   private final SimRobot simRobot;
@@ -170,11 +179,14 @@ public final class SimulatedRobot implements AutoCloseable {
    * @param program the program, given the connected robot
    * @param max the most simulated time to allow
    * @return how the program ended; a program that busy-waits without the clock is {@link
-   *     ProgramResult#STUCK} after {@link #setStuckTimeout} of real time
+   *     ProgramResult#STUCK} after {@link #setStuckTimeout} of real time. The thread of a stuck or
+   *     timed-out program is interrupted and given two seconds to end before this returns; one that
+   *     ignores the interrupt is logged and left running as a daemon.
    */
   public ProgramResult runProgram(java.util.function.Consumer<ArRobot> program, Duration max) {
-    org.jaria.clock.VirtualClock clock = world.getVirtualClock();
+    VirtualClock clock = world.getVirtualClock();
     programFailure = null;
+    AtomicBoolean finished = new AtomicBoolean();
     Thread t =
         new Thread(
             () -> {
@@ -182,29 +194,31 @@ public final class SimulatedRobot implements AutoCloseable {
                 program.accept(robot);
               } catch (RuntimeException | Error e) {
                 programFailure = e;
+              } finally {
+                finished.set(true);
+                clock.wakeWatchers(); // hand control back at once
               }
             },
             "program-" + simRobot.getName());
     t.setDaemon(true);
     long end = clock.nanoTime() + max.toNanos();
+    Duration stuck = Duration.ofNanos(stuckNanos);
     t.start();
     try {
       while (true) {
-        long realDeadline = System.nanoTime() + stuckNanos;
-        while (t.isAlive() && clock.waitingCount() == 0) {
-          if (System.nanoTime() > realDeadline) {
-            t.interrupt();
-            return ProgramResult.STUCK;
-          }
-          Thread.onSpinWait();
-        }
-        if (!t.isAlive()) {
+        // Hand-off: the program runs until it waits on the clock (or ends); only then does the
+        // world move on, so simulated time passes exactly while the program waits.
+        boolean waiting = clock.awaitWaiters(1, stuck, finished::get);
+        if (finished.get()) {
           t.join();
           return programFailure == null ? ProgramResult.FINISHED : ProgramResult.FAILED;
         }
+        if (!waiting) {
+          stop(t, "is stuck: it has neither waited on the robot's clock nor ended in " + stuck);
+          return ProgramResult.STUCK;
+        }
         if (clock.nanoTime() >= end) {
-          t.interrupt();
-          t.join(TimeUnit.SECONDS.toMillis(5));
+          stop(t, "ran out of its " + max + " of simulated time");
           return ProgramResult.TIMED_OUT;
         }
         world.step();
@@ -213,6 +227,26 @@ public final class SimulatedRobot implements AutoCloseable {
       Thread.currentThread().interrupt();
       t.interrupt();
       return ProgramResult.TIMED_OUT;
+    }
+  }
+
+  /**
+   * Interrupts the program thread and waits a bounded time for it to end; a program that ignores
+   * interrupts is left running (a daemon thread) and said so.
+   */
+  private static void stop(Thread t, String why) throws InterruptedException {
+    t.interrupt();
+    t.join(PROGRAM_JOIN_MILLIS);
+    if (t.isAlive()) {
+      log.warn(
+          "program thread {} {} and did not stop within {} ms of being interrupted; it is left"
+              + " running as a daemon. Let the program check Thread.interrupted() or wait on the"
+              + " robot's clock",
+          t.getName(),
+          why,
+          PROGRAM_JOIN_MILLIS);
+    } else {
+      log.info("program thread {} {}; stopped", t.getName(), why);
     }
   }
 

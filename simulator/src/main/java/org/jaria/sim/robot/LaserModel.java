@@ -28,11 +28,25 @@ public final class LaserModel {
   private double originX;
   private double originY;
   private double originTh;
+  private boolean legacyCommands;
 
   /** A laser mounted as {@code model} says. */
   public LaserModel(RobotModel model, RandomGenerator rng) {
     this.model = model;
     this.rng = rng;
+  }
+
+  /**
+   * Whether the robot reads commands 35–38 as this laser's old set-up commands (enable, start, end,
+   * increment) instead of their ARCOS meanings.
+   */
+  public boolean acceptsLegacyCommands() {
+    return legacyCommands;
+  }
+
+  /** Makes the robot read commands 35–38 as this laser's old set-up commands (or not). */
+  public void setAcceptsLegacyCommands(boolean on) {
+    legacyCommands = on;
   }
 
   /** Returns to the default field of view and resolution. */

@@ -7,6 +7,8 @@ import org.jaria.protocol.ArRobotPacket;
 import org.jaria.protocol.ArgKind;
 import org.jaria.protocol.CommandCodec;
 import org.jaria.protocol.DropReason;
+import org.jaria.protocol.packets.SerAuxPacket;
+import org.jaria.sim.robot.LaserModel;
 import org.jaria.sim.robot.MotionController;
 import org.jaria.sim.robot.RobotBody;
 import org.slf4j.Logger;
@@ -14,12 +16,15 @@ import org.slf4j.LoggerFactory;
 
 /**
  * Executes the client commands of an open ARCOS session on the simulated robot (the table in the
- * protocol spec). Unknown commands are ignored and logged once per number.
+ * protocol spec). Commands it does not carry out are recorded with the reason (see {@link
+ * IgnoredCommand}) and logged once: numbers ARCOS does not know, real commands for hardware the
+ * simulator does not have (arm, pan-tilt unit), and commands for a device this robot does not
+ * carry.
  *
- * <p>Commands 35–38 have two meanings: ADSEL, GRIPPERVAL, GRIPREQUEST and GYROCALCW on ARCOS, but
- * the laser set-up commands of the older simulator that ARIA's {@code ArSimulatedLaser} still sends
- * (enable, start angle, end angle, increment). Like MobileSim, a robot that carries a laser takes
- * them as laser commands; a robot without one takes the ARCOS meanings.
+ * <p>Commands 35–38 mean ADSEL, GRIPPERVAL, GRIPREQUEST and GYROCALCW, as on ARCOS. Older
+ * simulators used the same numbers for setting up the laser (enable, start angle, end angle,
+ * increment) and old ARIA clients still send them; a robot made with {@link
+ * org.jaria.sim.RobotOptions#withLegacyLaserCommands} takes them that way instead.
  */
 final class CommandHandler {
 
@@ -34,28 +39,32 @@ final class CommandHandler {
   }
 
   void handle(ArRobotPacket p) {
-    int id = p.getID();
+    ArCommands command = ArCommands.fromNumber(p.getID());
+    if (command == null) {
+      ignored(p.getID(), IgnoredCommand.Reason.UNKNOWN);
+      return;
+    }
     MotionController m = body.motion();
     double heading = body.odometry().getTh();
-    boolean laserCompat = body.laser() != null;
-    switch (id) {
-      case 0 -> {} // PULSE: only resets the watchdog
-      case 1 -> {} // OPEN while open: nothing to do
-      case 2 -> s.close();
-      case 3 -> body.sonar().polling(CommandCodec.readDataArg(p));
-      case 4 -> m.enableMotors(intArg(p, 1) != 0);
-      case 5 -> m.setTransAccel(intArg(p, 0));
-      case 6 -> m.setTransVelMax(intArg(p, 0));
-      case 7 -> seto(p);
-      case 8 -> m.move(intArg(p, 0));
-      case 9, 21 -> m.setRotVel(intArg(p, 0));
-      case 10 -> m.setRotVelMax(intArg(p, 0));
-      case 11 -> m.setVel(intArg(p, 0));
-      case 12 -> m.setHeading(intArg(p, 0));
-      case 13 -> m.deltaHeading(intArg(p, 0), heading);
-      case 15 -> body.io().say(CommandCodec.readDataArg(p));
-      case 17 -> s.joyMode = clampMode(intArg(p, 1));
-      case 18 ->
+    LaserModel laser = body.laser();
+    LaserModel legacyLaser = laser != null && laser.acceptsLegacyCommands() ? laser : null;
+    switch (command) {
+      case PULSE, OPEN -> {} // PULSE only resets the watchdog; OPEN while open does nothing
+      case CLOSE -> s.close();
+      case POLLING -> body.sonar().polling(CommandCodec.readDataArg(p));
+      case ENABLE -> m.enableMotors(intArg(p, 1) != 0);
+      case SETA -> m.setTransAccel(intArg(p, 0));
+      case SETV -> m.setTransVelMax(intArg(p, 0));
+      case SETO -> seto(p);
+      case MOVE -> m.move(intArg(p, 0));
+      case ROTATE, RVEL -> m.setRotVel(intArg(p, 0));
+      case SETRV -> m.setRotVelMax(intArg(p, 0));
+      case VEL -> m.setVel(intArg(p, 0));
+      case HEAD -> m.setHeading(intArg(p, 0));
+      case DHEAD -> m.deltaHeading(intArg(p, 0), heading);
+      case SAY -> body.io().say(CommandCodec.readDataArg(p));
+      case JOYREQUEST -> s.joyMode = clampMode(intArg(p, 1));
+      case CONFIG ->
           s.send(
               ServerPackets.config(
                   s.out(),
@@ -64,101 +73,168 @@ final class CommandHandler {
                   s.host.watchdogMillis(),
                   s.gyroCw,
                   s.gyroCcw));
-      case 19 -> s.encoderMode = clampMode(intArg(p, 1));
-      case 20 -> m.setRotVelMaxDir(intArg(p, 0));
-      case 22 -> m.deltaControlHeading(intArg(p, 0), heading);
-      case 23 -> m.setRotAccel(intArg(p, 0));
-      case 28 -> body.sonar().sonarCommand(intArg(p, 1));
-      case 29 -> m.stop();
-      case 30 -> {
+      case ENCODER -> s.encoderMode = clampMode(intArg(p, 1));
+      case SETRVDIR -> m.setRotVelMaxDir(intArg(p, 0));
+      case DCHEAD -> m.deltaControlHeading(intArg(p, 0), heading);
+      case SETRA -> m.setRotAccel(intArg(p, 0));
+      case SONAR -> body.sonar().sonarCommand(intArg(p, 1));
+      case STOP -> m.stop();
+      case DIGOUT -> {
         int bits = bits16(p);
         body.io().digOut(bits >> 8, bits & 0xFF);
       }
-      case 32 -> {
+      case VEL2 -> {
         int bits = bits16(p);
         double div = body.model().getVel2Divisor();
         m.setVel2((byte) (bits >> 8) * div, (byte) bits * div);
       }
-      case 33 -> {
+      case GRIPPER -> {
         if (body.gripper() != null) {
           body.gripper().command(intArg(p, 0));
+        } else {
+          ignored(command, IgnoredCommand.Reason.NO_DEVICE);
         }
       }
-      case 35 -> {
-        if (laserCompat) {
+      case ADSEL -> {
+        if (legacyLaser != null) {
           s.laserMode = clampMode(intArg(p, 0));
         } else {
           body.io().selectAnalog(intArg(p, 0));
         }
       }
-      case 36 -> {
-        if (laserCompat) {
-          body.laser().setStart(intArg(p, 0));
+      case GRIPPERVAL -> {
+        if (legacyLaser != null) {
+          legacyLaser.setStart(intArg(p, 0));
         } else if (body.gripper() != null) {
           body.gripper().setGripperVal(intArg(p, 0));
-        }
-      }
-      case 37 -> {
-        if (laserCompat) {
-          body.laser().setEnd(intArg(p, 0));
         } else {
-          s.gripMode = clampMode(intArg(p, 1));
+          ignored(command, IgnoredCommand.Reason.NO_DEVICE);
         }
       }
-      case 38 -> {
-        if (laserCompat) {
-          body.laser().setIncrement(intArg(p, 100) / 100.0);
+      case GRIPREQUEST -> {
+        if (legacyLaser != null) {
+          legacyLaser.setEnd(intArg(p, 0));
+        } else {
+          s.gripMode = clampMode(intArg(p, 1)); // GRIPPERpac says "none" on a robot without
+        }
+      }
+      case GYROCALCW -> {
+        if (legacyLaser != null) {
+          legacyLaser.setIncrement(intArg(p, 100) / 100.0);
         } else {
           s.gyroCw = intArg(p, 0) & 0xFFFF;
         }
       }
-      case 39 -> s.gyroCcw = intArg(p, 0) & 0xFFFF;
-      case 40 -> s.ioMode = clampMode(intArg(p, 1));
-      case 44 -> body.setBumpStall(intArg(p, 0));
-      case 45 -> tcm2(intArg(p, 1));
-      case 48 -> body.sonar().setCycle(intArg(p, 40));
-      case 55 -> m.eStop();
-      case 58 -> {
+      case GYROCALCCW -> s.gyroCcw = intArg(p, 0) & 0xFFFF;
+      case IOREQUEST -> s.ioMode = clampMode(intArg(p, 1));
+      case GETAUX -> auxRequest(1, intArg(p, 0));
+      case GETAUX2 -> auxRequest(2, intArg(p, 0));
+      case GETAUX3 -> auxRequest(3, intArg(p, 0));
+      case BUMPSTALL -> body.setBumpStall(intArg(p, 0));
+      case TCM2 -> tcm2(intArg(p, 1));
+      case SONARCYCLE -> body.sonar().setCycle(intArg(p, 40));
+      case E_STOP -> m.eStop();
+      case GYRO -> {
         if (body.gyro() != null) {
           body.gyro().setStreaming(intArg(p, 1) != 0);
+        } else {
+          ignored(command, IgnoredCommand.Reason.NO_DEVICE);
         }
       }
-      case 88 -> body.odometry().setRevCount(intArg(p, 0));
-      case 89 -> body.odometry().setDriftFactor(intArg(p, 0));
-      case 92 -> body.io().setSound(intArg(p, 1) != 0);
-      case 93 -> body.odometry().setTicksMm(intArg(p, 0));
-      case 224 -> simSetPose(p);
-      case 225 -> body.resetToStart();
-      case 230 -> s.laserMode = body.laser() != null ? clampMode(intArg(p, 1)) : 0;
-      case 231 -> {
-        if (body.laser() != null) {
-          body.laser().setStart(intArg(p, -90));
+      case REVCOUNT -> body.odometry().setRevCount(intArg(p, 0));
+      case DRIFTFACTOR -> body.odometry().setDriftFactor(intArg(p, 0));
+      case SOUNDTOG -> body.io().setSound(intArg(p, 1) != 0);
+      case TICKSMM -> body.odometry().setTicksMm(intArg(p, 0));
+      case SIM_SET_POSE -> simSetPose(p);
+      case SIM_RESET -> body.resetToStart();
+      case SIM_LRF_ENABLE -> {
+        s.laserMode = laser != null ? clampMode(intArg(p, 1)) : 0;
+        if (laser == null) {
+          ignored(command, IgnoredCommand.Reason.NO_DEVICE);
         }
       }
-      case 232 -> {
-        if (body.laser() != null) {
-          body.laser().setEnd(intArg(p, 90));
-        }
-      }
-      case 233 -> {
-        if (body.laser() != null) {
-          body.laser().setIncrement(intArg(p, 100) / 100.0);
-        }
-      }
-      case 236 -> simCtrl(p);
-      case 237 -> simStat(intArg(p, 1));
-      case 238 ->
+      case SIM_LRF_SET_FOV_START, SIM_LRF_SET_FOV_END, SIM_LRF_SET_RES -> laserSetting(p, command);
+      case SIM_CTRL -> simCtrl(p);
+      case SIM_STAT -> simStat(intArg(p, 1));
+      case SIM_MESSAGE ->
           log.info("{}: message from client: {}", body.name(), CommandCodec.readStringArg(p));
-      case 239 -> s.host.exitRequested(intArg(p, 0), body.name());
-      case 250 -> body.io().batTest(intArg(p, 0));
-      case 253, 255 -> {
-        log.warn("{}: client sent {} (controller reset); closing the session", body.name(), id);
+      case SIM_EXIT -> s.host.exitRequested(intArg(p, 0), body.name());
+      case BATTEST -> body.io().batTest(intArg(p, 0));
+      case RESET, MAINTENANCE -> {
+        log.warn(
+            "{}: client sent {} (controller reset); closing the session", body.name(), command);
         s.close();
       }
-      // Known commands with nothing to simulate: serial ports, bauds, LCD, charger, PID gains,
-      // joystick drive, motor stall settings, battery info.
-      case 42, 43, 47, 50, 51, 52, 53, 56, 59, 60, 61, 62, 66, 67, 68, 82, 83, 84, 85, 86, 87 -> {}
-      default -> s.host.unknownCommand(id, body.name());
+      // Accepted with nothing to simulate: nothing is attached to the AUX ports, a TCP link has no
+      // baud rate, and the LCD, charger, PID gains, joystick drive, motor stall settings and
+      // battery information have no effect on the simulated robot.
+      case TTY2,
+          TTY3,
+          TTY4,
+          JOYDRIVE,
+          HOSTBAUD,
+          AUX1BAUD,
+          AUX2BAUD,
+          AUX3BAUD,
+          M_STALL,
+          LCDWRITE,
+          BATTERYINFO,
+          CHARGE,
+          ROTKP,
+          ROTKV,
+          ROTKI,
+          TRANSKP,
+          TRANSKV,
+          TRANSKI -> {}
+      // Real ARCOS commands for hardware the simulator does not have.
+      case DROTATE,
+          PTUPOS,
+          ARM_INFO,
+          ARM_STATUS,
+          ARM_INIT,
+          ARM_CHECK,
+          ARM_POWER,
+          ARM_HOME,
+          ARM_PARK,
+          ARM_POS,
+          ARM_SPEED,
+          ARM_STOP,
+          ARM_AUTOPARK,
+          ARM_GRIPPARK ->
+          ignored(command, IgnoredCommand.Reason.NOT_SIMULATED);
+    }
+  }
+
+  private void ignored(ArCommands command, IgnoredCommand.Reason reason) {
+    ignored(command.getNumber(), reason);
+  }
+
+  private void ignored(int command, IgnoredCommand.Reason reason) {
+    s.host.ignoredCommand(command, reason, body.name());
+  }
+
+  /** SIM_LRF_SET_FOV_START/END and SIM_LRF_SET_RES: the laser's field of view and resolution. */
+  private void laserSetting(ArRobotPacket p, ArCommands command) {
+    LaserModel laser = body.laser();
+    if (laser == null) {
+      ignored(command, IgnoredCommand.Reason.NO_DEVICE);
+      return;
+    }
+    switch (command) {
+      case SIM_LRF_SET_FOV_START -> laser.setStart(intArg(p, -90));
+      case SIM_LRF_SET_FOV_END -> laser.setEnd(intArg(p, 90));
+      default -> laser.setIncrement(intArg(p, 100) / 100.0);
+    }
+  }
+
+  /**
+   * GETAUX, GETAUX2, GETAUX3: the robot answers with the bytes its AUX port has received, up to
+   * {@code n}; nothing is attached to the simulated ports, so the answer is a SERAUXpac with no
+   * bytes. 0 flushes the (empty) buffer and gets no answer.
+   */
+  private void auxRequest(int port, int n) {
+    if (n > 0) {
+      s.send(new SerAuxPacket(port, new byte[0]).encode(s.out()));
     }
   }
 
@@ -259,7 +335,7 @@ final class CommandHandler {
         s.tcm2Once = true;
       }
       case 7 -> body.io().setCompassMode(1);
-      default -> s.host.unknownCommand(ArCommands.TCM2.getNumber(), body.name());
+      default -> s.drops().drop(DropReason.MALFORMED, "TCM2 mode " + mode + " (0..7)");
     }
   }
 }

@@ -25,8 +25,11 @@ public interface SessionHost {
   /** Whether the watchdog only warns instead of stopping the robot. */
   boolean watchdogWarnOnly();
 
-  /** Logs an unsupported command once per command number for the whole simulator. */
-  void unknownCommand(int command, String robotName);
+  /**
+   * Records a command the robot did not carry out; the first of each number and reason is logged
+   * (once for the whole simulator).
+   */
+  void ignoredCommand(int command, IgnoredCommand.Reason reason, String robotName);
 
   /** SIM_CTRL load map: loads {@code path} and tells every client (SIM_MAP_CHANGED). */
   void loadMapRequested(String path, String robotName);

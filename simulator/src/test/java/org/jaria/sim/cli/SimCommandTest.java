@@ -15,6 +15,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
 import org.jaria.protocol.CommandCodec;
 import org.jaria.sim.OdometryError;
@@ -144,9 +145,9 @@ class SimCommandTest {
         in.skipNBytes(count - 1);
         assertEquals(sync, id);
       }
-      CommandCodec.comInt(p, 1, 1);
+      CommandCodec.comInt(p, ArCommands.OPEN.getNumber(), 1);
       out.write(p.getBuf(), 0, p.getLength());
-      CommandCodec.comInt(p, 239, 3);
+      CommandCodec.comInt(p, ArCommands.SIM_EXIT.getNumber(), 3);
       out.write(p.getBuf(), 0, p.getLength());
       out.flush();
       runner.join(20_000);

@@ -6,6 +6,7 @@ import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.InetSocketAddress;
 import java.net.Socket;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
 import org.jaria.protocol.CommandCodec;
 import org.jaria.protocol.packets.PacketIds;
@@ -16,17 +17,24 @@ import org.jaria.protocol.packets.PacketIds;
  * reply, OPEN with int 1, CLOSE with int 1. Reads whole frames and checks nothing itself; the tests
  * look at the bytes.
  */
-final class AriaLikeTcpClient implements AutoCloseable {
+public final class AriaLikeTcpClient implements AutoCloseable {
 
   final Socket socket;
   private final InputStream in;
   private final OutputStream out;
   private final ArRobotPacket pkt = new ArRobotPacket();
-  String name;
-  String type;
-  String subtype;
 
-  AriaLikeTcpClient(int port) throws IOException {
+  /** Name, type and subtype from the SYNC2 reply (after {@link #connectLikeAria}). */
+  public String name;
+
+  /** The robot type. */
+  public String type;
+
+  /** The robot subtype, lower-cased. */
+  public String subtype;
+
+  /** Connects to the simulator on localhost:{@code port}. */
+  public AriaLikeTcpClient(int port) throws IOException {
     socket = new Socket();
     socket.connect(new InetSocketAddress(java.net.InetAddress.getLoopbackAddress(), port), 5000);
     socket.setTcpNoDelay(true);
@@ -49,7 +57,17 @@ final class AriaLikeTcpClient implements AutoCloseable {
     write(CommandCodec.com(pkt, cmd));
   }
 
-  void comInt(int cmd, int v) throws IOException {
+  /** Sends a command without argument. */
+  public void com(ArCommands cmd) throws IOException {
+    com(cmd.getNumber());
+  }
+
+  /** Sends a command with an integer argument. */
+  public void comInt(ArCommands cmd, int v) throws IOException {
+    comInt(cmd.getNumber(), v);
+  }
+
+  public void comInt(int cmd, int v) throws IOException {
     write(CommandCodec.comInt(pkt, cmd, v));
   }
 
@@ -74,7 +92,7 @@ final class AriaLikeTcpClient implements AutoCloseable {
   }
 
   /** Reads frames until one has this ID. */
-  ArRobotPacket readUntil(int id) throws IOException {
+  public ArRobotPacket readUntil(int id) throws IOException {
     for (int i = 0; i < 500; i++) {
       byte[] f = readFrame();
       if ((f[3] & 0xFF) == id) {
@@ -89,7 +107,7 @@ final class AriaLikeTcpClient implements AutoCloseable {
    * an earlier client, so send CLOSE 1, drain what is in flight and start over; a reply with
    * another ID restarts the sequence; after SYNC2 read the identification, then OPEN 1.
    */
-  void connectLikeAria() throws IOException {
+  public void connectLikeAria() throws IOException {
     int state = 0;
     for (int tries = 0; state < 3; tries++) {
       if (tries > 50) {
@@ -99,7 +117,7 @@ final class AriaLikeTcpClient implements AutoCloseable {
       byte[] reply = readFrame();
       int id = reply[3] & 0xFF;
       if (id == PacketIds.SIP_STOPPED) {
-        comInt(2, 1);
+        comInt(ArCommands.CLOSE, 1);
         drain();
         state = 0;
       } else if (id != state) {
@@ -114,7 +132,7 @@ final class AriaLikeTcpClient implements AutoCloseable {
         state++;
       }
     }
-    comInt(1, 1);
+    comInt(ArCommands.OPEN, 1);
   }
 
   /** Reads and discards until nothing arrives for 300 ms (ARIA waits out the rest of a cycle). */

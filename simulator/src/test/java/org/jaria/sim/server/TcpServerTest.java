@@ -21,6 +21,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import java.util.stream.Stream;
 import org.jaria.clock.VirtualClock;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
 import org.jaria.protocol.Hex;
 import org.jaria.protocol.packets.ArConfigPacket;
@@ -72,24 +73,24 @@ class TcpServerTest {
         assertEquals("FA FB 03 01 00 01", Hex.format(c.readFrame()));
         c.writeRaw(Hex.parse("FA FB 03 02 00 02"));
         byte[] sync2 = c.readFrame();
-        ArRobotPacket expected = new ArRobotPacket(2);
+        ArRobotPacket expected = new ArRobotPacket(ArCommands.SYNC2);
         expected.strToBuf("JAriaSim").strToBuf("Pioneer").strToBuf("p3dx-sh").finalizePacket();
         assertArrayEquals(expected.toByteArray(), sync2);
 
-        c.comInt(1, 1); // OPEN 1
+        c.comInt(ArCommands.OPEN, 1);
         ArRobotPacket first = c.readUntil(PacketIds.SIP_STOPPED);
         StandardSip sip = new StandardSip();
         assertTrue(sip.decode(first));
         assertEquals(0, sip.getFlags() & 1, "motors disabled until ENABLE");
         c.writeRaw(Hex.parse("FA FB 06 04 3B 01 00 05 3B")); // ENABLE 1, the spec's vector
-        c.comInt(18, 1); // CONFIG
+        c.comInt(ArCommands.CONFIG, 1);
         ArConfigPacket cfg = ArConfigPacket.decode(c.readUntil(PacketIds.CONFIG));
         assertNotNull(cfg);
         assertEquals("p3dx-sh", cfg.getSubType());
         assertEquals("SIM", cfg.getSerialNumber());
 
-        c.comInt(11, 200);
-        c.comInt(21, 10);
+        c.comInt(ArCommands.VEL, 200);
+        c.comInt(ArCommands.RVEL, 10);
         boolean moving = false;
         boolean sonar = false;
         for (int i = 0; i < 60 && !(moving && sonar); i++) {
@@ -97,14 +98,14 @@ class TcpServerTest {
           assertTrue(sip.decode(p));
           moving |= sip.getLeftVel() > 150 && sip.getRightVel() > sip.getLeftVel();
           sonar |= sip.getSonarCount() > 0;
-          c.com(0); // PULSE, as ARIA does when idle
+          c.com(ArCommands.PULSE); // as ARIA does when idle
         }
         assertTrue(moving, "the robot drives as commanded");
         assertTrue(sonar, "SIPs carry sonar readings");
 
         // The same line is taken over by a new program: SYNC0 gets a SIP, CLOSE, start again.
-        c.comInt(11, 0);
-        c.comInt(21, 0);
+        c.comInt(ArCommands.VEL, 0);
+        c.comInt(ArCommands.RVEL, 0);
         await(w, () -> Math.abs(robot.getVel()) < 1e-9 && Math.abs(robot.getRotVel()) < 1e-9);
         c.connectLikeAria();
         assertEquals("JAriaSim", c.name);
@@ -113,9 +114,9 @@ class TcpServerTest {
         c.readUntil(PacketIds.SIP_STOPPED);
         assertTrue(robot.isSessionOpen());
 
-        c.comInt(11, 300);
-        c.comInt(4, 1);
-        c.comInt(11, 300);
+        c.comInt(ArCommands.VEL, 300);
+        c.comInt(ArCommands.ENABLE, 1);
+        c.comInt(ArCommands.VEL, 300);
         await(w, () -> robot.getVel() > 100);
       }
       // The client vanished mid-session without CLOSE: the robot stops, the port is free again.
@@ -136,18 +137,20 @@ class TcpServerTest {
     long fdBefore = openFiles();
     int port;
     SimRobot robot;
+    String worldThread;
     try (SimWorld w = startWorld(5)) {
       robot = w.getRobot(0);
       port = robot.getPort();
+      worldThread = "jaria-sim-" + w.getName();
       Set<String> running = threadNames();
-      assertTrue(running.contains("jaria-sim-world"));
+      assertTrue(running.contains(worldThread), running + " has " + worldThread);
       long fdRunning = openFiles();
       for (int i = 0; i < 50; i++) {
         try (AriaLikeTcpClient c = new AriaLikeTcpClient(port)) {
           c.connectLikeAria();
           c.readUntil(PacketIds.SIP_STOPPED);
           if (i % 2 == 0) {
-            c.comInt(2, 1); // half of them say goodbye, half vanish
+            c.comInt(ArCommands.CLOSE, 1); // half of them say goodbye, half vanish
           }
         }
         await(w, () -> !robot.isClientConnected());
@@ -161,7 +164,7 @@ class TcpServerTest {
             "sockets were closed: " + openFiles() + " vs " + fdRunning);
       }
     }
-    assertFalse(threadNames().contains("jaria-sim-world"), "the world thread ended");
+    assertFalse(threadNames().contains(worldThread), "the world thread ended");
     assertEquals(threadsBefore, threadNames());
     if (fdBefore >= 0) {
       assertTrue(openFiles() <= fdBefore + 5, "every file descriptor released");

@@ -27,6 +27,7 @@ import picocli.CommandLine.Command;
       org.jaria.tools.eztrain.EzTrainCommand.class,
       org.jaria.tools.fx.ScreenshotCommand.class,
       BenchCommand.class,
+      org.jaria.classroom.grading.GradeCommand.class,
       CommandLine.HelpCommand.class
     })
 public final class JariaCli implements Runnable {

@@ -9,7 +9,6 @@ import org.jaria.sim.cli.SimCommand;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Model.OptionSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
@@ -44,6 +43,7 @@ public final class SimGuiCommand implements Callable<Integer> {
     }
     PrintWriter out = spec.commandLine().getOut();
     PrintWriter err = spec.commandLine().getErr();
+    sim.noteDeprecatedOptions(err);
     SimWorld world = sim.createWorld();
     try {
       world.listen();
@@ -63,14 +63,8 @@ public final class SimGuiCommand implements Callable<Integer> {
     }
   }
 
-  /** The pacing the options ask for: --lockstep runs unthrottled, else --speedup (default 1). */
+  /** The pacing the options ask for: 0 for --unthrottled, else --speedup (default 1). */
   double speedup() {
-    OptionSpec lockstep = spec.findOption("--lockstep");
-    if (lockstep != null && Boolean.TRUE.equals(lockstep.getValue())) {
-      return 0;
-    }
-    OptionSpec s = spec.findOption("--speedup");
-    Object v = s == null ? null : s.getValue();
-    return v instanceof Double d ? d : 1;
+    return sim.pacing();
   }
 }

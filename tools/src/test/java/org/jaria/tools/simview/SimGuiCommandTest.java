@@ -20,16 +20,20 @@ class SimGuiCommandTest {
     assertEquals(2.5, c.speedup());
     StringWriter usage = new StringWriter();
     cl.usage(new PrintWriter(usage));
-    for (String o : new String[] {"--gui", "--map", "--robot", "--port", "--lockstep", "--laser"}) {
+    for (String o :
+        new String[] {"--gui", "--map", "--robot", "--port", "--unthrottled", "--laser"}) {
       assertTrue(usage.toString().contains(o), o);
     }
   }
 
   @Test
-  void lockstepMeansAsFastAsPossible() {
+  void unthrottledMeansAsFastAsPossibleAndLockstepIsItsOldName() {
     SimGuiCommand c = new SimGuiCommand();
-    new CommandLine(c).parseArgs("--gui", "--lockstep");
+    new CommandLine(c).parseArgs("--gui", "--unthrottled");
     assertEquals(0, c.speedup());
+    SimGuiCommand old = new SimGuiCommand();
+    new CommandLine(old).parseArgs("--gui", "--lockstep");
+    assertEquals(0, old.speedup());
     SimGuiCommand d = new SimGuiCommand();
     new CommandLine(d).parseArgs();
     assertEquals(1, d.speedup());

@@ -1,0 +1,194 @@
+package org.jaria.classroom.goals;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.jaria.arnl.ArActionLost;
+import org.jaria.arnl.ArActionSlowDownWhenNotCertain;
+import org.jaria.arnl.ArPathPlanningTask;
+import org.jaria.arnl.ArSonarLocalizationTask;
+import org.jaria.classroom.NavigationProgram;
+import org.jaria.classroom.grading.Assignment;
+import org.jaria.classroom.grading.Check;
+import org.jaria.classroom.grading.Fmt;
+import org.jaria.classroom.grading.Grade;
+import org.jaria.classroom.grading.PoseTrace;
+import org.jaria.classroom.grading.Programs;
+import org.jaria.classroom.grading.Solutions;
+import org.jaria.geom.ArPose;
+import org.jaria.map.ArMap;
+import org.jaria.range.ArSonarDevice;
+import org.jaria.robot.ArRobot;
+import org.jaria.sim.OdometryError;
+import org.jaria.sim.SimOptions;
+import org.jaria.sim.SimRobot;
+import org.jaria.sim.SimWorld;
+import org.jaria.sim.client.SimulatedRobot;
+
+/**
+ * Assignment 3: go to named goals with navigation. The student's {@link NavigationProgram} gets a
+ * robot already localized at the home of the bundled office map and the path planning task, and
+ * must visit the goals in the order given, waiting for each to be reached.
+ *
+ * <p>Graded from the simulator's true pose: the robot must stop within {@value #TOLERANCE} mm of
+ * each goal, in order. Odometry drifts as on a real robot, so the sonar localization matters.
+ */
+public final class GoalsAssignment implements Assignment {
+
+  /** The goals, in order. */
+  public static final List<String> GOALS = List.of("Lab Entrance", "Corridor West");
+
+  /** How close to a goal the robot must stop, mm. */
+  public static final double TOLERANCE = 400;
+
+  static final Duration MAX_TIME = Duration.ofMinutes(3);
+
+  private static final long SEED = 5;
+
+  @Override
+  public String id() {
+    return "goals";
+  }
+
+  @Override
+  public String title() {
+    return "Go to named goals with localization and path planning";
+  }
+
+  @Override
+  public Class<?> solutionType() {
+    return NavigationProgram.class;
+  }
+
+  @Override
+  public String solutionClassName() {
+    return "GoalTour";
+  }
+
+  @Override
+  public String solutionShape() {
+    return "a public class that implements org.jaria.classroom.NavigationProgram, with a public"
+        + " constructor taking no arguments (e.g. 'public class GoalTour implements"
+        + " NavigationProgram')";
+  }
+
+  @Override
+  public int points() {
+    return 10;
+  }
+
+  @Override
+  public Grade grade(Class<?> solution) {
+    NavigationProgram program;
+    try {
+      program =
+          Solutions.instantiate(solution, NavigationProgram.class, new Class<?>[0], new Object[0]);
+    } catch (Solutions.SolutionException e) {
+      return new Grade(
+          id(), List.of(Check.fail("solution can be created", points(), e.getMessage())));
+    }
+    ArMap map = ArMap.loadBundled("office");
+    SimOptions options =
+        SimOptions.builder().seed(SEED).odometryError(OdometryError.random(0.02, 0.02)).build();
+    try (SimWorld world = SimWorld.create(map, options)) {
+      SimRobot r = world.addRobot("p3dx-sh");
+      try (SimulatedRobot sim = SimulatedRobot.connect(world, r)) {
+        ArRobot robot = sim.robot();
+        ArSonarDevice sonar = new ArSonarDevice();
+        robot.addRangeDevice(sonar);
+        try (ArSonarLocalizationTask loc =
+                ArSonarLocalizationTask.builder(robot, map)
+                    .sonar(sonar)
+                    .mode(ArSonarLocalizationTask.UpdateMode.SYNCHRONOUS)
+                    .seed(SEED)
+                    .build();
+            ArPathPlanningTask path =
+                ArPathPlanningTask.builder(robot, map)
+                    .sonar(sonar)
+                    .mode(ArPathPlanningTask.PlanMode.SYNCHRONOUS)
+                    .build()) {
+          path.getPathPlanActionGroup().addAction(new ArActionSlowDownWhenNotCertain(loc), 140);
+          path.getPathPlanActionGroup().addAction(new ArActionLost(loc, path), 150);
+          robot.enableMotors();
+          sim.runMillis(1500);
+          if (!loc.localizeRobotAtHomeBlocking()) {
+            throw new IllegalStateException("the grader could not localize the robot at home");
+          }
+          AtomicInteger interrupted = new AtomicInteger();
+          path.addGoalInterruptedCB(g -> interrupted.incrementAndGet());
+          try (PoseTrace trace = new PoseTrace(world, r)) {
+            List<Check> checks = new ArrayList<>();
+            Programs.Ending end =
+                Programs.run(sim, rb -> program.run(rb, path, GOALS), MAX_TIME, 2);
+            checks.add(end.check());
+            sim.runMillis(5000);
+            checks.addAll(goals(map, trace, interrupted.get()));
+            checks.add(
+                Check.of(
+                    "no collisions",
+                    2,
+                    !trace.everStalled(),
+                    "the robot never touched a wall",
+                    "the robot ran into something at "
+                        + trace.firstStallWhere()
+                        + " after "
+                        + Fmt.seconds(trace.firstStallSeconds())
+                        + ": let the path planning task drive (do not add motion commands or"
+                        + " actions of your own while it is active)"));
+            return new Grade(id(), checks);
+          }
+        }
+      }
+    }
+  }
+
+  private List<Check> goals(ArMap map, PoseTrace trace, int interrupted) {
+    List<Check> checks = new ArrayList<>();
+    int from = 0;
+    boolean previousReached = false;
+    for (int k = 0; k < GOALS.size(); k++) {
+      String goal = GOALS.get(k);
+      ArPose p = map.findMapObject(goal).orElseThrow().pose();
+      String name = "stopped at goal " + (k + 1) + " '" + goal + "'";
+      int at = trace.firstStopWithin(p.x(), p.y(), TOLERANCE, 30, from);
+      if (at >= 0) {
+        checks.add(
+            Check.pass(
+                name,
+                3,
+                "stopped "
+                    + Fmt.dist(trace.distance(at, p.x(), p.y()))
+                    + " from it at "
+                    + Fmt.seconds(trace.t(at))));
+        from = at;
+        previousReached = true;
+        continue;
+      }
+      int closest = trace.closestTo(p.x(), p.y(), from);
+      StringBuilder msg =
+          new StringBuilder("your robot never stopped within ")
+              .append(Fmt.dist(TOLERANCE))
+              .append(" of '")
+              .append(goal)
+              .append("' ")
+              .append(Fmt.xy(p.x(), p.y()))
+              .append(previousReached ? " after the previous goal" : "")
+              .append("; the closest it came was ")
+              .append(Fmt.dist(trace.distance(closest, p.x(), p.y())))
+              .append('.');
+      if (interrupted > 0) {
+        msg.append(" A new goal replaced one the robot had not reached yet: after")
+            .append(" path.pathPlanToGoal(name), wait until path.isActive() is false (checking")
+            .append(" path.getState()) before asking for the next goal.");
+      } else {
+        msg.append(" Did you ask for it with path.pathPlanToGoal(\"")
+            .append(goal)
+            .append("\") and wait on the robot's clock while path.isActive()?");
+      }
+      checks.add(Check.fail(name, 3, msg.toString()));
+      previousReached = false;
+    }
+    return checks;
+  }
+}

@@ -1,0 +1,69 @@
+package org.jaria.classroom.grading;
+
+import org.jaria.action.ArAction;
+import org.jaria.action.ArActionDesired;
+import org.jaria.robot.ArRobot;
+
+/**
+ * Wraps a student's action to remember the first exception its {@code fire} throws (the robot
+ * switches a throwing action off and only logs it; the grader wants to tell the student).
+ */
+public final class GuardedAction extends ArAction {
+
+  private final ArAction inner;
+  private volatile Throwable failure;
+  private final java.util.concurrent.atomic.AtomicLong fired =
+      new java.util.concurrent.atomic.AtomicLong();
+
+  /** Guards {@code inner}, under its name. */
+  public GuardedAction(ArAction inner) {
+    super(inner.getName(), inner.getDescription());
+    this.inner = inner;
+  }
+
+  @Override
+  public void setRobot(ArRobot r) {
+    super.setRobot(r);
+    inner.setRobot(r);
+  }
+
+  @Override
+  public ArActionDesired fire(ArActionDesired currentDesired) {
+    fired.incrementAndGet();
+    try {
+      return inner.fire(currentDesired);
+    } catch (RuntimeException | Error e) {
+      if (failure == null) {
+        failure = e;
+      }
+      throw e;
+    }
+  }
+
+  /** The first exception {@code fire} threw, or null. */
+  public Throwable failure() {
+    return failure;
+  }
+
+  /** How many times the action fired. */
+  public long firedCount() {
+    return fired.get();
+  }
+
+  /** A check that the action never threw (worth {@code points}). */
+  public Check check(int points) {
+    Throwable t = failure;
+    if (t == null) {
+      return Check.pass(
+          "fire() runs without errors",
+          points,
+          "fire() ran " + fired.get() + " times without throwing");
+    }
+    return Check.fail(
+        "fire() runs without errors",
+        points,
+        "your fire() threw "
+            + Solutions.describe(t)
+            + "; the robot switched your action off, so it stopped steering");
+  }
+}

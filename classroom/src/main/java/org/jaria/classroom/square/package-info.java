@@ -1,0 +1,2 @@
+/** Assignment 1: a square with motion commands. */
+package org.jaria.classroom.square;

@@ -1,0 +1,2 @@
+/** Assignment 2: wall following with a custom action. */
+package org.jaria.classroom.wall;

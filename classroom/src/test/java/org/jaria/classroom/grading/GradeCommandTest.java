@@ -1,0 +1,124 @@
+package org.jaria.classroom.grading;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+/**
+ * The teacher's command end to end: a folder with a good, a bad, a non-compiling and an endlessly
+ * looping submission is graded, each in a JVM of its own, and every one gets its grade.
+ */
+class GradeCommandTest {
+
+  private static void write(Path dir, String file, String text) throws IOException {
+    Files.createDirectories(dir);
+    Files.writeString(dir.resolve(file), text, StandardCharsets.UTF_8);
+  }
+
+  private static String kit(String which) throws IOException {
+    return Files.readString(Path.of("assignments", "square", which, "Square.java"));
+  }
+
+  private record Run(int exit, String out, String err) {}
+
+  private static Run jaria(String... args) {
+    StringWriter out = new StringWriter();
+    StringWriter err = new StringWriter();
+    CommandLine cl = new CommandLine(new GradeCommand());
+    cl.setOut(new PrintWriter(out));
+    cl.setErr(new PrintWriter(err));
+    int exit = cl.execute(args);
+    return new Run(exit, out.toString(), err.toString());
+  }
+
+  @Test
+  void gradesEverySubmissionWhateverTheOthersDo(@TempDir Path tmp) throws IOException {
+    Path subs = tmp.resolve("submissions");
+    write(subs.resolve("alice"), "Square.java", kit("solution"));
+    write(subs.resolve("bob"), "Square.java", kit("starter"));
+    write(
+        subs.resolve("carol"),
+        "Square.java",
+        """
+        import org.jaria.classroom.RobotProgram;
+        import org.jaria.robot.ArRobot;
+        public class Square implements RobotProgram {
+          public void run(ArRobot robot) {
+            robot.mve(2000);
+          }
+        }
+        """);
+    write(
+        subs.resolve("dave"),
+        "Square.java",
+        """
+        import org.jaria.classroom.RobotProgram;
+        import org.jaria.robot.ArRobot;
+        public class Square implements RobotProgram {
+          private long n;
+          public Square() {
+            while (n >= 0) { n++; }
+          }
+          public void run(ArRobot robot) {}
+        }
+        """);
+    Path out = tmp.resolve("report");
+    // A good submission's JVM needs about 2 s; dave's never ends and is killed at the limit.
+    Run r =
+        jaria("--assignment", "square", "--timeout", "12", "-o", out.toString(), subs.toString());
+    assertEquals(0, r.exit(), r.err());
+
+    Map<String, String> rows =
+        r.out()
+            .lines()
+            .filter(l -> l.matches("^(alice|bob|carol|dave) .*"))
+            .collect(Collectors.toMap(l -> l.substring(0, l.indexOf(' ')), l -> l, (a, b) -> a));
+    assertTrue(rows.get("alice").matches("alice +10/10 +GRADED .*"), r.out());
+    assertTrue(rows.get("bob").matches("bob +\\d/10 +GRADED .*corner 2.*"), r.out());
+    assertTrue(rows.get("carol").matches("carol +0/10 +COMPILE_ERROR .*"), r.out());
+    assertTrue(rows.get("dave").matches("dave +0/10 +TIMED_OUT .*"), r.out());
+    assertTrue(
+        r.out().contains("Square.java:5: error: cannot find symbol"),
+        "the compile error is shown with its line:\n" + r.out());
+
+    String md = Files.readString(out.resolve("report.md"));
+    assertTrue(md.contains("| alice | 10/10 | GRADED | - |"), md);
+    String html = Files.readString(out.resolve("report.html"));
+    assertTrue(html.contains("<td>dave</td>") || html.contains(">dave</a>"), html);
+    assertTrue(Files.readString(out.resolve("report.txt")).contains("[FAIL] compiles"));
+  }
+
+  @Test
+  void listsTheAssignmentsAndExplainsBadArguments(@TempDir Path tmp) throws IOException {
+    Run list = jaria("--list");
+    assertEquals(0, list.exit());
+    for (String id : List.of("square", "wall", "goals", "ball")) {
+      assertTrue(list.out().contains(id + " "), list.out());
+    }
+    Run unknown = jaria("--assignment", "maze", tmp.toString());
+    assertEquals(2, unknown.exit());
+    assertTrue(unknown.err().contains("no assignment called 'maze'"), unknown.err());
+    Run empty = jaria("--assignment", "square", tmp.toString());
+    assertEquals(2, empty.exit());
+    assertTrue(empty.err().contains("no submissions in"), empty.err());
+  }
+
+  @Test
+  void aFolderOfJavaFilesIsOneSubmission(@TempDir Path tmp) throws IOException {
+    write(tmp.resolve("mine"), "Square.java", kit("solution"));
+    assertEquals(List.of(tmp.resolve("mine")), Grader.submissions(tmp.resolve("mine")));
+    assertEquals(List.of(tmp.resolve("mine")), Grader.submissions(tmp));
+  }
+}

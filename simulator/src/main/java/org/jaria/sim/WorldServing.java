@@ -1,0 +1,112 @@
+package org.jaria.sim;
+
+import java.io.IOException;
+import java.util.List;
+import java.util.concurrent.locks.ReentrantLock;
+import org.jaria.clock.VirtualClock;
+import org.jaria.sim.server.SessionHost;
+
+/**
+ * How a world meets the outside: the robots' TCP ports and the thread that steps the world in real
+ * time. Everything but {@link #stopRealTime} runs under the world's lock.
+ */
+final class WorldServing {
+
+  private final ReentrantLock lock;
+  private TcpServers servers;
+  private RealTimeRunner runner;
+
+  WorldServing(ReentrantLock worldLock) {
+    this.lock = worldLock;
+  }
+
+  /** Opens every robot's port, once (idempotent). */
+  void listen(List<RobotSlot> slots) throws IOException {
+    if (servers == null) {
+      servers = TcpServers.openAll(slots);
+    }
+  }
+
+  /** Opens the port of a robot added while listening. */
+  void robotAdded(RobotSlot slot) {
+    if (servers != null) {
+      servers.bindLate(slot);
+    }
+  }
+
+  /** Gives clients that connected since the last tick to their robots. */
+  void acceptPending(VirtualClock clock, SessionHost host) {
+    if (servers != null) {
+      servers.acceptPending((slot, c) -> TcpServers.attach(slot, c, clock, host));
+    }
+  }
+
+  /**
+   * Throws if a real-time thread steps the world and the caller is not that thread.
+   *
+   * @throws IllegalStateException saying how to step by hand
+   */
+  void checkMayStep() {
+    if (runner != null && !runner.isRunnerThread()) {
+      throw new IllegalStateException(
+          "the world runs in real time; stop it with stopRealTime() before stepping by hand");
+    }
+  }
+
+  /** Starts the real-time thread unless one runs. */
+  void startRealTime(SimWorld world, long tickNanos, double speedup) {
+    if (runner == null) {
+      runner = new RealTimeRunner(world, tickNanos, speedup);
+      runner.start();
+    }
+  }
+
+  /** Stops the real-time thread and waits for it, without holding the lock while waiting. */
+  void stopRealTime() {
+    RealTimeRunner r;
+    lock.lock();
+    try {
+      r = runner;
+    } finally {
+      lock.unlock();
+    }
+    if (r != null) {
+      r.stopAndJoin();
+      lock.lock();
+      try {
+        if (runner == r) {
+          runner = null;
+        }
+      } finally {
+        lock.unlock();
+      }
+    }
+  }
+
+  boolean isRealTime() {
+    return runner != null;
+  }
+
+  /** Real milliseconds a tick should take (0 when stepped by hand or unthrottled). */
+  int realIntervalMillis() {
+    RealTimeRunner r = runner;
+    return r == null ? 0 : r.realIntervalMillis();
+  }
+
+  /** Real milliseconds the last tick took (0 when stepped by hand). */
+  int lastIntervalMillis() {
+    RealTimeRunner r = runner;
+    return r == null ? 0 : r.lastIntervalMillis();
+  }
+
+  /** Closes every port. */
+  void closePorts(List<RobotSlot> slots) {
+    for (RobotSlot s : slots) {
+      TcpServers.unbind(s);
+    }
+    if (servers != null) {
+      servers.close();
+      servers = null;
+    }
+  }
+}
