@@ -1,5 +1,6 @@
 package org.jaria.tools.cli;
 
+import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.jaria.tools.bench.ProtocolBenchmark;
 import picocli.CommandLine.Command;
@@ -17,7 +18,8 @@ import picocli.CommandLine.Spec;
       BenchCommand.Vision.class,
       BenchCommand.Arnl.class,
       BenchCommand.Actions.class,
-      BenchCommand.Net.class
+      BenchCommand.Net.class,
+      BenchCommand.Mapper.class
     })
 final class BenchCommand implements Runnable {
 
@@ -133,6 +135,34 @@ final class BenchCommand implements Runnable {
     @Override
     public Integer call() throws Exception {
       spec.commandLine().getOut().println(org.jaria.net.bench.NetBenchmark.run(quick));
+      return 0;
+    }
+  }
+
+  /** {@code jaria bench mapper}. */
+  @Command(
+      name = "mapper",
+      description =
+          "Map editor frame times (draw, and draw + pixels) while zooming and panning a"
+              + " 60,000-point map, headless software rendering.")
+  static final class Mapper implements Callable<Integer> {
+
+    @Spec CommandSpec spec;
+
+    @Option(
+        names = "--map",
+        paramLabel = "FILE",
+        description = "Time this map instead of the generated 60,000-point floor plan.")
+    Path map;
+
+    @Option(names = "--quick", description = "Fewer frames a row (less precise).")
+    boolean quick;
+
+    @Override
+    public Integer call() throws Exception {
+      spec.commandLine()
+          .getOut()
+          .println(org.jaria.tools.mapper.MapperBenchmark.run(map, quick ? 40 : 200));
       return 0;
     }
   }

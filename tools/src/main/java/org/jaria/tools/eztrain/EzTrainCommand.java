@@ -48,6 +48,19 @@ public final class EzTrainCommand implements Callable<Integer>, AppCommand {
   String device;
 
   @Option(
+      names = "--sim-camera",
+      description =
+          "Start with live video from the simulator's camera: a simulated robot in the hall"
+              + " looking at coloured things.")
+  boolean simCamera;
+
+  @Option(
+      names = "--sim-port",
+      paramLabel = "PORT",
+      description = "TCP port of that simulated robot (default 8101; 0 = any; -1 = none).")
+  Integer simPort;
+
+  @Option(
       names = "-p",
       paramLabel = "PORT",
       description = "ACTS server port (default 5001; 0 = any).")
@@ -129,6 +142,10 @@ public final class EzTrainCommand implements Callable<Integer>, AppCommand {
       if (w < 1 || h < 1 || w > 4095 || h > 4095) {
         throw new IllegalArgumentException("-W and -H must be 1..4095 pixels, got " + w + "x" + h);
       }
+      int sp = simPort != null ? simPort : d.simPort();
+      if (sp < -1 || sp > 65535) {
+        throw new IllegalArgumentException("--sim-port must be -1..65535, got " + sp);
+      }
       int mb = minBlob != null ? minBlob : d.minBlobSize();
       if (mb < 1 || mb > 4095) {
         throw new IllegalArgumentException("-w must be 1..4095 pixels, got " + mb);
@@ -147,7 +164,9 @@ public final class EzTrainCommand implements Callable<Integer>, AppCommand {
           rects,
           m,
           Path.of(""),
-          blobStats);
+          blobStats,
+          simCamera,
+          sp);
     } catch (IllegalArgumentException e) {
       throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage(), e);
     }

@@ -1,9 +1,12 @@
 package org.jaria.tools.eztrain;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.jaria.acts.image.CameraSource;
 import org.jaria.acts.image.ImageFiles;
+import org.jaria.acts.image.ImageSource;
+import org.jaria.acts.image.RgbImage;
 import org.jaria.tools.fx.AppPrefs;
 import org.jaria.tools.fx.Prompts;
 
@@ -77,17 +80,37 @@ final class EzTrainFiles {
     prefs.put("device", device);
     w.submitIo(
         "Opening camera " + device,
-        () -> CameraSource.open(device, session.width(), session.height()),
+        () -> firstFrame(CameraSource.open(device, session.width(), session.height())),
         w::useVideoSource,
         "Without a camera, train on a still image: File → Load Image.");
   }
 
+  /** Trains on live video from the simulator's camera (see {@link SimulatorCamera}). */
   void simulatorCamera() {
     w.submitIo(
         "Opening the simulator's camera",
-        () -> w.simCameraHook().open(session.width(), session.height()),
+        () -> firstFrame(w.simCameraHook().open(session.width(), session.height())),
         w::useVideoSource,
-        "");
+        "Train on a still image (File → Load Image) or a real camera (File → Live Video)"
+            + " instead.");
+  }
+
+  /**
+   * Reads the source's first frame into the session (worker thread), so that work queued after
+   * opening it — training from the command line, a screenshot — sees the video, not the picture
+   * shown before.
+   */
+  private ImageSource firstFrame(ImageSource source) throws IOException {
+    try {
+      int[] px = new int[source.width() * source.height()];
+      if (source.nextFrame(px)) {
+        session.setFrame(new RgbImage(source.width(), source.height(), px));
+      }
+      return source;
+    } catch (IOException | RuntimeException e) {
+      source.close();
+      throw e;
+    }
   }
 
   void channelFileEntered() {

@@ -52,6 +52,16 @@ final class EzTrainMenus {
                 null,
                 item("Blob Stats", "menu-blob-stats", "Shortcut+B", w::blobStats),
                 item("Timing", "menu-timing", "Shortcut+T", w::timing)));
+    addHelp(w);
+  }
+
+  private void addHelp(EzTrainWindow w) {
+    bar.getMenus()
+        .add(
+            new Menu(
+                "_Help",
+                null,
+                item("Keyboard Shortcuts", "menu-keys", "F1", () -> w.showShortcuts(bar))));
   }
 
   MenuBar menuBar() {
@@ -70,6 +80,7 @@ final class EzTrainMenus {
 
   private static Menu settings(EzTrainState state) {
     Menu view = new Menu("View Mode");
+    view.setId("menu-view");
     ToggleGroup vg = new ToggleGroup();
     for (ViewMode m : ViewMode.values()) {
       RadioMenuItem r = new RadioMenuItem(m.label() + "    " + m.key());
@@ -81,20 +92,24 @@ final class EzTrainMenus {
       view.getItems().add(r);
     }
     Menu brush = new Menu("Brush Size");
+    brush.setId("menu-brush");
     ToggleGroup bg = new ToggleGroup();
     for (int s = 1; s <= 9; s += 2) {
       int size = s;
       RadioMenuItem r = new RadioMenuItem(s + " × " + s);
+      r.setId("menu-brush-" + s);
       r.setToggleGroup(bg);
       r.setSelected(state.brush.get() == s);
       r.setOnAction(e -> state.brush.set(size));
       brush.getItems().add(r);
     }
     Menu mag = new Menu("Magnification");
+    mag.setId("menu-magnification");
     ToggleGroup mg = new ToggleGroup();
     for (int m = 1; m <= 6; m++) {
       int f = m;
       RadioMenuItem r = new RadioMenuItem(m + "×");
+      r.setId("menu-magnification-" + m);
       r.setToggleGroup(mg);
       r.setSelected(state.magnification.get() == m);
       r.setOnAction(e -> state.magnification.set(f));
@@ -106,16 +121,18 @@ final class EzTrainMenus {
         null,
         view,
         brush,
-        colors("Draw Color", state.drawColor),
-        colors("Thresh Color", state.threshColor),
+        colors("Draw Color", "menu-draw", state.drawColor),
+        colors("Thresh Color", "menu-thresh", state.threshColor),
         mag);
   }
 
-  private static Menu colors(String title, ObjectProperty<MarkColor> prop) {
+  private static Menu colors(String title, String id, ObjectProperty<MarkColor> prop) {
     Menu m = new Menu(title);
+    m.setId(id);
     ToggleGroup g = new ToggleGroup();
     for (MarkColor c : MarkColor.values()) {
       RadioMenuItem r = new RadioMenuItem(c.label());
+      r.setId(id + "-" + c.name().toLowerCase(Locale.ROOT));
       r.setToggleGroup(g);
       r.setSelected(prop.get() == c);
       r.setOnAction(e -> prop.set(c));

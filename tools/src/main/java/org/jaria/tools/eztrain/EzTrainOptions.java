@@ -20,6 +20,9 @@ import java.util.List;
  * @param magnification 1..6
  * @param baseDir where relative channel file names live
  * @param blobStats whether to print the blob stats once the first image is shown
+ * @param simCamera whether to start with live video from the simulator's camera
+ * @param simPort the TCP port of the simulated robot behind that camera (0: any free port; -1:
+ *     none)
  */
 public record EzTrainOptions(
     Path config,
@@ -35,7 +38,9 @@ public record EzTrainOptions(
     List<int[]> train,
     int magnification,
     Path baseDir,
-    boolean blobStats) {
+    boolean blobStats,
+    boolean simCamera,
+    int simPort) {
 
   /** Copies the list. */
   public EzTrainOptions {
@@ -61,7 +66,9 @@ public record EzTrainOptions(
         List.of(),
         3,
         Path.of(""),
-        false);
+        false,
+        false,
+        8101);
   }
 
   /** These options with another server port (0: any free port, -1: no server). */
@@ -80,7 +87,9 @@ public record EzTrainOptions(
         train,
         magnification,
         baseDir,
-        blobStats);
+        blobStats,
+        simCamera,
+        simPort);
   }
 
   /** These options with another image file. */
@@ -99,7 +108,9 @@ public record EzTrainOptions(
         train,
         magnification,
         baseDir,
-        blobStats);
+        blobStats,
+        simCamera,
+        simPort);
   }
 
   /** These options with another folder for channel files. */
@@ -118,6 +129,32 @@ public record EzTrainOptions(
         train,
         magnification,
         dir,
-        blobStats);
+        blobStats,
+        simCamera,
+        simPort);
+  }
+
+  /**
+   * These options starting (or not) on the simulator's camera, its robot on TCP port {@code port}
+   * (0: any free port; -1: none).
+   */
+  public EzTrainOptions withSimCamera(boolean on, int port) {
+    return new EzTrainOptions(
+        config,
+        image,
+        device,
+        this.port,
+        width,
+        height,
+        minBlobSize,
+        maxFps,
+        view,
+        channel,
+        train,
+        magnification,
+        baseDir,
+        blobStats,
+        on,
+        port);
   }
 }

@@ -1,7 +1,6 @@
 package org.jaria.tools.eztrain;
 
-import java.io.IOException;
-import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -12,6 +11,7 @@ import javafx.geometry.Insets;
 import javafx.geometry.Pos;
 import javafx.scene.Scene;
 import javafx.scene.control.Label;
+import javafx.scene.control.MenuBar;
 import javafx.scene.control.ProgressBar;
 import javafx.scene.control.ScrollPane;
 import javafx.scene.control.SplitPane;
@@ -34,15 +34,14 @@ import org.jaria.acts.blob.TrackerSettings;
 import org.jaria.acts.color.ChannelBank;
 import org.jaria.acts.color.ColorPlane;
 import org.jaria.acts.color.PlaneLimits;
-import org.jaria.acts.image.ImageFiles;
 import org.jaria.acts.image.ImageSource;
-import org.jaria.acts.image.RgbImage;
 import org.jaria.acts.image.TestScene;
 import org.jaria.tools.fx.AppEnvironment;
 import org.jaria.tools.fx.AppPrefs;
 import org.jaria.tools.fx.BackgroundWork;
 import org.jaria.tools.fx.DesktopApp;
 import org.jaria.tools.fx.Prompts;
+import org.jaria.tools.fx.ShortcutHelp;
 import org.jaria.tools.fx.WindowState;
 
 /**
@@ -79,7 +78,10 @@ public final class EzTrainWindow implements DesktopApp {
   private final ActsServerControl server;
   private final CompletableFuture<Void> ready = new CompletableFuture<>();
   private final EzTrainFiles files;
-  private SimCameraHook simCamera = SimCameraHook.NOT_AVAILABLE;
+  private SimCameraHook simCamera;
+  // What the view thread draws, replaced on the JavaFX thread whenever a setting changes (the view
+  // thread must not read JavaFX properties).
+  private volatile ViewRefresher.Params viewParams;
   private VideoFeed feed;
   private Rendered last;
 
@@ -100,17 +102,12 @@ public final class EzTrainWindow implements DesktopApp {
     state.channel.set(options.channel());
     state.threshColor.set(parseColor(prefs.get("threshColor", "BLUE"), MarkColor.BLUE));
     state.drawColor.set(parseColor(prefs.get("drawColor", "RED"), MarkColor.RED));
-    refresher =
-        new ViewRefresher(
-            session,
-            settings,
-            () ->
-                new ViewRefresher.Params(
-                    state.channel.get(),
-                    state.viewMode.get(),
-                    state.threshColor.get().rgb(),
-                    manualTab.isSelected()),
-            this::show);
+    simCamera =
+        new SimulatorCamera(
+            env.interactive() ? options.simPort() : -1,
+            line -> Platform.runLater(() -> print(line)));
+    updateViewParams();
+    refresher = new ViewRefresher(session, settings, () -> viewParams, this::show);
     training = new TrainingPane(new TrainingListener());
     training.setId("training-image");
     files = new EzTrainFiles(this, state, session, prompts, prefs, options);
@@ -140,7 +137,11 @@ public final class EzTrainWindow implements DesktopApp {
     TabPane tabs = new TabPane(consoleTab, manualTab);
     tabs.setTabClosingPolicy(TabPane.TabClosingPolicy.UNAVAILABLE);
     tabs.setMinWidth(380);
-    manualTab.setOnSelectionChanged(e -> refresher.request());
+    manualTab.setOnSelectionChanged(
+        e -> {
+          updateViewParams();
+          refresher.request();
+        });
 
     StackPane imageHolder = new StackPane(training);
     imageHolder.setAlignment(Pos.CENTER);
@@ -187,9 +188,19 @@ public final class EzTrainWindow implements DesktopApp {
     updateTitle();
   }
 
+  private void updateViewParams() {
+    viewParams =
+        new ViewRefresher.Params(
+            state.channel.get(),
+            state.viewMode.get(),
+            state.threshColor.get().rgb(),
+            manualTab.isSelected());
+  }
+
   private void wireState() {
     state.channel.addListener(
         (o, a, b) -> {
+          updateViewParams();
           int c = b.intValue();
           state.trackedBlobs.set(session.bank().getTrackedBlobs(c));
           state.fileName.set(session.bank().getFileName(c));
@@ -206,12 +217,14 @@ public final class EzTrainWindow implements DesktopApp {
         });
     state.viewMode.addListener(
         (o, a, b) -> {
+          updateViewParams();
           refresher.request();
           updateTitle();
         });
     state.threshColor.addListener(
         (o, a, b) -> {
           prefs.put("threshColor", b.name());
+          updateViewParams();
           refresher.request();
         });
     state.drawColor.addListener(
@@ -255,21 +268,18 @@ public final class EzTrainWindow implements DesktopApp {
     if (options.config() != null) {
       files.loadConfig(options.config());
     }
+    // The tutorial image at once; a file, camera or the simulator's camera is opened on the
+    // worker (a big image or a slow camera must not freeze the window) and replaces it.
+    session.setFrame(TestScene.load());
     if (options.device() != null) {
       files.startCamera(options.device());
+    } else if (options.simCamera()) {
+      files.simulatorCamera();
+    } else if (options.image() != null) {
+      files.loadImage(options.image());
     } else {
-      RgbImage start;
-      try {
-        start = options.image() != null ? ImageFiles.read(options.image()) : TestScene.load();
-      } catch (IOException e) {
-        prompts.error("Cannot load image", imageError(options.image(), e));
-        start = TestScene.load();
-      }
-      session.setFrame(start);
       print(
-          "Image "
-              + (options.image() != null ? options.image() : "desk-scene.ppm (the tutorial image)")
-              + " at "
+          "Image desk-scene.ppm (the tutorial image) at "
               + session.width()
               + "x"
               + session.height());
@@ -295,15 +305,6 @@ public final class EzTrainWindow implements DesktopApp {
                       });
         },
         e -> ready.completeExceptionally(e));
-  }
-
-  static String imageError(Path file, Exception e) {
-    return "Reading "
-        + file
-        + " failed: "
-        + e.getMessage()
-        + "\n\nEZ-Train reads PPM (P6/P3), PNG, JPEG, BMP and GIF images. The tutorial image is"
-        + " shown instead.";
   }
 
   // ------------------------------------------------------------------ DesktopApp
@@ -363,6 +364,11 @@ public final class EzTrainWindow implements DesktopApp {
     return last;
   }
 
+  /** The training image (tests). */
+  TrainingPane trainingPane() {
+    return training;
+  }
+
   /** The output area's text (JavaFX thread). */
   public String outputText() {
     return output.getText();
@@ -375,6 +381,11 @@ public final class EzTrainWindow implements DesktopApp {
 
   SimCameraHook simCameraHook() {
     return simCamera;
+  }
+
+  /** The scene behind EZ-Train's own simulator camera, once opened (tests), else null. */
+  org.jaria.tools.simvision.TrainingScene simulatorScene() {
+    return simCamera instanceof SimulatorCamera c ? c.scene() : null;
   }
 
   /** Loading and saving images, cameras, channels and configurations. */
@@ -584,6 +595,28 @@ public final class EzTrainWindow implements DesktopApp {
     }
     b.append("; ").append(server.timing());
     print(b.toString());
+  }
+
+  // ---- help
+
+  /** Help → Keyboard Shortcuts. */
+  void showShortcuts(MenuBar menus) {
+    List<String> intro = new ArrayList<>();
+    intro.add("Keys (not while typing in a field)");
+    for (ViewMode m : ViewMode.values()) {
+      intro.add(String.format(Locale.ROOT, "  %-18s %s view", m.key(), m.label()));
+    }
+    for (TrainTool t : TrainTool.values()) {
+      intro.add(String.format(Locale.ROOT, "  %-18s %s tool", t.key().getName(), t.label()));
+    }
+    intro.add("  Esc                cancel a drag, or quit");
+    intro.add("");
+    intro.add("Mouse on the image");
+    intro.add("  Left drag          Add/Remove: a rectangle; Draw/Erase: a brush stroke");
+    intro.add("  Left click         Pick: print the pixel's colour");
+    intro.add("  Right click        next view mode");
+    intro.add("  Middle click       grab a frame (single-frame video)");
+    prompts.info("Keyboard shortcuts", ShortcutHelp.text(intro, menus));
   }
 
   // ---- quitting

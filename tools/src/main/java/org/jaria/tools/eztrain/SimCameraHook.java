@@ -9,7 +9,9 @@ import org.jaria.acts.image.ImageSource;
  * EzTrainWindow#setSimCameraHook}, or hand a source directly to {@link
  * EzTrainWindow#useVideoSource}.
  *
- * <p>Until the simulator renders camera images, the default hook, {@link #NOT_AVAILABLE}, says so.
+ * <p>By default EZ-Train starts a simulated world of its own ({@link SimulatorCamera}); the
+ * simulator view hands in the camera of a robot in its world instead. {@link #NOT_AVAILABLE} is a
+ * hook for programs that want File → Simulator Camera to explain that there is none.
  */
 @FunctionalInterface
 public interface SimCameraHook {
@@ -21,7 +23,7 @@ public interface SimCameraHook {
    */
   ImageSource open(int width, int height) throws IOException;
 
-  /** The hook used while the simulator has no camera: explains and fails. */
+  /** A hook for when there is no simulator to look through: explains and fails. */
   SimCameraHook NOT_AVAILABLE =
       (w, h) -> {
         throw new IOException(

@@ -100,6 +100,21 @@ final class TrainingPane extends Pane {
     brush = size;
   }
 
+  /** The colour of the tools' rectangle and brush. */
+  Color drawColor() {
+    return drawColor;
+  }
+
+  /** The Draw/Erase brush size shown. */
+  int brush() {
+    return brush;
+  }
+
+  /** The magnification, 1..6. */
+  int magnification() {
+    return magnification;
+  }
+
   /** Abandons a drag in progress. */
   void cancel() {
     start = null;

@@ -30,4 +30,17 @@ public record AppEnvironment(
   public static AppEnvironment headless(HeadlessPrompts prompts) {
     return new AppEnvironment(AppPrefs.inMemory(), w -> prompts, false);
   }
+
+  /**
+   * The environment for another app opened from this one (EZ-Train from the simulator view): the
+   * same dialogs and interactivity, and that app's own settings — the user's settings of {@code
+   * appName} if these are the user's, else a part of these kept apart by a key prefix.
+   */
+  public AppEnvironment forApp(String appName) {
+    AppPrefs p =
+        prefs instanceof AppPrefs.JavaPrefs
+            ? AppPrefs.forApp(appName)
+            : prefs.scoped(appName + ".");
+    return new AppEnvironment(p, prompts, interactive);
+  }
 }

@@ -54,6 +54,30 @@ public interface AppPrefs {
     put(key, Boolean.toString(value));
   }
 
+  /**
+   * These settings seen through a key prefix: {@code scoped("eztrain.").get("window.x")} reads
+   * "eztrain.window.x" here. Lets one app keep another's settings apart from its own.
+   */
+  default AppPrefs scoped(String prefix) {
+    AppPrefs outer = this;
+    return new AppPrefs() {
+      @Override
+      public String get(String key, String def) {
+        return outer.get(prefix + key, def);
+      }
+
+      @Override
+      public void put(String key, String value) {
+        outer.put(prefix + key, value);
+      }
+
+      @Override
+      public void flush() {
+        outer.flush();
+      }
+    };
+  }
+
   /** The user's permanent settings of app {@code appName} (e.g. "mapper"). */
   static AppPrefs forApp(String appName) {
     return new JavaPrefs(Preferences.userRoot().node("org/jaria/tools/" + appName));

@@ -42,6 +42,21 @@ public final class FxPrompts implements Prompts {
   }
 
   @Override
+  public void info(String title, String text) {
+    Alert a = new Alert(Alert.AlertType.INFORMATION);
+    a.initOwner(owner);
+    a.setTitle(title);
+    a.setHeaderText(title);
+    TextArea area = new TextArea(text);
+    area.setEditable(false);
+    area.setStyle("-fx-font-family: monospace;");
+    area.setPrefRowCount(Math.min(24, (int) text.lines().count() + 1));
+    area.setPrefColumnCount(64);
+    a.getDialogPane().setContent(area);
+    a.showAndWait();
+  }
+
+  @Override
   public boolean confirm(String title, String question) {
     Alert a = new Alert(Alert.AlertType.CONFIRMATION, question, ButtonType.OK, ButtonType.CANCEL);
     a.initOwner(owner);

@@ -20,6 +20,15 @@ public interface Prompts {
    */
   void error(String title, String message);
 
+  /**
+   * Shows information the user asked for (Help → Keyboard Shortcuts). Does nothing unless
+   * implemented, so older implementations keep working.
+   *
+   * @param title short title
+   * @param text the information, one item a line
+   */
+  default void info(String title, String text) {}
+
   /** Asks a yes/no question; true for yes (or OK). */
   boolean confirm(String title, String question);
 

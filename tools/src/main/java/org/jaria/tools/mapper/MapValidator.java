@@ -7,6 +7,7 @@ import java.util.Locale;
 import java.util.Map;
 import org.jaria.map.ArMapObject;
 import org.jaria.map.ArMapPoints;
+import org.jaria.tools.fx.PointLayer;
 import org.jaria.tools.mapper.MapProblem.Severity;
 
 /**
@@ -33,6 +34,15 @@ public final class MapValidator {
 
   /** Every problem of {@code content}, errors first, in map order. */
   public List<MapProblem> validate(MapContent content) {
+    ArMapPoints p = content.points();
+    return validate(content, new PointLayer(p.xArray(), p.yArray()));
+  }
+
+  /**
+   * Every problem of {@code content}, errors first, in map order, using an index of its points that
+   * the caller already has (the map view's).
+   */
+  public List<MapProblem> validate(MapContent content, PointLayer points) {
     List<MapProblem> errors = new ArrayList<>();
     List<MapProblem> warnings = new ArrayList<>();
     List<MapObjectEntry> areas = new ArrayList<>();
@@ -87,7 +97,7 @@ public final class MapValidator {
           break;
         }
       }
-      double wall = nearestObstacle(content, x, y);
+      double wall = nearestObstacle(content, points, x, y);
       if (wall < robotRadius) {
         errors.add(
             new MapProblem(
@@ -128,20 +138,22 @@ public final class MapValidator {
     return errors;
   }
 
-  /** Distance from (x, y) to the nearest wall line or sensor point, mm (infinite if none). */
-  static double nearestObstacle(MapContent content, double x, double y) {
+  /**
+   * Distance from (x, y) to the nearest wall line, or to the nearest sensor point if that is closer
+   * than the robot's radius, mm (infinite if neither is near).
+   */
+  double nearestObstacle(MapContent content, PointLayer points, double x, double y) {
     double best = Double.POSITIVE_INFINITY;
     for (MapLine l : content.lines()) {
       best = Math.min(best, MapGeometry.segmentDistance(l.segment(), x, y));
     }
     ArMapPoints p = content.points();
-    double best2 = best * best;
-    for (int i = 0; i < p.size(); i++) {
-      double dx = p.x(i) - x;
-      double dy = p.y(i) - y;
-      best2 = Math.min(best2, dx * dx + dy * dy);
+    // Only points within the radius matter; the index visits just the cells around (x, y).
+    int i = points.nearest(x, y, Math.min(best, robotRadius));
+    if (i >= 0) {
+      best = Math.min(best, Math.hypot(p.x(i) - x, p.y(i) - y));
     }
-    return Math.sqrt(best2);
+    return best;
   }
 
   /** "goal 'Lobby' at (-1860, -22440)". */

@@ -125,6 +125,15 @@ public final class MapView extends Region implements ToolContext {
     return layer;
   }
 
+  /**
+   * Uses {@code layer}, an index of {@code p} made elsewhere (off the JavaFX thread while a big map
+   * loads), instead of indexing {@code p} when it is first drawn.
+   */
+  public void usePoints(ArMapPoints p, PointLayer layer) {
+    this.layer = layer;
+    this.layerOf = p;
+  }
+
   /** The active tool. */
   public MapTool tool() {
     return tool;

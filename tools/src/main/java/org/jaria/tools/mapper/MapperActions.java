@@ -1,13 +1,18 @@
 package org.jaria.tools.mapper;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
 import java.util.BitSet;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import javafx.application.Platform;
 import javafx.scene.control.CheckMenuItem;
 import javafx.scene.control.Menu;
 import javafx.scene.control.MenuBar;
@@ -18,10 +23,12 @@ import javafx.scene.control.ToggleButton;
 import javafx.scene.control.ToggleGroup;
 import javafx.scene.control.ToolBar;
 import javafx.scene.control.Tooltip;
-import javafx.scene.image.WritableImage;
 import javafx.scene.input.KeyCode;
 import javafx.scene.input.KeyCombination;
-import org.jaria.tools.fx.FxImages;
+import org.jaria.acts.image.ImageFiles;
+import org.jaria.acts.image.RgbImage;
+import org.jaria.tools.fx.BackgroundWork;
+import org.jaria.tools.fx.ShortcutHelp;
 
 /**
  * The map editor's menus and tool bar, and the actions behind them. Menu shortcuts use the
@@ -56,6 +63,7 @@ final class MapperActions {
     tool("forbidden-area", new AreaTool(), KeyCode.A, false);
     tool("measure", new MeasureTool(), KeyCode.M, false);
     menuBar = new MenuBar(fileMenu(), editMenu(), viewMenu(), toolsMenu());
+    menuBar.getMenus().add(helpMenu());
     toolBar = new ToolBar();
     for (ToolEntry t : tools.values()) {
       ToggleButton b = new ToggleButton(t.tool().name());
@@ -232,6 +240,30 @@ final class MapperActions {
     return m;
   }
 
+  private Menu helpMenu() {
+    return new Menu(
+        "_Help", null, item("Keyboard Shortcuts", "menu-keys", "F1", this::showShortcuts));
+  }
+
+  /** Help → Keyboard Shortcuts. */
+  void showShortcuts() {
+    List<String> intro = new ArrayList<>();
+    intro.add("Tools (keys work while the map has the keyboard)");
+    for (ToolEntry t : tools.values()) {
+      intro.add(String.format(Locale.ROOT, "  %-18s %s", keyText(t), t.tool().name()));
+    }
+    intro.add("");
+    intro.add("Mouse and keys on the map");
+    intro.add("  Wheel              zoom about the pointer");
+    intro.add("  Right/middle drag  pan (also Space + drag, or the arrow keys)");
+    intro.add("  Shift              lines at 45° steps; headings and rotation in 15° steps");
+    intro.add("  Double-click       rename an object (Select tool)");
+    intro.add("  Del, Backspace     delete the selection");
+    intro.add("  Esc                cancel a drag, select nothing");
+    intro.add("  Ctrl+Shift+Z       redo");
+    w.prompts().info("Keyboard shortcuts", ShortcutHelp.text(intro, menuBar));
+  }
+
   // ------------------------------------------------------------------ actions
 
   private void openDialog() {
@@ -309,25 +341,43 @@ final class MapperActions {
         .ifPresent(this::export);
   }
 
-  /** Renders the whole map (at most 4000 pixels a side) and writes it as PNG off the UI thread. */
+  /**
+   * Renders the whole map (at most 4000 pixels a side) and writes it as PNG, on the worker thread:
+   * the tiles are drawn on the JavaFX thread one at a time, so the window keeps answering, and the
+   * status bar shows the progress.
+   */
   void export(Path file) {
-    WritableImage img = MapExport.render(w.document().content(), w.view().options(), 4000);
-    w.work()
-        .submit(
-            "Exporting " + file.getFileName(),
-            () -> {
-              FxImages.writePng(img, file);
-              return file;
-            },
-            f -> w.status("Exported " + f),
-            e ->
-                w.prompts()
-                    .error(
-                        "Cannot export",
-                        "Writing "
-                            + file
-                            + " failed: "
-                            + e.getMessage()
-                            + "\n\nChoose a writable folder."));
+    MapContent content = w.document().content();
+    RenderOptions options = w.view().options();
+    BackgroundWork work = w.work();
+    work.submit(
+        "Exporting " + file.getFileName(),
+        () -> {
+          RgbImage img =
+              MapExport.render(
+                  content,
+                  options,
+                  4000,
+                  f -> Platform.runLater(() -> work.progressProperty().set(f)));
+          Path abs = file.toAbsolutePath();
+          Path tmp = abs.resolveSibling("." + abs.getFileName() + ".saving");
+          try {
+            Files.write(tmp, ImageFiles.encode(img, "png"));
+            Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
+          } finally {
+            Files.deleteIfExists(tmp);
+          }
+          return file;
+        },
+        f -> w.status("Exported " + f),
+        e ->
+            w.prompts()
+                .error(
+                    "Cannot export",
+                    "Writing "
+                        + file
+                        + " failed: "
+                        + e.getMessage()
+                        + "\n\nChoose a writable folder."));
   }
 }

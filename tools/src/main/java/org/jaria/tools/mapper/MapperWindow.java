@@ -28,11 +28,13 @@ import javafx.scene.layout.Region;
 import javafx.scene.layout.VBox;
 import javafx.stage.Stage;
 import org.jaria.map.ArMapObject;
+import org.jaria.map.ArMapPoints;
 import org.jaria.map.MapFormatException;
 import org.jaria.tools.fx.AppEnvironment;
 import org.jaria.tools.fx.AppPrefs;
 import org.jaria.tools.fx.BackgroundWork;
 import org.jaria.tools.fx.DesktopApp;
+import org.jaria.tools.fx.PointLayer;
 import org.jaria.tools.fx.Prompts;
 import org.jaria.tools.fx.WindowState;
 
@@ -226,14 +228,29 @@ public final class MapperWindow implements DesktopApp {
   }
 
   private void setDocument(MapDocument d) {
+    setDocument(d, null, null);
+  }
+
+  /**
+   * Shows {@code d}.
+   *
+   * @param layer an index of its points made off the JavaFX thread, or null to make one here
+   * @param found its problems, or null to check it here
+   */
+  private void setDocument(MapDocument d, PointLayer layer, List<MapProblem> found) {
     doc[0] = d;
     hookDocument(d);
     int res = d.file().resolution();
     view.setOptions(view.options().withPointSize(res > 0 ? res : 20));
+    if (layer != null) {
+      view.usePoints(d.content().points(), layer);
+    }
     view.setDocument(d);
     objectPanel.refresh();
     actions.refresh();
-    problems.getItems().setAll(validator.validate(d.content()));
+    problems
+        .getItems()
+        .setAll(found != null ? found : validator.validate(d.content(), view.points()));
     updateTitle();
     view.paint();
   }
@@ -249,7 +266,14 @@ public final class MapperWindow implements DesktopApp {
     }
   }
 
-  /** Opens a map file on the worker thread; the window stays usable meanwhile. */
+  /** A map read, indexed and checked off the JavaFX thread. */
+  private record Opened(MapDocument doc, PointLayer layer, List<MapProblem> problems) {}
+
+  /**
+   * Opens a map file on the worker thread (reading, indexing its points and checking it, which
+   * takes a moment for a big map); the window stays usable meanwhile and the status bar shows a
+   * progress indicator.
+   */
   public void open(Path file) {
     status("Opening " + file);
     work.submit(
@@ -257,10 +281,14 @@ public final class MapperWindow implements DesktopApp {
         () -> {
           AtomicLong ids = new AtomicLong(1);
           MapFile.Loaded l = MapFile.read(file, ids::getAndIncrement);
-          return new MapDocument(l, file, ids);
+          MapDocument d = new MapDocument(l, file, ids);
+          ArMapPoints p = l.content().points();
+          PointLayer layer = new PointLayer(p.xArray(), p.yArray());
+          return new Opened(d, layer, validator.validate(l.content(), layer));
         },
-        d -> {
-          setDocument(d);
+        o -> {
+          MapDocument d = o.doc();
+          setDocument(d, o.layer(), o.problems());
           prefs.put("lastDir", String.valueOf(file.toAbsolutePath().getParent()));
           MapContent c = d.content();
           status(
@@ -364,7 +392,7 @@ public final class MapperWindow implements DesktopApp {
 
   /** Checks the map and lists the problems; returns them. */
   public List<MapProblem> validate() {
-    List<MapProblem> found = validator.validate(doc[0].content());
+    List<MapProblem> found = validator.validate(doc[0].content(), view.points());
     problems.getItems().setAll(found);
     status(found.isEmpty() ? "No problems found" : found.size() + " problem(s) found");
     return found;

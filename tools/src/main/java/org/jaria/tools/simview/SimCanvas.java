@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
 import javafx.scene.Cursor;
 import javafx.scene.canvas.Canvas;
@@ -13,19 +14,22 @@ import javafx.scene.input.MouseEvent;
 import javafx.scene.input.ScrollEvent;
 import javafx.scene.layout.Region;
 import org.jaria.geom.ArLineSegment;
+import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
 import org.jaria.geom.ArTransform;
 import org.jaria.sim.SimObstacle;
 import org.jaria.sim.SimSnapshot;
+import org.jaria.sim.camera.ColoredObject;
+import org.jaria.sim.camera.SimCamera;
 import org.jaria.sim.world.WorldMap;
 import org.jaria.tools.fx.PointLayer;
 import org.jaria.tools.fx.Viewport;
 
 /**
- * The simulator view's drawing area. With the Move tool, drag an obstacle or a robot to move it
- * (empty space pans); with the Place tool, press where the selected robot should stand and drag
- * towards where it should face; with the Box tool, drag a rectangle to add a box. The wheel zooms,
- * the middle and right buttons pan.
+ * The simulator view's drawing area. With the Move tool, drag an obstacle, a coloured object (a
+ * ball the camera sees) or a robot to move it (empty space pans); with the Place tool, press where
+ * the selected robot should stand and drag towards where it should face; with the Box tool, drag a
+ * rectangle to add a box. The wheel zooms, the middle and right buttons pan.
  */
 final class SimCanvas extends Region {
 
@@ -52,6 +56,12 @@ final class SimCanvas extends Region {
   private int robotIndex;
   private SimSnapshot snapshot;
   private final Map<Integer, ArTransform> odometryToWorld = new HashMap<>();
+  // The last robot views drawn, to notice odometry being reset (a new session, a client's SETO).
+  private final Map<Integer, SimSnapshot.RobotView> lastViews = new HashMap<>();
+  // Cameras shown with their real pan and field of view; registered from any thread.
+  private final Map<Integer, SimCamera> cameras = new ConcurrentHashMap<>();
+  private List<ColoredObject> objects = List.of();
+  private ColoredObject dragObject;
   private Consumer<String> status = s -> {};
   private Runnable changed = () -> {};
 
@@ -77,6 +87,7 @@ final class SimCanvas extends Region {
     addEventHandler(MouseEvent.MOUSE_RELEASED, this::released);
     addEventHandler(ScrollEvent.SCROLL, this::scrolled);
     snapshot = aligned(controller.world().snapshot());
+    objects = controller.world().coloredObjects().list();
   }
 
   @Override
@@ -198,7 +209,28 @@ final class SimCanvas extends Region {
   /** Takes a new snapshot of the world and draws it. */
   void refresh() {
     snapshot = aligned(controller.world().snapshot());
+    objects = controller.world().coloredObjects().list();
     paint();
+  }
+
+  /**
+   * Draws {@code camera}'s real pan and field of view for robot {@code robotIndex} (instead of a
+   * VC-C4 looking ahead). Any thread.
+   */
+  void attachCamera(int robotIndex, SimCamera camera) {
+    cameras.put(robotIndex, camera);
+  }
+
+  /** Stops drawing {@code camera} (if it is still the one of robot {@code robotIndex}). */
+  void detachCamera(int robotIndex, SimCamera camera) {
+    cameras.remove(robotIndex, camera);
+  }
+
+  /** The cameras drawn with their real pan and field of view, by robot index. */
+  Map<Integer, SimRenderer.CameraView> cameraViews() {
+    Map<Integer, SimRenderer.CameraView> m = new HashMap<>();
+    cameras.forEach((i, c) -> m.put(i, new SimRenderer.CameraView(c.getPan(), c.getFovDegrees())));
+    return m;
   }
 
   /**
@@ -209,6 +241,10 @@ final class SimCanvas extends Region {
   private SimSnapshot aligned(SimSnapshot s) {
     List<SimSnapshot.RobotView> out = new ArrayList<>(s.robots().size());
     for (SimSnapshot.RobotView r : s.robots()) {
+      SimSnapshot.RobotView last = lastViews.put(r.index(), r);
+      if (last != null && odometryReset(last, r)) {
+        odometryToWorld.remove(r.index());
+      }
       ArTransform t =
           odometryToWorld.computeIfAbsent(
               r.index(), i -> ArTransform.between(r.odometryPose(), r.truePose()));
@@ -232,6 +268,30 @@ final class SimCanvas extends Region {
     return new SimSnapshot(s.simTimeNanos(), out, s.obstacles());
   }
 
+  /**
+   * Whether the robot's odometry was set anew between two views rather than drifting: a client
+   * opened a session (odometry starts at 0, 0, 0 wherever the robot stands) or set it (SETO,
+   * ArRobot.moveTo), which shows as odometry jumping much further than the robot moved.
+   */
+  static boolean odometryReset(SimSnapshot.RobotView before, SimSnapshot.RobotView now) {
+    if (now.sessionOpen() && !before.sessionOpen()) {
+      return true;
+    }
+    double moved =
+        Math.hypot(
+            now.truePose().x() - before.truePose().x(), now.truePose().y() - before.truePose().y());
+    double odoMoved =
+        Math.hypot(
+            now.odometryPose().x() - before.odometryPose().x(),
+            now.odometryPose().y() - before.odometryPose().y());
+    double turned = ArMath.subAngle(now.truePose().th(), before.truePose().th());
+    double odoTurned = ArMath.subAngle(now.odometryPose().th(), before.odometryPose().th());
+    // Real odometry errors are a few percent of the motion; a reset is a jump of metres or a
+    // turn of tens of degrees the robot did not make.
+    return Math.abs(odoMoved - moved) > 500 + 0.1 * moved
+        || Math.abs(ArMath.subAngle(odoTurned, turned)) > 30;
+  }
+
   /** The last snapshot drawn. */
   SimSnapshot snapshot() {
     return snapshot;
@@ -242,7 +302,16 @@ final class SimCanvas extends Region {
     int sel = dragObstacle != null ? dragObstacle.id() : -1;
     double dx = dragObstacle != null ? current[0] - start[0] : 0;
     double dy = dragObstacle != null ? current[1] - start[1] : 0;
-    renderer.render(gc, vp, map, points, snapshot, layers, sel, dx, dy);
+    List<ColoredObject> shown = objects;
+    if (dragObject != null) {
+      shown = new ArrayList<>(objects);
+      shown.replaceAll(
+          o ->
+              o.id() == dragObject.id()
+                  ? o.at(o.x() + current[0] - start[0], o.y() + current[1] - start[1])
+                  : o);
+    }
+    renderer.render(gc, vp, map, points, snapshot, layers, sel, dx, dy, shown, cameraViews());
     overlay(gc);
   }
 
@@ -312,8 +381,9 @@ final class SimCanvas extends Region {
     dragHeading = Double.NaN;
     if (tool == Tool.MOVE) {
       dragRobot = robotAt(start[0], start[1]);
-      dragObstacle = dragRobot >= 0 ? null : obstacleAt(e.getX(), e.getY());
-      if (dragRobot < 0 && dragObstacle == null) {
+      dragObject = dragRobot >= 0 ? null : coloredObjectAt(e.getX(), e.getY());
+      dragObstacle = dragRobot >= 0 || dragObject != null ? null : obstacleAt(e.getX(), e.getY());
+      if (dragRobot < 0 && dragObject == null && dragObstacle == null) {
         panning = true;
         start = null;
       }
@@ -354,6 +424,15 @@ final class SimCanvas extends Region {
         controller.placeRobot(dragRobot, placement());
         odometryToWorld.remove(dragRobot);
         status.accept("Moved robot " + (dragRobot + 1));
+      } else if (dragObject != null) {
+        controller
+            .world()
+            .coloredObjects()
+            .move(
+                dragObject.id(),
+                dragObject.x() + current[0] - start[0],
+                dragObject.y() + current[1] - start[1]);
+        status.accept("Moved the " + dragObject.name());
       } else if (dragObstacle != null) {
         controller.moveObstacle(dragObstacle, current[0] - start[0], current[1] - start[1]);
         status.accept("Moved obstacle");
@@ -372,6 +451,7 @@ final class SimCanvas extends Region {
     }
     start = null;
     dragObstacle = null;
+    dragObject = null;
     dragRobot = -1;
     changed.run();
     refresh();
@@ -390,6 +470,19 @@ final class SimCanvas extends Region {
       }
     }
     return -1;
+  }
+
+  private ColoredObject coloredObjectAt(double sx, double sy) {
+    double wx = vp.toWorldX(sx);
+    double wy = vp.toWorldY(sy);
+    double tol = 6 / vp.scale();
+    for (ColoredObject o : objects) {
+      double reach = Math.max(o.width(), o.depth()) / 2 + tol;
+      if (Math.hypot(o.x() - wx, o.y() - wy) <= reach) {
+        return o;
+      }
+    }
+    return null;
   }
 
   private SimObstacle obstacleAt(double sx, double sy) {

@@ -2,6 +2,7 @@ package org.jaria.tools.simview;
 
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import javafx.geometry.VPos;
 import javafx.scene.canvas.GraphicsContext;
 import javafx.scene.paint.Color;
@@ -13,6 +14,7 @@ import org.jaria.geom.ArPose;
 import org.jaria.sim.LaserScan;
 import org.jaria.sim.SimObstacle;
 import org.jaria.sim.SimSnapshot;
+import org.jaria.sim.camera.ColoredObject;
 import org.jaria.sim.world.WorldMap;
 import org.jaria.tools.fx.PointLayer;
 import org.jaria.tools.fx.Viewport;
@@ -39,6 +41,17 @@ public final class SimRenderer {
     public static final Layers ALL = new Layers(true, true, true, true, true);
   }
 
+  /**
+   * A camera on a robot, as drawn: where it looks relative to the robot and how wide it sees.
+   *
+   * @param panDeg pan, degrees (+ left)
+   * @param fovDeg horizontal field of view, degrees
+   */
+  public record CameraView(double panDeg, double fovDeg) {
+    /** A Canon VC-C4 looking straight ahead, zoomed out (what a Pioneer usually carries). */
+    public static final CameraView DEFAULT = new CameraView(0, CAMERA_FOV_DEG);
+  }
+
   /** Horizontal field of view of the Canon VC-C4 a Pioneer carries, degrees (wide end). */
   public static final double CAMERA_FOV_DEG = 47.5;
 
@@ -63,6 +76,9 @@ public final class SimRenderer {
    * @param points the map's points (may be null)
    * @param selectedObstacle id of an obstacle being dragged (drawn at {@code dragDx, dragDy}), or
    *     -1
+   * @param objects the coloured objects cameras see (balls, boxes), drawn in their colours
+   * @param cameras the cameras of robots that carry one, by robot index; other robots are drawn
+   *     with a {@link CameraView#DEFAULT} field of view
    */
   public void render(
       GraphicsContext gc,
@@ -73,7 +89,9 @@ public final class SimRenderer {
       Layers layers,
       int selectedObstacle,
       double dragDx,
-      double dragDy) {
+      double dragDy,
+      List<ColoredObject> objects,
+      Map<Integer, CameraView> cameras) {
     gc.setFill(Color.WHITE);
     gc.fillRect(0, 0, vp.width(), vp.height());
     if (layers.grid()) {
@@ -95,8 +113,11 @@ public final class SimRenderer {
         line(gc, vp, s, sel ? dragDx : 0, sel ? dragDy : 0);
       }
     }
+    for (ColoredObject o : objects) {
+      coloredObject(gc, vp, o);
+    }
     for (SimSnapshot.RobotView r : snap.robots()) {
-      robot(gc, vp, r, layers);
+      robot(gc, vp, r, layers, cameras.getOrDefault(r.index(), CameraView.DEFAULT));
     }
     gc.setFont(font);
     gc.setFill(Color.web("#303030"));
@@ -106,20 +127,18 @@ public final class SimRenderer {
         String.format(Locale.ROOT, "t = %.1f s", snap.simTimeNanos() / 1e9), 10, vp.height() - 8);
   }
 
+  // 1-pixel fills rather than strokes: far cheaper in the software renderer (see MapRenderer).
   private static void grid(GraphicsContext gc, Viewport vp) {
     double step = 1000;
     while (step * vp.scale() < 8) {
       step *= 10;
     }
-    gc.setStroke(Color.web("#eceff4"));
-    gc.setLineWidth(1);
+    gc.setFill(Color.web("#eceff4"));
     for (double x = Math.floor(vp.minVisibleX() / step) * step; x <= vp.maxVisibleX(); x += step) {
-      double sx = Math.floor(vp.toScreenX(x)) + 0.5;
-      gc.strokeLine(sx, 0, sx, vp.height());
+      gc.fillRect(Math.floor(vp.toScreenX(x)), 0, 1, vp.height());
     }
     for (double y = Math.floor(vp.minVisibleY() / step) * step; y <= vp.maxVisibleY(); y += step) {
-      double sy = Math.floor(vp.toScreenY(y)) + 0.5;
-      gc.strokeLine(0, sy, vp.width(), sy);
+      gc.fillRect(0, Math.floor(vp.toScreenY(y)), vp.width(), 1);
     }
   }
 
@@ -134,7 +153,39 @@ public final class SimRenderer {
         vp.toScreenY(s.y2() + dy));
   }
 
-  private void robot(GraphicsContext gc, Viewport vp, SimSnapshot.RobotView r, Layers layers) {
+  private static void coloredObject(GraphicsContext gc, Viewport vp, ColoredObject o) {
+    double reach = Math.max(o.width(), o.depth());
+    if (!vp.intersects(o.x() - reach, o.y() - reach, o.x() + reach, o.y() + reach)) {
+      return;
+    }
+    int c = o.rgb();
+    gc.setFill(Color.rgb((c >> 16) & 0xFF, (c >> 8) & 0xFF, c & 0xFF));
+    gc.setStroke(Color.web("#202020"));
+    gc.setLineWidth(1);
+    double x = vp.toScreenX(o.x());
+    double y = vp.toScreenY(o.y());
+    if (o.shape() == ColoredObject.Shape.CYLINDER) {
+      double r = Math.max(2.5, o.width() / 2 * vp.scale());
+      gc.fillOval(x - r, y - r, 2 * r, 2 * r);
+      gc.strokeOval(x - r, y - r, 2 * r, 2 * r);
+      return;
+    }
+    double a = Math.toRadians(o.th());
+    double[] xs = new double[4];
+    double[] ys = new double[4];
+    double[][] corners = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (int i = 0; i < 4; i++) {
+      double lx = corners[i][0] * o.width() / 2;
+      double ly = corners[i][1] * o.depth() / 2;
+      xs[i] = vp.toScreenX(o.x() + lx * Math.cos(a) - ly * Math.sin(a));
+      ys[i] = vp.toScreenY(o.y() + lx * Math.sin(a) + ly * Math.cos(a));
+    }
+    gc.fillPolygon(xs, ys, 4);
+    gc.strokePolygon(xs, ys, 4);
+  }
+
+  private void robot(
+      GraphicsContext gc, Viewport vp, SimSnapshot.RobotView r, Layers layers, CameraView cam) {
     ArPose p = r.truePose();
     if (layers.sonar()) {
       for (SimSnapshot.SonarView s : r.sonar()) {
@@ -145,7 +196,7 @@ public final class SimRenderer {
       laser(gc, vp, r.laser());
     }
     if (layers.camera()) {
-      camera(gc, vp, p);
+      camera(gc, vp, p, cam);
     }
     if (layers.odometry()) {
       ArPose o = r.odometryPose();
@@ -252,19 +303,20 @@ public final class SimRenderer {
     }
   }
 
-  private static void camera(GraphicsContext gc, Viewport vp, ArPose p) {
+  private static void camera(GraphicsContext gc, Viewport vp, ArPose p, CameraView cam) {
     double x = vp.toScreenX(p.x());
     double y = vp.toScreenY(p.y());
     double r = CAMERA_RANGE_MM * vp.scale();
-    double half = Math.toRadians(CAMERA_FOV_DEG / 2);
-    double th = Math.toRadians(p.th());
+    double half = Math.toRadians(cam.fovDeg() / 2);
+    double headingDeg = p.th() + cam.panDeg();
+    double th = Math.toRadians(headingDeg);
     gc.setStroke(CAMERA);
     gc.setLineWidth(1.2);
     gc.setLineDashes(3, 3);
     gc.strokeLine(x, y, x + r * Math.cos(th + half), y - r * Math.sin(th + half));
     gc.strokeLine(x, y, x + r * Math.cos(th - half), y - r * Math.sin(th - half));
     gc.strokeArc(
-        x - r, y - r, 2 * r, 2 * r, p.th() - CAMERA_FOV_DEG / 2, CAMERA_FOV_DEG, ArcType.OPEN);
+        x - r, y - r, 2 * r, 2 * r, headingDeg - cam.fovDeg() / 2, cam.fovDeg(), ArcType.OPEN);
     gc.setLineDashes();
   }
 }

@@ -7,6 +7,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import javafx.animation.AnimationTimer;
+import javafx.beans.binding.Bindings;
 import javafx.geometry.Insets;
 import javafx.geometry.Pos;
 import javafx.scene.Scene;
@@ -31,25 +32,37 @@ import javafx.scene.layout.Priority;
 import javafx.scene.layout.Region;
 import javafx.scene.layout.VBox;
 import javafx.stage.Stage;
+import javafx.stage.WindowEvent;
+import org.jaria.acts.image.ImageSource;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimSnapshot;
 import org.jaria.sim.SimWorld;
+import org.jaria.sim.camera.SimCamera;
+import org.jaria.tools.eztrain.EzTrainOptions;
+import org.jaria.tools.eztrain.EzTrainWindow;
 import org.jaria.tools.fx.AppEnvironment;
 import org.jaria.tools.fx.AppPrefs;
 import org.jaria.tools.fx.BackgroundWork;
 import org.jaria.tools.fx.DesktopApp;
 import org.jaria.tools.fx.Prompts;
+import org.jaria.tools.fx.ShortcutHelp;
 import org.jaria.tools.fx.WindowState;
+import org.jaria.tools.simvision.SimCameraSource;
+import org.jaria.tools.simvision.TrainingScene;
 
 /**
  * The simulator's window: the world drawn live (map, robots with footprints, sonar cones and
- * ranges, laser, camera field of view, true pose against odometry), run/pause, step and speed
- * controls, and mouse tools to place robots, move obstacles and add boxes.
+ * ranges, laser, camera field of view, true pose against odometry, the coloured objects cameras
+ * see), run/pause, step and speed controls, mouse tools to place robots, move obstacles and add
+ * boxes, and EZ-Train on a robot's camera (Camera menu).
  *
  * <p>While the world runs, the view takes a {@link org.jaria.sim.SimSnapshot} every frame (the
  * world's thread is never blocked by drawing); while it is paused, it draws after each change.
  */
 public final class SimViewWindow implements DesktopApp {
+
+  private static final long MIN_FRAME_NANOS = 1_000_000_000L / 30;
+  private static final long PAUSED_FRAME_NANOS = 250_000_000L;
 
   /** Simulated time one press of Step advances (one SIP cycle), ms. */
   public static final long STEP_MILLIS = 100;
@@ -71,12 +84,30 @@ public final class SimViewWindow implements DesktopApp {
   private final Label clock = new Label("");
   private final CompletableFuture<Void> ready = new CompletableFuture<>();
   private final List<AutoCloseable> closeables = new ArrayList<>();
+  private final AppEnvironment env;
+  private final List<EzTrainWindow> ezTrains = new ArrayList<>();
+  private EzTrainOptions ezTrainOptions = EzTrainOptions.defaults();
+  // Draws the world at most 30 times a second while it runs, and never more often than every
+  // other frame's drawing time (a big map on a software renderer must not take the whole JavaFX
+  // thread); while paused, four times a second picks up changes made from outside (a program
+  // adding obstacles), and the view's own changes draw at once.
   private final AnimationTimer timer =
       new AnimationTimer() {
+        private long lastFrame;
+        private long lastCost;
+
         @Override
         public void handle(long now) {
+          long interval =
+              controller.isRunning() ? Math.max(MIN_FRAME_NANOS, 2 * lastCost) : PAUSED_FRAME_NANOS;
+          if (now - lastFrame < interval) {
+            return;
+          }
+          long t = System.nanoTime();
           canvas.refresh();
           updateClock();
+          lastCost = System.nanoTime() - t;
+          lastFrame = now;
         }
       };
 
@@ -90,6 +121,7 @@ public final class SimViewWindow implements DesktopApp {
   public SimViewWindow(
       Stage stage, AppEnvironment env, SimWorld world, double speedup, boolean ownsWorld) {
     this.stage = stage;
+    this.env = env;
     this.prefs = env.prefs();
     this.prompts = env.prompts().apply(stage);
     this.controller = new SimController(world, speedup);
@@ -108,6 +140,7 @@ public final class SimViewWindow implements DesktopApp {
 
     run.setId("run");
     run.setTooltip(new Tooltip("Run or pause the simulation (Space)"));
+    run.textProperty().bind(Bindings.when(run.selectedProperty()).then("Pause").otherwise("Run"));
     run.setOnAction(e -> setRunning(run.isSelected()));
     step.setId("step");
     step.setTooltip(new Tooltip("Advance a paused simulation by " + STEP_MILLIS + " ms (S)"));
@@ -245,7 +278,34 @@ public final class SimViewWindow implements DesktopApp {
               new SimRenderer.Layers(
                   l.sonar(), l.laser(), l.camera(), l.odometry(), grid.isSelected()));
         });
-    return new MenuBar(sim, new Menu("_View", null, fit, in, out, grid));
+    MenuItem train =
+        item(
+            "Train Colours on the Robot's Camera (EZ-Train)…",
+            "menu-eztrain",
+            "Shortcut+T",
+            this::openEzTrain);
+    MenuBar bar =
+        new MenuBar(
+            sim, new Menu("_View", null, fit, in, out, grid), new Menu("_Camera", null, train));
+    bar.getMenus()
+        .add(
+            new Menu(
+                "_Help",
+                null,
+                item("Keyboard Shortcuts", "menu-keys", "F1", () -> showShortcuts(bar))));
+    return bar;
+  }
+
+  private void showShortcuts(MenuBar bar) {
+    List<String> intro =
+        List.of(
+            "Mouse on the world",
+            "  Wheel              zoom about the pointer",
+            "  Right/middle drag  pan (Move tool: also a left drag on empty space)",
+            "  Move tool          drag a robot, an obstacle or a coloured object",
+            "  Place robot tool   press where the robot stands, drag towards where it faces",
+            "  Add box tool       drag a rectangle");
+    prompts.info("Keyboard shortcuts", ShortcutHelp.text(intro, bar));
   }
 
   private static MenuItem item(String text, String id, String accel, Runnable action) {
@@ -342,6 +402,77 @@ public final class SimViewWindow implements DesktopApp {
             controller.world().connectedClientCount()));
   }
 
+  // ------------------------------------------------------------------ EZ-Train on a robot's camera
+
+  /** The EZ-Train windows open on this world's cameras. */
+  public List<EzTrainWindow> ezTrainWindows() {
+    return List.copyOf(ezTrains);
+  }
+
+  /** How EZ-Train windows opened from here start (tests give a free port for the ACTS server). */
+  public void setEzTrainOptions(EzTrainOptions o) {
+    ezTrainOptions = o;
+  }
+
+  /**
+   * Opens EZ-Train on the selected robot's camera: live video of what a camera on that robot sees
+   * in this world, with EZ-Train's ACTS server running, so a program driving the robot here can
+   * track the colours being trained. The view draws that camera's field of view.
+   *
+   * @return the EZ-Train window
+   */
+  public EzTrainWindow openEzTrain() {
+    int index = Math.max(0, robot.getSelectionModel().getSelectedIndex());
+    SimRobot r = controller.world().getRobot(index);
+    Stage s = new Stage();
+    EzTrainWindow ez =
+        new EzTrainWindow(s, env.forApp("eztrain"), ezTrainOptions.withSimCamera(true, -1));
+    ez.setSimCameraHook(
+        (w, h) -> {
+          SimCamera cam = new SimCamera(controller.world(), r, w, h, 100, 450);
+          cam.setPanTilt(0, TrainingScene.TILT);
+          canvas.attachCamera(index, cam);
+          SimCameraSource frames = new SimCameraSource(cam);
+          return new ImageSource() {
+            @Override
+            public int width() {
+              return frames.width();
+            }
+
+            @Override
+            public int height() {
+              return frames.height();
+            }
+
+            @Override
+            public boolean nextFrame(int[] rgb) {
+              return frames.nextFrame(rgb);
+            }
+
+            @Override
+            public String describe() {
+              return r.getName() + "'s camera in the simulator";
+            }
+
+            @Override
+            public void close() {
+              canvas.detachCamera(index, cam);
+            }
+          };
+        });
+    s.addEventHandler(
+        WindowEvent.WINDOW_HIDDEN,
+        e -> {
+          ez.close();
+          ezTrains.remove(ez);
+        });
+    ezTrains.add(ez);
+    s.setTitle("EZ-Train — " + r.getName() + "'s camera");
+    ez.show();
+    status.setText("EZ-Train on " + r.getName() + "'s camera");
+    return ez;
+  }
+
   // ------------------------------------------------------------------ DesktopApp
 
   @Override
@@ -375,6 +506,11 @@ public final class SimViewWindow implements DesktopApp {
 
   @Override
   public void close() {
+    for (EzTrainWindow ez : List.copyOf(ezTrains)) {
+      ez.stage().hide();
+      ez.close();
+    }
+    ezTrains.clear();
     timer.stop();
     controller.pause();
     work.close();

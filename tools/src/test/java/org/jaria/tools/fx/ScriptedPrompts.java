@@ -25,13 +25,25 @@ public final class ScriptedPrompts implements Prompts {
   /** Answer to every confirmation. */
   public volatile boolean confirmAnswer = true;
 
+  /** Information shown (title: text), in order. */
+  public final List<String> infos = new ArrayList<>();
+
+  /** The questions asked for confirmation, in order. */
+  public final List<String> confirms = new ArrayList<>();
+
   @Override
   public synchronized void error(String title, String message) {
     errors.add(title + ": " + message);
   }
 
   @Override
-  public boolean confirm(String title, String question) {
+  public synchronized void info(String title, String text) {
+    infos.add(title + ": " + text);
+  }
+
+  @Override
+  public synchronized boolean confirm(String title, String question) {
+    confirms.add(question);
     return confirmAnswer;
   }
 

@@ -16,15 +16,21 @@ public final class TestFiles {
    * resources: the source folder when run from the tools module, else the class path).
    */
   public static Path columbiaCopy(Path dir) throws IOException {
-    Path target = dir.resolve("columbia.map");
-    Path src = Path.of("../aria-core/src/test/resources/reference/maps/columbia.map");
+    return referenceMapCopy(dir, "columbia.map");
+  }
+
+  /**
+   * A fresh copy of one of aria-core's reference maps (columbia.map, triangle.map) in {@code dir}.
+   */
+  public static Path referenceMapCopy(Path dir, String name) throws IOException {
+    Path target = dir.resolve(name);
+    Path src = Path.of("../aria-core/src/test/resources/reference/maps/" + name);
     if (Files.isRegularFile(src)) {
       return Files.copy(src, target, StandardCopyOption.REPLACE_EXISTING);
     }
-    try (InputStream in = TestFiles.class.getResourceAsStream("/reference/maps/columbia.map")) {
+    try (InputStream in = TestFiles.class.getResourceAsStream("/reference/maps/" + name)) {
       if (in == null) {
-        throw new IOException(
-            "columbia.map is neither in aria-core's sources nor on the class path");
+        throw new IOException(name + " is neither in aria-core's sources nor on the class path");
       }
       Files.copy(in, target, StandardCopyOption.REPLACE_EXISTING);
     }

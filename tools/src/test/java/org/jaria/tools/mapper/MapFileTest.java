@@ -137,4 +137,105 @@ class MapFileTest {
     assertEquals(3, e.getLine());
     assertTrue(MapperWindow.openError(bad, e).contains("bad.map:3"));
   }
+
+  /** A 2D-Map-Ex4 file with the header lines newer tools write, some of them odd. */
+  static final String EX4 =
+      """
+      2D-Map-Ex4
+      Sources: DATA
+      DATA_Type: PointData
+      MinPos: -1000 -1000
+      MaxPos: 9000 6000
+      NumPoints: 4
+      PointsAreSorted: true
+      Resolution: 20
+      LineMinPos: 0 0
+      LineMaxPos: 8000 5000
+      NumLines: 3
+      LinesAreSorted: false
+      Display: "Goals" 1 "#00FF00"
+      OriginLatLongAlt: 40.4168 -3.7038 650
+      MapInfo: GoalType Name=Goal "Label=Goal" "Desc=A place to go" Shape=Plain
+      MapInfo: SectorType Name=RedBall Sim.Color=0xD02020 Sim.Shape=cylinder Sim.Diameter=200
+      MapInfo: ArgDesc Name=Speed Type=int Min=0 Max=1000
+      TaskInfo: "Charge" Type=Dock
+      RouteInfo: Route "Patrol" Goal1 Goal2
+      SchedTaskInfo: Daily 08:00 "Patrol"
+      MacroInfo: Macro "Beep" Sound=beep.wav
+      CustomInfo: anything at all here
+      CairnInfo: Goal1 Speed=300
+      MetaInfo: Editor=Mapper3 Version=2.0
+      Cairn: RobotHome 500 500 90.000000 "" ICON ""
+      Cairn: Goal 2000 3000 0.000000 "" ICON "Goal1"
+      Cairn: GoalWithHeading 6000 3000 -45.500000 "At the window" ICON "Goal2"
+      Cairn: Dock 7500 500 180.000000 "" ICON "Dock"
+      Cairn: ForbiddenLine 4000 0 0.000000 "" ICON "" 4000 0 4000 2000
+      Cairn: ForbiddenArea 3000 4000 30.000000 "" ICON "" 2500 1000 3500 2000
+      _Cairn: Goal 100 100 0.000000 "" ICON "Switched off"
+      Cairn: RedBall 5000 4000 0.000000 "" ICON "ball"
+      an unknown line the editor must keep
+      LINES
+      0 0 8000 0
+      8000 0 8000 5000
+      0 5000 8000 5000
+      DATA
+      -1000 -1000
+      0 6000
+      4000 2500
+      9000 6000
+      """;
+
+  @Test
+  void everyRealMapAndEveryMapTypeIsWrittenBackByteForByte() throws Exception {
+    List<Path> files = new ArrayList<>();
+    files.add(TestFiles.columbiaCopy(dir));
+    files.add(TestFiles.referenceMapCopy(dir, "triangle.map"));
+    for (String bundled : ArMap.BUNDLED_MAPS) {
+      try (var in = ArMap.class.getResourceAsStream(ArMap.RESOURCE_DIR + bundled + ".map")) {
+        Path f = dir.resolve(bundled + ".map");
+        Files.copy(in, f);
+        files.add(f);
+      }
+    }
+    for (String type : List.of("2D-Map-Ex", "2D-Map-Ex2", "2D-Map-Ex3", "2D-Map-Ex4")) {
+      Path f = dir.resolve(type + ".map");
+      Files.writeString(f, EX4.replace("2D-Map-Ex4", type).replace("\n", "\r\n"));
+      files.add(f);
+    }
+    for (Path f : files) {
+      MapDocument d = open(f);
+      Path out = dir.resolve("out-" + f.getFileName());
+      save(d, out);
+      assertArrayEquals(Files.readAllBytes(f), Files.readAllBytes(out), f::toString);
+      assertEquals(ArMap.readFile(f), ArMap.readFile(out), f::toString);
+    }
+  }
+
+  @Test
+  void editingAnEx4MapKeepsEveryLineItDoesNotUnderstand() throws Exception {
+    Path f = dir.resolve("ex4.map");
+    Files.writeString(f, EX4);
+    MapDocument d = open(f);
+    assertEquals("2D-Map-Ex4", d.file().mapType());
+    assertEquals(7, d.content().objects().size(), "inactive _Cairn lines are not objects");
+    MapObjectEntry area =
+        d.content().objects().stream()
+            .filter(e -> e.object().isAreaType())
+            .findFirst()
+            .orElseThrow();
+    d.execute(MapCommands.replace("Rotate", area.id(), MapGeometry.withHeading(area.object(), 75)));
+    d.execute(MapCommands.addObject(ArMapObject.goal("Goal3", 1000, 4000)));
+    save(d, f);
+    List<String> before = EX4.lines().toList();
+    List<String> after = Files.readAllLines(f);
+    for (String line : before) {
+      if (!line.startsWith("Cairn: ForbiddenArea")) {
+        assertTrue(after.contains(line), () -> "lost: " + line);
+      }
+    }
+    assertEquals(before.size() + 1, after.size());
+    ArMap m = ArMap.readFile(f);
+    assertEquals(75, m.findFirstMapObjectOfType("ForbiddenArea").orElseThrow().pose().th(), 1e-9);
+    assertTrue(m.findMapObject("Goal3").isPresent());
+  }
 }

@@ -16,13 +16,17 @@ import javafx.scene.input.MouseButton;
 import javafx.stage.Stage;
 import org.jaria.acts.image.ImageFiles;
 import org.jaria.acts.image.RgbImage;
+import org.jaria.geom.ArLineSegment;
 import org.jaria.map.ArMap;
 import org.jaria.map.ArMapObject;
 import org.jaria.tools.fx.AppEnvironment;
+import org.jaria.tools.fx.AppPrefs;
 import org.jaria.tools.fx.FxRuntime;
+import org.jaria.tools.fx.Mouse;
 import org.jaria.tools.fx.ScriptedPrompts;
 import org.jaria.tools.fx.TestFiles;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
@@ -38,6 +42,13 @@ class MapperWindowTest {
   @TempDir Path dir;
 
   private final ScriptedPrompts prompts = new ScriptedPrompts();
+  private Mouse mouse;
+
+  @BeforeEach
+  void mouse(FxRobot robot) {
+    mouse = new Mouse(robot);
+  }
+
   private MapperWindow window;
 
   @Start
@@ -80,8 +91,8 @@ class MapperWindowTest {
           window.view().paint();
         },
         10);
-    robot.clickOn("#tool-forbidden-area");
-    robot.drag(onMap(4000, 1000), MouseButton.PRIMARY).dropTo(onMap(7500, -2000));
+    mouse.click("#tool-forbidden-area");
+    mouse.drag(onMap(4000, 1000), onMap(7500, -2000));
     WaitForAsyncUtils.waitForFxEvents();
     assertTrue(window.document().isModified());
     assertEquals("Add forbidden area", window.document().undoName());
@@ -118,7 +129,7 @@ class MapperWindowTest {
     Path copy = dir.resolve("copy.map");
     openAndWait(file);
     prompts.files.add(copy);
-    robot.clickOn("#status"); // the window has the keyboard
+    mouse.click("#status"); // the window has the keyboard
     robot
         .press(KeyCode.CONTROL, KeyCode.SHIFT)
         .type(KeyCode.S)
@@ -131,10 +142,10 @@ class MapperWindowTest {
   @Test
   void placeGoalThenUndoRedoAndRename(FxRobot robot) throws Exception {
     openAndWait(null);
-    robot.clickOn("#map-view");
+    mouse.click("#map-view");
     robot.type(KeyCode.G);
     Point2D p = onMap(1000, 2000);
-    robot.moveTo(p).clickOn(MouseButton.PRIMARY);
+    mouse.click(p, MouseButton.PRIMARY);
     WaitForAsyncUtils.waitForFxEvents();
     assertEquals(1, window.document().content().objects().size());
     ArMapObject goal = window.document().content().objects().get(0).object();
@@ -152,7 +163,7 @@ class MapperWindowTest {
     // Double-click with the select tool renames.
     robot.type(KeyCode.S);
     prompts.texts.add("Charging corner");
-    robot.moveTo(p).doubleClickOn(MouseButton.PRIMARY);
+    mouse.doubleClick(p);
     WaitForAsyncUtils.waitForFxEvents();
     assertEquals("Charging corner", window.document().content().objects().get(0).object().name());
   }
@@ -170,12 +181,12 @@ class MapperWindowTest {
           window.view().paint();
         },
         10);
-    robot.clickOn("#tool-select");
-    robot.clickOn(onMap(2000, 1000));
+    mouse.click("#tool-select");
+    mouse.click(onMap(2000, 1000), MouseButton.PRIMARY);
     assertEquals(1, window.selection().size());
 
     // Drag the area by its inside 1 m to the right (snapping off: about 1000 mm).
-    robot.drag(onMap(2000, 1000), MouseButton.PRIMARY).dropTo(onMap(3000, 1000));
+    mouse.drag(onMap(2000, 1000), onMap(3000, 1000));
     WaitForAsyncUtils.waitForFxEvents();
     ArMapObject moved = window.document().content().objects().get(0).object();
     double pixel = 1 / window.view().viewport().scale();
@@ -186,7 +197,7 @@ class MapperWindowTest {
     double[] h = MapRenderer.rotationHandle(window.view().viewport(), moved);
     Point2D handle = window.view().localToScreen(h[0], h[1]);
     double[] c = MapGeometry.center(moved);
-    robot.drag(handle, MouseButton.PRIMARY).dropTo(onMap(c[0] - 3000, c[1]));
+    mouse.drag(handle, onMap(c[0] - 3000, c[1]));
     WaitForAsyncUtils.waitForFxEvents();
     ArMapObject turned = window.document().content().objects().get(0).object();
     assertEquals(90, turned.pose().th(), 1.01);
@@ -210,15 +221,15 @@ class MapperWindowTest {
           window.view().paint();
         },
         10);
-    robot.clickOn("#tool-select");
-    robot.drag(onMap(-6000, 3000), MouseButton.PRIMARY).dropTo(onMap(4000, -3000));
+    mouse.click("#tool-select");
+    mouse.drag(onMap(-6000, 3000), onMap(4000, -3000));
     WaitForAsyncUtils.waitForFxEvents();
     assertTrue(window.selection().points().cardinality() > 100);
     assertFalse(window.document().isModified(), "a box selection moves nothing");
 
-    robot.clickOn("#map-view");
+    mouse.click("#map-view");
     robot.type(KeyCode.M);
-    robot.drag(onMap(0, 0), MouseButton.PRIMARY).dropTo(onMap(3000, 4000));
+    mouse.drag(onMap(0, 0), onMap(3000, 4000));
     WaitForAsyncUtils.waitForFxEvents();
     MeasureTool m = (MeasureTool) window.view().tool();
     double pixel = 1 / window.view().viewport().scale();
@@ -249,5 +260,191 @@ class MapperWindowTest {
     assertEquals(1, prompts.errors.size());
     assertTrue(prompts.errors.get(0).contains("bad.map:1"), prompts.errors::toString);
     assertTrue(window.ready().isCompletedExceptionally());
+  }
+
+  @Test
+  void drawEveryKindWithItsKeyThenSaveAndReload(FxRobot robot) throws Exception {
+    openAndWait(null);
+    FxRuntime.run(
+        () -> {
+          window.view().setOptions(window.view().options().withGridSize(500));
+          window.view().viewport().setScale(0.05);
+          window.view().centerOn(5000, 5000);
+          window.view().paint();
+        },
+        10);
+    // Snap to Grid from the View menu's shortcut: every drawn end lands on a 500 mm grid point.
+    mouse.click("#map-view");
+    robot
+        .press(KeyCode.CONTROL, KeyCode.SHIFT)
+        .type(KeyCode.G)
+        .release(KeyCode.SHIFT, KeyCode.CONTROL);
+    assertTrue(window.view().isSnapping());
+
+    robot.type(KeyCode.W);
+    mouse.drag(onMap(1010, 990), onMap(8990, 1020));
+    robot.type(KeyCode.P);
+    mouse.click(onMap(3000, 8000), MouseButton.PRIMARY);
+    robot.type(KeyCode.F);
+    mouse.drag(onMap(6000, 2000), onMap(6000, 6000));
+    robot.type(KeyCode.O);
+    mouse.drag(onMap(2000, 2000), onMap(2000, 4000));
+    robot.type(KeyCode.K);
+    mouse.click(onMap(8000, 8000), MouseButton.PRIMARY);
+    robot.press(KeyCode.SHIFT).type(KeyCode.G).release(KeyCode.SHIFT);
+    mouse.drag(onMap(4000, 4000), onMap(2000, 4000));
+    robot.type(KeyCode.G);
+    mouse.click(onMap(7000, 3500), MouseButton.PRIMARY);
+    WaitForAsyncUtils.waitForFxEvents();
+
+    MapContent c = window.document().content();
+    assertEquals(1, c.lines().size());
+    assertEquals(new ArLineSegment(1000, 1000, 9000, 1000), c.lines().get(0).segment());
+    assertEquals(1, c.points().size());
+    assertEquals(3000, c.points().x(0));
+    assertEquals(8000, c.points().y(0));
+    List<String> types = c.objects().stream().map(e -> e.object().type()).toList();
+    assertEquals(List.of("ForbiddenLine", "RobotHome", "Dock", "GoalWithHeading", "Goal"), types);
+    ArMapObject line = c.objects().get(0).object();
+    assertEquals(new ArLineSegment(6000, 2000, 6000, 6000), line.getFromToSegments().get(0));
+    assertEquals(90, c.objects().get(1).object().pose().th(), 1.01, "home faces the drag");
+    ArMapObject gh = c.objects().get(3).object();
+    assertEquals(4000, gh.pose().x(), 1e-9);
+    assertEquals(180, Math.abs(gh.pose().th()), 1.01, "goal with heading faces the drag");
+    assertEquals("Goal 1", gh.name());
+    assertEquals("Goal 2", c.objects().get(4).object().name());
+    assertEquals(7, countUndoSteps());
+
+    Path file = dir.resolve("drawn.map");
+    prompts.files.add(file);
+    robot.press(KeyCode.CONTROL).type(KeyCode.S).release(KeyCode.CONTROL);
+    assertTrue(window.work().awaitIdle(30, TimeUnit.SECONDS));
+    assertTrue(prompts.errors.isEmpty(), prompts.errors::toString);
+    ArMap saved = ArMap.readFile(file);
+    assertEquals(c.segments(), saved.getLines());
+    assertEquals(c.mapObjects(), saved.getMapObjects());
+    assertEquals(c.points(), saved.getPoints());
+    assertEquals("drawn.map — JAria Mapper", window.stage().getTitle());
+  }
+
+  private int countUndoSteps() {
+    return FxRuntime.call(
+        () -> {
+          int n = 0;
+          while (window.document().undo()) {
+            n++;
+          }
+          for (int i = 0; i < n; i++) {
+            window.document().redo();
+          }
+          return n;
+        },
+        10);
+  }
+
+  @Test
+  void checkMapListsProblemsSelectsThemAndCanStopTheSave(FxRobot robot) throws Exception {
+    openAndWait(null);
+    FxRuntime.run(
+        () -> {
+          window
+              .document()
+              .execute(MapCommands.addObject(ArMapObject.forbiddenArea(0, 0, 3000, 3000)));
+          window
+              .document()
+              .execute(MapCommands.addObject(ArMapObject.robotHome("", 1500, 1500, 0)));
+          window.document().execute(MapCommands.addLine(new ArLineSegment(6000, 0, 6000, 5000)));
+          window.document().execute(MapCommands.addObject(ArMapObject.goal("Wall", 6100, 2000)));
+          window.view().fit();
+        },
+        10);
+    mouse.click("#map-view");
+    robot.type(KeyCode.F7);
+    WaitForAsyncUtils.waitForFxEvents();
+    List<MapProblem> found = window.problems();
+    assertEquals(2, found.size(), found::toString);
+    assertTrue(
+        found.get(0).message().startsWith("home at (1500, 1500) is inside a forbidden area"));
+    assertTrue(found.get(1).message().contains("100 mm from a wall"), found::toString);
+    // Clicking a problem selects the object it is about.
+    mouse.click(found.get(1).toString());
+    WaitForAsyncUtils.waitForFxEvents();
+    long goalId = window.document().content().objects().get(2).id();
+    assertEquals(goalId, window.selection().single());
+
+    // Saving lists the errors first; "Cancel" keeps the map unsaved.
+    Path file = dir.resolve("checked.map");
+    prompts.confirmAnswer = false;
+    prompts.files.add(file);
+    mouse.click("#map-view");
+    robot.press(KeyCode.CONTROL).type(KeyCode.S).release(KeyCode.CONTROL);
+    assertTrue(window.work().awaitIdle(30, TimeUnit.SECONDS));
+    assertEquals(1, prompts.problemLists.size());
+    assertEquals(2, prompts.problemLists.get(0).size());
+    assertFalse(Files.exists(file));
+    assertTrue(window.document().isModified());
+  }
+
+  @Test
+  void objectPanelRenamesAndTurnsTheSelection(FxRobot robot) throws Exception {
+    openAndWait(null);
+    FxRuntime.run(
+        () -> {
+          window.document().execute(MapCommands.addObject(ArMapObject.dock("Dock 1", 0, 0, 0)));
+          window.selectAndShow(window.document().content().objects().get(0).id());
+        },
+        10);
+    // A click in a short field puts the caret after its text.
+    mouse.click("#object-name");
+    robot.eraseText(6).write("Charger").type(KeyCode.ENTER);
+    mouse.click("#object-heading");
+    robot.eraseText(3).write("135").type(KeyCode.ENTER);
+    WaitForAsyncUtils.waitForFxEvents();
+    ArMapObject o = window.document().content().objects().get(0).object();
+    assertEquals("Charger", o.name());
+    assertEquals(135, o.pose().th(), 1e-9);
+    assertEquals("Rotate", window.document().undoName());
+    mouse.click("#object-heading");
+    robot.eraseText(5).write("east").type(KeyCode.ENTER);
+    WaitForAsyncUtils.waitForFxEvents();
+    assertEquals(1, prompts.errors.size());
+    assertTrue(prompts.errors.get(0).contains("'east' is not a number"), prompts.errors::toString);
+  }
+
+  @Test
+  void viewOptionsAndWindowPlaceAreRemembered(FxRobot robot) throws Exception {
+    openAndWait(null);
+    mouse.click("#map-view");
+    robot.type(KeyCode.F1);
+    assertEquals(1, prompts.infos.size());
+    String keys = prompts.infos.get(0);
+    assertTrue(keys.contains("Forbidden area") && keys.contains("Save As"), keys);
+    robot.press(KeyCode.CONTROL).type(KeyCode.G).release(KeyCode.CONTROL);
+    assertFalse(window.view().options().grid());
+    FxRuntime.run(
+        () -> {
+          window.stage().setWidth(900);
+          window.stage().setHeight(650);
+          window.stage().setX(40);
+          window.stage().setY(30);
+          window.stage().hide();
+        },
+        10);
+    window.close();
+    AppPrefs prefs = window.prefs();
+    window =
+        FxRuntime.call(
+            () -> {
+              MapperWindow again =
+                  new MapperWindow(new Stage(), new AppEnvironment(prefs, w -> prompts, true));
+              again.show(null);
+              return again;
+            },
+            10);
+    WaitForAsyncUtils.waitForFxEvents();
+    assertFalse(window.view().options().grid());
+    assertEquals(900, window.stage().getWidth(), 1);
+    assertEquals(650, window.stage().getHeight(), 1);
+    assertEquals(40, window.stage().getX(), 1);
   }
 }
