@@ -426,6 +426,11 @@ final class ClientConnection {
   /** Says goodbye (after what is already queued), waits briefly for it to go out, then closes. */
   void closeGracefully(String reason) {
     if (!closed.get()) {
+      // Say why before saying goodbye: the server may close its end (and the reader see the end of
+      // the stream) before this thread gets to close(); the user must still read our reason.
+      if (closeReason == null) {
+        closeReason = reason;
+      }
       sendQueue.offer(Frames.frame(Kind.BYE));
       sendQueue.offer(POISON);
       Thread w = writer;
