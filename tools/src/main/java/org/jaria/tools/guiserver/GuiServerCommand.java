@@ -238,8 +238,11 @@ public final class GuiServerCommand implements Callable<Integer> {
     Thread hook = new Thread(stop::countDown, "guiserver-shutdown");
     Runtime.getRuntime().addShutdownHook(hook);
     long start = System.nanoTime();
+    long end = seconds > 0 ? start + TimeUnit.SECONDS.toNanos(seconds) : Long.MAX_VALUE;
     try {
-      while (!stop.await(10, TimeUnit.SECONDS)) {
+      // Wake for the next status line (every 10 s) or the end, whichever comes first.
+      while (!stop.await(
+          Math.min(TimeUnit.SECONDS.toNanos(10), end - System.nanoTime()), TimeUnit.NANOSECONDS)) {
         long s = TimeUnit.NANOSECONDS.toSeconds(System.nanoTime() - start);
         ArServerModes modes = gui.getModes();
         out.printf(
@@ -251,7 +254,7 @@ public final class GuiServerCommand implements Callable<Integer> {
             modes.getStatus(),
             robot.getPose());
         out.flush();
-        if (seconds > 0 && s >= seconds) {
+        if (System.nanoTime() >= end) {
           break;
         }
         if (!robot.isConnected()) {
