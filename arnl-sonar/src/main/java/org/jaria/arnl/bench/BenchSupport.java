@@ -77,12 +77,15 @@ final class BenchSupport {
 
   /**
    * Drives through waypoints steering by the simulator's true pose: the robot's motion for a
-   * localization benchmark, independent of the localization being measured.
+   * localization benchmark, independent of the localization being measured. It keeps its speed
+   * through the waypoints (braking only for the last one, or to turn more than 20° on the spot), so
+   * that the robot really drives at about {@code speed}.
    */
   static final class TruthDriver extends ArAction {
     private final ArActionDesired d = new ArActionDesired();
     private final SimRobot sim;
     private final List<ArPose> route;
+    private final double[] remaining;
     private final double speed;
     private int next;
 
@@ -91,6 +94,10 @@ final class BenchSupport {
       this.sim = sim;
       this.route = route;
       this.speed = speed;
+      remaining = new double[route.size()];
+      for (int i = route.size() - 2; i >= 0; i--) {
+        remaining[i] = remaining[i + 1] + route.get(i).findDistanceTo(route.get(i + 1));
+      }
     }
 
     boolean done() {
@@ -112,8 +119,9 @@ final class BenchSupport {
       ArPose g = route.get(next);
       double off = ArMath.subAngle(p.findAngleTo(g), p.th());
       d.setRotVel(ArMath.clamp(2 * off, -60, 60));
-      double brake = Math.sqrt(2 * 250 * Math.max(0, p.findDistanceTo(g) - 40));
-      d.setVel(Math.abs(off) > 8 ? 0 : Math.min(speed, brake) * Math.cos(Math.toRadians(off)));
+      double toEnd = p.findDistanceTo(g) + remaining[next];
+      double brake = Math.sqrt(2 * 250 * Math.max(0, toEnd - 40));
+      d.setVel(Math.abs(off) > 20 ? 0 : Math.min(speed, brake) * Math.cos(Math.toRadians(off)));
       return d;
     }
   }

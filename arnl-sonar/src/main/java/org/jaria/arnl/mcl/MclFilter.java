@@ -174,6 +174,41 @@ public final class MclFilter {
   }
 
   /**
+   * Replaces the particles with {@code count} drawn where {@code scan} fits the map (poses on a
+   * grid {@code step} mm apart with {@code headings} headings, weighed with the sensor model),
+   * except a share {@code uniformShare} spread uniformly over the free space in case the scan
+   * misleads (people, furniture not on the map). Equally weighted. The first step of a global
+   * search.
+   */
+  public void initFromScan(
+      SonarScan scan, int count, double uniformShare, double step, int headings) {
+    n = clampCount(count);
+    int fromScan = (int) Math.round(n * (1 - ArMath.clamp(uniformShare, 0, 1)));
+    if (scan.size() == 0
+        || !ScanSeeder.draw(
+            field,
+            scan,
+            step,
+            Math.max(1, headings),
+            sensorBelief,
+            seeThroughLogPenalty,
+            rng,
+            x,
+            y,
+            th,
+            fromScan)) {
+      fromScan = 0;
+    }
+    for (int i = fromScan; i < n; i++) {
+      placeRandom(i);
+    }
+    double eq = 1.0 / n;
+    for (int i = 0; i < n; i++) {
+      w[i] = eq;
+    }
+  }
+
+  /**
    * Replaces a share {@code fraction} of the particles (the lowest weighted first would need a
    * sort; random ones are as good, since weights are equal right after resampling) by random poses
    * in free space, to recover when the robot is lost.
