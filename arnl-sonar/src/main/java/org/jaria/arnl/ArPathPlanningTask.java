@@ -282,7 +282,10 @@ public final class ArPathPlanningTask implements AutoCloseable {
     return keeper.lastPlanMillis();
   }
 
-  /** Replans made for the current goal. */
+  /**
+   * Replans made for the current (or last) goal: around newly seen obstacles, when the way was
+   * blocked, or for lack of progress (only the last two count towards {@code MaxReplans}).
+   */
   public int getReplanCount() {
     return keeper.replanCount();
   }

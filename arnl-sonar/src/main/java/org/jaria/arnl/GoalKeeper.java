@@ -307,6 +307,7 @@ final class GoalKeeper {
    */
   void replanLocked(String why, boolean counts, List<Runnable> notify) {
     long now = robot.getClock().nanoTime();
+    run.totalReplans++;
     if (counts) {
       run.replans++;
       if (run.replans > params.maxReplans.getInt()) {
@@ -476,7 +477,7 @@ final class GoalKeeper {
   int replanCount() {
     lock.lock();
     try {
-      return run.replans;
+      return run.totalReplans;
     } finally {
       lock.unlock();
     }

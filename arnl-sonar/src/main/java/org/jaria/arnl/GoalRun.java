@@ -22,6 +22,7 @@ final class GoalRun {
   boolean replanPending;
   boolean replanCounts = true;
   int replans;
+  int totalReplans;
   long lastReplanNanos;
   int index;
   double bestRemaining;
@@ -45,6 +46,7 @@ final class GoalRun {
     name = goalName;
     replanPending = false;
     replans = 0;
+    totalReplans = 0;
     lastReplanNanos = now;
     index = 0;
     bestRemaining = Double.MAX_VALUE;

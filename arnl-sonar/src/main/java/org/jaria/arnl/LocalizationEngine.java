@@ -161,8 +161,14 @@ final class LocalizationEngine {
     lastEstimate = est.pose();
     double score = f.matchFraction(est.pose(), scan, p.matchDistance.getDouble());
     f.resampleIfNeeded();
-    if ((lost && p.recoverOnFail.getBool()) || searching) {
+    if (searching) {
+      // The search was seeded where the first scan fitted; a few uniform particles keep a door
+      // open in case that scan misled it.
       f.injectRandom(p.recoveryFraction.getDouble());
+    } else if (lost && p.recoverOnFail.getBool()) {
+      // Recovery particles go where this scan fits, not just anywhere: a few hundred random
+      // particles in a large map almost never land near a lost robot's real pose.
+      f.injectFromScan(scan, p.recoveryFraction.getDouble(), p.recoveryCandidates.getInt());
     }
     return new Result(est, score, scan.size(), f.size());
   }
