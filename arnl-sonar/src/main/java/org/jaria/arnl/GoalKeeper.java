@@ -348,7 +348,8 @@ final class GoalKeeper {
     ArActionDesired out;
     lock.lock();
     try {
-      sensed.noteSonar();
+      // The map is used to recognise echoes of mapped walls once it exists (built for a goal).
+      sensed.noteSonar(nav == null || navDirty ? null : nav, params.mapMatchDistance.getDouble());
       out = PathFollower.step(this, run, desired, notify);
     } finally {
       lock.unlock();

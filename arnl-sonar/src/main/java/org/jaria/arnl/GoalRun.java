@@ -34,6 +34,8 @@ final class GoalRun {
   long stuckSince = -1;
   long backupUntil = -1;
   int backups;
+  long withinSince = -1;
+  double nearestGoal = Double.MAX_VALUE;
 
   private double[] stampX = new double[64];
   private double[] stampY = new double[64];
@@ -58,6 +60,8 @@ final class GoalRun {
     stuckSince = -1;
     backupUntil = -1;
     backups = 0;
+    withinSince = -1;
+    nearestGoal = Double.MAX_VALUE;
     stamps = 0;
   }
 
