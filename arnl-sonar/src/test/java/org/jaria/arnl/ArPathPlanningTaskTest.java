@@ -79,7 +79,7 @@ class ArPathPlanningTaskTest {
             PathPlanningState.REACHED_GOAL, r.path().getState(), r.path().getStatusString());
         ArPose goal = columbia.findMapObject(g).orElseThrow().pose();
         assertTrue(
-            r.sim().sim().getTruePose().findDistanceTo(goal) < 350,
+            r.sim().sim().getTruePose().findDistanceTo(goal) < 250,
             g + ": stopped at " + r.sim().sim().getTruePose());
       }
       assertEquals(reachable.size(), done.size());
@@ -87,6 +87,10 @@ class ArPathPlanningTaskTest {
       // Every goal of the map is either reached above or refused below.
       assertEquals(reachable.size() + 2, columbia.getGoals().size());
 
+      // The two goals that cannot be reached, failing at once (no simulated time passes):
+      // "Impossible
+      // Goal" lies in a walled-in alcove (about 0.8 m x 0.9 m) with no opening, "Inside Forbidden
+      // Area" in a forbidden area.
       long before = r.robot().getClock().nanoTime();
       assertFalse(r.path().pathPlanToGoal("impossible goal"), "case-insensitive name");
       assertEquals(PathPlanningState.FAILED_PLAN, r.path().getState());
@@ -96,7 +100,6 @@ class ArPathPlanningTaskTest {
       assertTrue(r.path().getStatusString().contains("forbidden area"), r.path().getStatusString());
       assertEquals(before, r.robot().getClock().nanoTime(), "refused without driving");
       assertEquals(2, failed.size());
-      assertTrue(r.path().getLastPlanMillis() < 2000, "fails fast");
     } finally {
       r.close();
     }
@@ -134,7 +137,7 @@ class ArPathPlanningTaskTest {
       assertTrue(r.finish(Duration.ofMinutes(3)));
       assertEquals(PathPlanningState.REACHED_GOAL, r.path().getState());
       ArPose t = r.sim().sim().getTruePose();
-      assertTrue(t.findDistanceTo(new ArPose(11250, 7700)) < 350, "at " + t);
+      assertTrue(t.findDistanceTo(new ArPose(11250, 7700)) < 250, "at " + t);
       assertTrue(Math.abs(t.th() - -90) < 15, "turned to the goal's heading: " + t);
       assertTrue(closest[0] > 212, "kept clear of the door frame: " + closest[0]);
     } finally {
@@ -264,7 +267,7 @@ class ArPathPlanningTaskTest {
       assertTrue(
           r.path().getCurrentPath().stream().anyMatch(p -> p.y() > 5500),
           "the path in use goes north");
-      assertTrue(r.sim().sim().getTruePose().findDistanceTo(new ArPose(10500, 3500)) < 350);
+      assertTrue(r.sim().sim().getTruePose().findDistanceTo(new ArPose(10500, 3500)) < 250);
     } finally {
       r.close();
     }
