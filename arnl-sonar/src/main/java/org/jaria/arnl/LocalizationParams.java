@@ -113,7 +113,10 @@ public final class LocalizationParams {
           "StdTh", 10, "heading spread when localizing at a pose, degrees", 0, 180);
   final ArConfigArg recoverOnFail =
       ArConfigArg.ofBool(
-          "RecoverOnFail", true, "scatter some particles over the map while the robot is lost");
+          "RecoverOnFail",
+          true,
+          "while the robot is lost, replace some particles at each update by poses where the scan"
+              + " fits the map");
   final ArConfigArg recoveryFraction =
       ArConfigArg.ofDouble(
           "RecoveryFraction",

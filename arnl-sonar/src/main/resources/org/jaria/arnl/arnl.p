@@ -26,7 +26,7 @@ KRadPerMm 0.03          ; heading drift while driving: standard deviation after 
 StdX 250                ; x spread when localizing at a pose, mm (between 0 and 10000)
 StdY 250                ; y spread when localizing at a pose, mm (between 0 and 10000)
 StdTh 10                ; heading spread when localizing at a pose, degrees (between 0 and 180)
-RecoverOnFail true      ; scatter some particles over the map while the robot is lost
+RecoverOnFail true      ; while the robot is lost, replace some particles at each update by poses where the scan fits the map
 RecoveryFraction 0.05   ; share of particles replaced per update while lost (or searching globally) (between 0 and 1)
 RecoveryCandidates 10000 ; random poses weighed against the scan to choose the recovery particles of an update while lost (between 0 and 200000)
 AdjustNumSamples false  ; adapt the particle count to the spread (KLD sampling)

@@ -295,6 +295,33 @@ class ArPathPlanningTaskTest {
   }
 
   @Test
+  void losingLocalizationFailsTheGoalAndArActionLostStopsTheRobot() {
+    Rig r = rig(OFFICE, 11, PlanMode.SYNCHRONOUS);
+    try {
+      r.loc().getParams().get("RecoverOnFail").setBool(false);
+      r.path().getPathPlanActionGroup().addAction(new ArActionLost(r.loc(), r.path()), 150);
+      List<ArPose> failed = new ArrayList<>();
+      r.path().addGoalFailedCB(failed::add);
+      assertTrue(r.path().pathPlanToGoal("Corridor East"));
+      r.sim().runMillis(5000);
+      assertEquals(PathPlanningState.MOVING_TO_GOAL, r.path().getState());
+      // Carried into the kitchen: the sonar no longer fits the pose the robot believes.
+      r.sim().sim().setTruePose(new ArPose(3750, 3000, 0));
+      assertTrue(r.finish(Duration.ofSeconds(60)), "the goal ended");
+      assertEquals(PathPlanningState.FAILED_MOVE, r.path().getState());
+      assertTrue(
+          r.path().getFailureString().contains("localization lost"), r.path().getFailureString());
+      assertEquals(1, failed.size());
+      assertTrue(r.loc().getRobotIsLostFlag());
+      r.sim().runMillis(2000);
+      assertEquals(0, r.robot().getVel(), 10, "stopped");
+      assertEquals(0, r.robot().getRotVel(), 3, "stopped");
+    } finally {
+      r.close();
+    }
+  }
+
+  @Test
   void cancellingAndReplacingGoalsInterruptThem() {
     Rig r = rig(OFFICE, 4, PlanMode.SYNCHRONOUS);
     try {

@@ -108,9 +108,15 @@ final class BenchSupport {
       this.sim = sim;
       this.route = route;
       this.speed = speed;
+      // remaining[i]: the distance from waypoint i on to the next one where the robot must stop:
+      // the end, or a turn of more than 20 degrees, which it makes on the spot (as at the first
+      // waypoint, since the robot may start facing anywhere).
       remaining = new double[route.size()];
-      for (int i = route.size() - 2; i >= 0; i--) {
-        remaining[i] = remaining[i + 1] + route.get(i).findDistanceTo(route.get(i + 1));
+      for (int i = route.size() - 2; i >= 1; i--) {
+        double in = route.get(i - 1).findAngleTo(route.get(i));
+        double out = route.get(i).findAngleTo(route.get(i + 1));
+        boolean stop = Math.abs(ArMath.subAngle(out, in)) > 20;
+        remaining[i] = stop ? 0 : remaining[i + 1] + route.get(i).findDistanceTo(route.get(i + 1));
       }
     }
 
