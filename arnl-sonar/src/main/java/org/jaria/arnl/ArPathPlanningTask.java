@@ -245,6 +245,16 @@ public final class ArPathPlanningTask implements AutoCloseable {
     return s == PathPlanningState.PLANNING_PATH || s == PathPlanningState.MOVING_TO_GOAL;
   }
 
+  /**
+   * How far the robot still has to go to the current (or last) goal, mm: along the path if there is
+   * one, else in a straight line. For progress displays.
+   */
+  public double getDistanceToGoal() {
+    ArPose here = robot.getPose();
+    PlannedPath p = keeper.path();
+    return p == null ? here.findDistanceTo(keeper.goal()) : p.remainingFrom(here.x(), here.y());
+  }
+
   /** The current path as poses (empty if none). */
   public List<ArPose> getCurrentPath() {
     PlannedPath p = keeper.path();
@@ -282,7 +292,10 @@ public final class ArPathPlanningTask implements AutoCloseable {
     return keeper.lastPlanMillis();
   }
 
-  /** Replans made for the current goal. */
+  /**
+   * Replans made for the current (or last) goal: around newly seen obstacles, when the way was
+   * blocked, or for lack of progress (only the last two count towards {@code MaxReplans}).
+   */
   public int getReplanCount() {
     return keeper.replanCount();
   }

@@ -235,9 +235,13 @@ public final class ArSonarLocalizationTask implements AutoCloseable {
 
   /**
    * Forgets the pose and searches the whole free space of the map ({@code GlobalNumSamples}
-   * particles). The robot should drive meanwhile; the state is {@link
-   * LocalizationState#LOCALIZATION_INIT_COMPUTING} until the particles have gathered, then the pose
-   * is corrected as in normal tracking.
+   * particles). The first update with a few echoes places the particles where that scan fits the
+   * map (a grid of poses over the free space is weighed with the sensor model: up to a second on a
+   * large map, once), so that every place that looks like where the robot is gets its share. The
+   * robot should drive meanwhile; the state is {@link
+   * LocalizationState#LOCALIZATION_INIT_COMPUTING} until one place has kept most of the particles
+   * for ten updates, then the pose is corrected as in normal tracking. In a building of identical
+   * rooms that takes until the robot sees something that tells them apart.
    */
   public void startGlobalLocalization() {
     core.startGlobalLocalization();

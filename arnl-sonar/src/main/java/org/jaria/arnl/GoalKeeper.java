@@ -307,6 +307,7 @@ final class GoalKeeper {
    */
   void replanLocked(String why, boolean counts, List<Runnable> notify) {
     long now = robot.getClock().nanoTime();
+    run.totalReplans++;
     if (counts) {
       run.replans++;
       if (run.replans > params.maxReplans.getInt()) {
@@ -347,7 +348,8 @@ final class GoalKeeper {
     ArActionDesired out;
     lock.lock();
     try {
-      sensed.noteSonar();
+      // The map is used to recognise echoes of mapped walls once it exists (built for a goal).
+      sensed.noteSonar(nav == null || navDirty ? null : nav, params.mapMatchDistance.getDouble());
       out = PathFollower.step(this, run, desired, notify);
     } finally {
       lock.unlock();
@@ -476,7 +478,7 @@ final class GoalKeeper {
   int replanCount() {
     lock.lock();
     try {
-      return run.replans;
+      return run.totalReplans;
     } finally {
       lock.unlock();
     }

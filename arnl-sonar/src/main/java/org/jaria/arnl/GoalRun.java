@@ -22,6 +22,7 @@ final class GoalRun {
   boolean replanPending;
   boolean replanCounts = true;
   int replans;
+  int totalReplans;
   long lastReplanNanos;
   int index;
   double bestRemaining;
@@ -33,6 +34,8 @@ final class GoalRun {
   long stuckSince = -1;
   long backupUntil = -1;
   int backups;
+  long withinSince = -1;
+  double nearestGoal = Double.MAX_VALUE;
 
   private double[] stampX = new double[64];
   private double[] stampY = new double[64];
@@ -45,6 +48,7 @@ final class GoalRun {
     name = goalName;
     replanPending = false;
     replans = 0;
+    totalReplans = 0;
     lastReplanNanos = now;
     index = 0;
     bestRemaining = Double.MAX_VALUE;
@@ -56,6 +60,8 @@ final class GoalRun {
     stuckSince = -1;
     backupUntil = -1;
     backups = 0;
+    withinSince = -1;
+    nearestGoal = Double.MAX_VALUE;
     stamps = 0;
   }
 

@@ -25,6 +25,9 @@ final class LocalizationCore {
 
   private static final Logger log = LoggerFactory.getLogger(ArSonarLocalizationTask.class);
 
+  /** Passing updates in a row a lost robot needs before it counts as localized again. */
+  private static final int RELOCK_PASSES = 3;
+
   /** Updates in a row the global search must look converged before it is believed. */
   private static final int GLOBAL_STREAK = 10;
 
@@ -40,6 +43,7 @@ final class LocalizationCore {
   // Guarded by lock; generation is also read by the cycle without it.
   private final AtomicLong generation = new AtomicLong();
   private int consecutiveFailures;
+  private int consecutivePasses;
   private boolean global;
   private int globalStreak;
 
@@ -119,10 +123,19 @@ final class LocalizationCore {
   private void judge(double s, List<Runnable> notify) {
     if (s >= params.passThreshold.getDouble()) {
       consecutiveFailures = 0;
+      consecutivePasses++;
       state = LocalizationState.LOCALIZATION_SUCCESS;
-      lockState = LockState.LOCKED;
+      // A lost robot's recovery particles fit somewhere by chance now and then: one good update
+      // is not enough to trust the pose again.
+      if (lockState != LockState.LOST || consecutivePasses >= RELOCK_PASSES) {
+        if (lockState == LockState.LOST) {
+          log.info("localization recovered at {}", estimate == null ? "?" : estimate.pose());
+        }
+        lockState = LockState.LOCKED;
+      }
       return;
     }
+    consecutivePasses = 0;
     consecutiveFailures++;
     state = LocalizationState.LOCALIZATION_FAILED;
     int fails = consecutiveFailures;

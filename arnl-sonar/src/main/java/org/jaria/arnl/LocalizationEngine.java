@@ -42,6 +42,20 @@ final class LocalizationEngine {
   private ArPose filterEncoder;
   private ArPose lastEstimate;
   private int reseeds;
+  private boolean seedPending;
+
+  /** Echoes a scan needs to seed a global search. */
+  static final int SEED_MIN_ECHOES = 4;
+
+  /**
+   * Share of a global search's first particles spread uniformly rather than where the scan fits.
+   */
+  static final double SEED_UNIFORM_SHARE = 0.2;
+
+  /** Grid of poses weighed to seed a global search: spacing, mm, and number of headings. */
+  static final double SEED_STEP = 200;
+
+  static final int SEED_HEADINGS = 36;
 
   LocalizationEngine(ArMap map, LocalizationParams p, double robotRadius, long seed) {
     this.map = map;
@@ -135,13 +149,26 @@ final class LocalizationEngine {
     }
     filterEncoder = encoderNow;
     SonarScan scan = scan(readings, encoderNow);
-    f.sensorUpdate(scan);
+    if (searching && seedPending && scan.size() >= SEED_MIN_ECHOES) {
+      // The first scan of a global search places the particles where it fits (and so already
+      // counts: it is not weighed in a second time).
+      f.initFromScan(scan, f.size(), SEED_UNIFORM_SHARE, SEED_STEP, SEED_HEADINGS);
+      seedPending = false;
+    } else {
+      f.sensorUpdate(scan);
+    }
     PoseEstimate est = hint == null ? f.estimate() : f.estimateNear(hint);
     lastEstimate = est.pose();
     double score = f.matchFraction(est.pose(), scan, p.matchDistance.getDouble());
     f.resampleIfNeeded();
-    if ((lost && p.recoverOnFail.getBool()) || searching) {
+    if (searching) {
+      // The search was seeded where the first scan fitted; a few uniform particles keep a door
+      // open in case that scan misled it.
       f.injectRandom(p.recoveryFraction.getDouble());
+    } else if (lost && p.recoverOnFail.getBool()) {
+      // Recovery particles go where this scan fits, not just anywhere: a few hundred random
+      // particles in a large map almost never land near a lost robot's real pose.
+      f.injectFromScan(scan, p.recoveryFraction.getDouble(), p.recoveryCandidates.getInt());
     }
     return new Result(est, score, scan.size(), f.size());
   }
@@ -208,6 +235,7 @@ final class LocalizationEngine {
     filter(numSamples).initUniform(numSamples);
     filterEncoder = encoderNow;
     lastEstimate = null;
+    seedPending = true;
   }
 
   /** After global convergence: keep only the tracking number of particles. */

@@ -32,7 +32,7 @@ public final class LocalizationParams {
   final ArConfigArg passThreshold =
       ArConfigArg.ofDouble(
           "PassThreshold",
-          0.3,
+          0.5,
           "share of sonar echoes the map must explain for an update to pass",
           0,
           1);
@@ -113,10 +113,24 @@ public final class LocalizationParams {
           "StdTh", 10, "heading spread when localizing at a pose, degrees", 0, 180);
   final ArConfigArg recoverOnFail =
       ArConfigArg.ofBool(
-          "RecoverOnFail", true, "scatter some particles over the map while the robot is lost");
+          "RecoverOnFail",
+          true,
+          "while the robot is lost, replace some particles at each update by poses where the scan"
+              + " fits the map");
   final ArConfigArg recoveryFraction =
       ArConfigArg.ofDouble(
-          "RecoveryFraction", 0.05, "share of particles scattered per update while lost", 0, 1);
+          "RecoveryFraction",
+          0.05,
+          "share of particles replaced per update while lost (or searching globally)",
+          0,
+          1);
+  final ArConfigArg recoveryCandidates =
+      ArConfigArg.ofInt(
+          "RecoveryCandidates",
+          10000,
+          "random poses weighed against the scan to choose the recovery particles of an update while lost",
+          0,
+          200000);
   final ArConfigArg adjustNumSamples =
       ArConfigArg.ofBool(
           "AdjustNumSamples", false, "adapt the particle count to the spread (KLD sampling)");
@@ -162,6 +176,7 @@ public final class LocalizationParams {
     add(stdTh, ArPriority.NORMAL);
     add(recoverOnFail, ArPriority.NORMAL);
     add(recoveryFraction, ArPriority.EXPERT);
+    add(recoveryCandidates, ArPriority.EXPERT);
     add(adjustNumSamples, ArPriority.NORMAL);
     add(minNumSamples, ArPriority.DETAILED);
     add(kldEpsilon, ArPriority.EXPERT);

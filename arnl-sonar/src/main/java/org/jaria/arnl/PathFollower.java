@@ -27,6 +27,12 @@ final class PathFollower {
   private static final long BACKUP_TIME = TimeUnit.MILLISECONDS.toNanos(1200);
   private static final double BACKUP_SPEED = 150;
 
+  /** Inside this share of the goal tolerance the goal is reached at once. */
+  static final double FINAL_SHARE = 0.25;
+
+  /** Longest time spent closing in once inside the goal tolerance. */
+  private static final long FINAL_APPROACH = TimeUnit.SECONDS.toNanos(3);
+
   private PathFollower() {}
 
   static ArActionDesired step(GoalKeeper t, GoalRun run, ArActionDesired d, List<Runnable> notify) {
@@ -49,7 +55,10 @@ final class PathFollower {
     double maxRot = p.maxRotSpeed.getDouble();
     double tol = p.goalDistanceTolerance.getDouble();
     double dGoal = pose.findDistanceTo(run.goal);
-    if (run.aligning || dGoal <= tol) {
+    if (dGoal <= tol && run.withinSince < 0) {
+      run.withinSince = now;
+    }
+    if (run.aligning || (dGoal <= tol && arrived(run, pose, dGoal, tol, now))) {
       if (run.headingFlag) {
         double err = ArMath.subAngle(run.goal.th(), pose.th());
         if (Math.abs(err) > p.goalAngleTolerance.getDouble()) {
@@ -119,7 +128,8 @@ final class PathFollower {
     }
     path = t.pathLocked();
     run.index = path.closestIndex(pose.x(), pose.y(), run.index, 40);
-    double speedCap = Math.sqrt(2 * p.transDecel.getDouble() * Math.max(0, dGoal - 0.5 * tol)) + 50;
+    double speedCap =
+        Math.sqrt(2 * p.transDecel.getDouble() * Math.max(0, dGoal - 0.5 * FINAL_SHARE * tol)) + 40;
     LocalPlanner.Command cmd =
         t.localPlanner()
             .plan(
@@ -167,6 +177,23 @@ final class PathFollower {
     d.setVel(cmd.vel());
     d.setRotVel(cmd.rotVel());
     return d;
+  }
+
+  /**
+   * Within the goal tolerance, whether to stop here: once well inside it ({@link #FINAL_SHARE}), or
+   * when getting closer is no longer happening — the robot moves away again, the goal is off to a
+   * side (no spinning on the spot for the last few centimetres), or it has been inside the
+   * tolerance for a while. Stopping at the tolerance's edge would leave the robot a whole tolerance
+   * short of every goal.
+   */
+  private static boolean arrived(GoalRun run, ArPose pose, double dGoal, double tol, long now) {
+    boolean done =
+        dGoal <= FINAL_SHARE * tol
+            || dGoal > run.nearestGoal + 25
+            || Math.abs(ArMath.subAngle(pose.findAngleTo(run.goal), pose.th())) > 60
+            || now - run.withinSince > FINAL_APPROACH;
+    run.nearestGoal = Math.min(run.nearestGoal, dGoal);
+    return done;
   }
 
   /** Blocked, stalled, or commanding motion that does not happen. */

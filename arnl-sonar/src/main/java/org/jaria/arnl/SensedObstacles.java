@@ -55,9 +55,15 @@ final class SensedObstacles {
     devices.removeIf(e -> e.device() == d);
   }
 
-  /** Takes this cycle's new sonar readings into the occupancy grid. */
-  void noteSonar() {
+  /**
+   * Takes this cycle's new sonar readings into the occupancy grid.
+   *
+   * @param nav the map, to recognise echoes of mapped walls (null: no such check)
+   * @param matchDistance an echo within this of the range the map predicts is the wall, mm
+   */
+  void noteSonar(NavigationMap nav, double matchDistance) {
     ArPose enc = robot.getEncoderPose();
+    ArTransform toGlobal = robot.getEncoderTransform();
     grid.follow(enc.x(), enc.y());
     int ns = Math.min(robot.getNumSonar(), lastCounter.length);
     double half = Math.toRadians(ArSonarDevice.CONE_HALF_ANGLE);
@@ -73,7 +79,16 @@ final class SensedObstacles {
       double s = Math.sin(th);
       double sx = at.x() + c * r.sensorX() - s * r.sensorY();
       double sy = at.y() + s * r.sensorX() + c * r.sensorY();
-      grid.addReading(sx, sy, th + Math.toRadians(r.sensorTh()), r.range(), ECHO_RANGE, half);
+      double axis = th + Math.toRadians(r.sensorTh());
+      boolean explained = false;
+      if (nav != null && r.range() < ECHO_RANGE) {
+        double gx = toGlobal.transformX(sx, sy);
+        double gy = toGlobal.transformY(sx, sy);
+        double ga = axis + Math.toRadians(toGlobal.getTh());
+        double expected = nav.expectedSonarRange(gx, gy, ga, half, r.range() + matchDistance);
+        explained = Math.abs(expected - r.range()) <= matchDistance;
+      }
+      grid.addReading(sx, sy, axis, r.range(), ECHO_RANGE, half, explained);
     }
   }
 

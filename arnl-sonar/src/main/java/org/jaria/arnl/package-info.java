@@ -5,6 +5,8 @@
  * <ul>
  *   <li>{@link org.jaria.arnl.ArSonarLocalizationTask}: Monte Carlo localization on an ArMap line
  *       (and point) map with the sonar ring and odometry; corrects {@code ArRobot.getPose()}.
+ *       Global localization and recovery from being lost both draw particles where the current scan
+ *       fits the map, rather than scattering them blindly.
  *   <li>{@link org.jaria.arnl.ArPathPlanningTask}: plans with A* on a clearance-cost grid and
  *       drives the path with a dynamic-window local planner that avoids unmapped obstacles.
  *   <li>{@link org.jaria.arnl.ArActionLost}, {@link org.jaria.arnl.ArActionSlowDownWhenNotCertain}
@@ -29,10 +31,11 @@
  *   <li><i>Passages under 50 cm.</i> A sonar echo only says that something is somewhere in a 30°
  *       cone, so echoes placed on the cone's axis beside a doorway close it on the robot. Here
  *       echoes of mapped walls are recognised as such (the map, not the sonar, says where walls
- *       are), unmapped echoes go into an occupancy grid where crossing beams clear wrongly placed
- *       ones, and the local planner checks sensed obstacles against the robot's rectangle rather
- *       than a circle. A passage must still be wider than the robot plus {@code PlanPadding} on
- *       each side (about 50 cm for a P3-DX with the defaults): that is a choice, set in {@code
+ *       are: an echo at the range the map predicts in its cone is a wall, and only clears the space
+ *       before it), unmapped echoes go into an occupancy grid where crossing beams clear wrongly
+ *       placed ones, and the local planner checks sensed obstacles against the robot's rectangle
+ *       rather than a circle. A passage must still be wider than the robot plus {@code PlanPadding}
+ *       on each side (about 50 cm for a P3-DX with the defaults): that is a choice, set in {@code
  *       arnl.p}, not an accident of the sensor.
  *   <li><i>Open areas without walls.</i> Where few echoes come back, an update neither passes nor
  *       fails ({@code MinEchoes}), so the robot is not declared lost for seeing nothing; odometry

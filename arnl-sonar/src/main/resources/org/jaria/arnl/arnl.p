@@ -8,7 +8,7 @@ NumSamplesAtInit 2000   ; particles when localizing at a known pose (between 10 
 GlobalNumSamples 20000  ; particles for global localization (between 100 and 200000)
 TriggerDistance 200     ; mm the robot must move before an update (between 1 and 10000)
 TriggerAngle 5          ; degrees the robot must turn before an update (between 0.1 and 180)
-PassThreshold 0.3       ; share of sonar echoes the map must explain for an update to pass (between 0 and 1)
+PassThreshold 0.5       ; share of sonar echoes the map must explain for an update to pass (between 0 and 1)
 MatchDistance 250       ; an echo is explained if the nearest mapped surface in its cone is this close to its range, mm (between 10 and 2000)
 FailuresToLost 6        ; consecutive failed updates after which the robot counts as lost (between 1 and 1000)
 MinEchoes 3             ; an update with fewer echoes (open areas) neither passes nor fails (between 0 and 64)
@@ -26,8 +26,9 @@ KRadPerMm 0.03          ; heading drift while driving: standard deviation after 
 StdX 250                ; x spread when localizing at a pose, mm (between 0 and 10000)
 StdY 250                ; y spread when localizing at a pose, mm (between 0 and 10000)
 StdTh 10                ; heading spread when localizing at a pose, degrees (between 0 and 180)
-RecoverOnFail true      ; scatter some particles over the map while the robot is lost
-RecoveryFraction 0.05   ; share of particles scattered per update while lost (between 0 and 1)
+RecoverOnFail true      ; while the robot is lost, replace some particles at each update by poses where the scan fits the map
+RecoveryFraction 0.05   ; share of particles replaced per update while lost (or searching globally) (between 0 and 1)
+RecoveryCandidates 10000 ; random poses weighed against the scan to choose the recovery particles of an update while lost (between 0 and 200000)
 AdjustNumSamples false  ; adapt the particle count to the spread (KLD sampling)
 MinNumSamples 300       ; fewest particles when the count adapts (between 10 and 200000)
 KldEpsilon 0.05         ; KLD sampling error bound (smaller: more particles) (between 0.001 and 1)

@@ -10,8 +10,10 @@ import java.util.List;
 import org.jaria.arnl.ArPathPlanningTask.PathPlanningState;
 import org.jaria.arnl.ArPathPlanningTask.PlanMode;
 import org.jaria.config.ArConfigException;
+import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
+import org.jaria.map.ArMapObject;
 import org.jaria.robot.ArRobot;
 import org.jaria.sim.client.SimulatedRobot;
 import org.junit.jupiter.api.Test;
@@ -77,7 +79,7 @@ class ArPathPlanningTaskTest {
             PathPlanningState.REACHED_GOAL, r.path().getState(), r.path().getStatusString());
         ArPose goal = columbia.findMapObject(g).orElseThrow().pose();
         assertTrue(
-            r.sim().sim().getTruePose().findDistanceTo(goal) < 350,
+            r.sim().sim().getTruePose().findDistanceTo(goal) < 250,
             g + ": stopped at " + r.sim().sim().getTruePose());
       }
       assertEquals(reachable.size(), done.size());
@@ -85,6 +87,10 @@ class ArPathPlanningTaskTest {
       // Every goal of the map is either reached above or refused below.
       assertEquals(reachable.size() + 2, columbia.getGoals().size());
 
+      // The two goals that cannot be reached, failing at once (no simulated time passes):
+      // "Impossible
+      // Goal" lies in a walled-in alcove (about 0.8 m x 0.9 m) with no opening, "Inside Forbidden
+      // Area" in a forbidden area.
       long before = r.robot().getClock().nanoTime();
       assertFalse(r.path().pathPlanToGoal("impossible goal"), "case-insensitive name");
       assertEquals(PathPlanningState.FAILED_PLAN, r.path().getState());
@@ -94,7 +100,6 @@ class ArPathPlanningTaskTest {
       assertTrue(r.path().getStatusString().contains("forbidden area"), r.path().getStatusString());
       assertEquals(before, r.robot().getClock().nanoTime(), "refused without driving");
       assertEquals(2, failed.size());
-      assertTrue(r.path().getLastPlanMillis() < 2000, "fails fast");
     } finally {
       r.close();
     }
@@ -132,7 +137,7 @@ class ArPathPlanningTaskTest {
       assertTrue(r.finish(Duration.ofMinutes(3)));
       assertEquals(PathPlanningState.REACHED_GOAL, r.path().getState());
       ArPose t = r.sim().sim().getTruePose();
-      assertTrue(t.findDistanceTo(new ArPose(11250, 7700)) < 350, "at " + t);
+      assertTrue(t.findDistanceTo(new ArPose(11250, 7700)) < 250, "at " + t);
       assertTrue(Math.abs(t.th() - -90) < 15, "turned to the goal's heading: " + t);
       assertTrue(closest[0] > 212, "kept clear of the door frame: " + closest[0]);
     } finally {
@@ -144,9 +149,12 @@ class ArPathPlanningTaskTest {
   void anObstacleAcrossThePathIsDrivenAround() {
     Rig r = rig(OFFICE, 3, PlanMode.SYNCHRONOUS);
     try {
-      // A 0.4 m x 1 m box against the north wall of the corridor, right on the path: a 1 m gap.
+      // A 0.4 m x 1 m box against the north wall of the corridor, across the middle of it where
+      // the planned path runs: only the southern metre of the corridor stays open.
       r.sim().world().injectBox(12000, 10000, 400, 1000, 0);
       double[] closest = {Double.MAX_VALUE};
+      double[] passedAtY = {Double.NaN};
+      int[] sensedMost = {0};
       r.robot()
           .addUserTask(
               "boxClearance",
@@ -156,12 +164,110 @@ class ArPathPlanningTaskTest {
                 double dx = Math.max(0, Math.max(11800 - t.x(), t.x() - 12200));
                 double dy = Math.max(0, Math.max(9500 - t.y(), t.y() - 10500));
                 closest[0] = Math.min(closest[0], Math.hypot(dx, dy));
+                if (Math.abs(t.x() - 12000) < 100) {
+                  passedAtY[0] = t.y();
+                }
+                sensedMost[0] = Math.max(sensedMost[0], r.path().getSensedObstacles().size());
               });
       assertTrue(r.path().pathPlanToGoal("Corridor East"));
+      List<ArPose> planned = r.path().getCurrentPath();
+      assertTrue(
+          planned.stream().anyMatch(p -> Math.abs(p.x() - 12000) < 200 && p.y() > 9400),
+          "the first plan (made before the box was seen) runs through it");
       assertTrue(r.finish(Duration.ofMinutes(4)));
       assertEquals(PathPlanningState.REACHED_GOAL, r.path().getState(), r.path().getStatusString());
+      assertTrue(sensedMost[0] > 0, "the sonar saw the box");
+      assertTrue(passedAtY[0] < 9300, "passed the box on its free side, at y = " + passedAtY[0]);
       assertTrue(closest[0] > 212, "the robot's centre came within " + closest[0] + " mm");
-      assertFalse(r.path().getSensedObstacles().isEmpty() && closest[0] < 400);
+    } finally {
+      r.close();
+    }
+  }
+
+  @Test
+  void aBlockedCorridorEndsInFailedMoveWithAReason() {
+    Rig r = rig(OFFICE, 9, PlanMode.SYNCHRONOUS);
+    try {
+      // A cupboard across the whole corridor: Corridor East cannot be reached.
+      r.sim().world().injectBox(12000, 9500, 400, 2000, 0);
+      double[] closest = {Double.MAX_VALUE};
+      r.robot()
+          .addUserTask(
+              "boxClearance",
+              5,
+              () -> {
+                ArPose t = r.sim().sim().getTruePose();
+                closest[0] = Math.min(closest[0], Math.max(0, 11800 - t.x()));
+              });
+      List<ArPose> failed = new ArrayList<>();
+      r.path().addGoalFailedCB(failed::add);
+      long t0 = r.robot().getClock().nanoTime();
+      assertTrue(r.path().pathPlanToGoal("Corridor East"));
+      assertTrue(r.finish(Duration.ofMinutes(3)), "gave up in time");
+      double seconds = (r.robot().getClock().nanoTime() - t0) / 1e9;
+      assertEquals(PathPlanningState.FAILED_MOVE, r.path().getState(), r.path().getStatusString());
+      assertEquals(1, failed.size());
+      assertTrue(
+          r.path().getFailureString().contains("blocked")
+              || r.path().getFailureString().contains("no progress"),
+          r.path().getFailureString());
+      assertTrue(r.path().getReplanCount() > 0, "replanned before giving up");
+      assertTrue(seconds < 120, "took " + seconds + " s");
+      assertTrue(closest[0] > 150, "stopped short of the cupboard: " + closest[0] + " mm");
+      r.sim().runMillis(1500);
+      assertEquals(0, r.robot().getVel(), 10, "stopped");
+      assertEquals(0, r.robot().getRotVel(), 3, "stopped");
+    } finally {
+      r.close();
+    }
+  }
+
+  /**
+   * A loop: a 12 m x 7 m hall around a 6 m x 3.5 m block, leaving a 2 m corridor to the south and a
+   * 1.5 m one to the north.
+   */
+  private static ArMap loop() {
+    ArMap m = new ArMap();
+    m.setLines(
+        List.of(
+            new ArLineSegment(0, 0, 12000, 0),
+            new ArLineSegment(12000, 0, 12000, 7000),
+            new ArLineSegment(12000, 7000, 0, 7000),
+            new ArLineSegment(0, 7000, 0, 0),
+            new ArLineSegment(3000, 2000, 9000, 2000),
+            new ArLineSegment(9000, 2000, 9000, 5500),
+            new ArLineSegment(9000, 5500, 3000, 5500),
+            new ArLineSegment(3000, 5500, 3000, 2000)));
+    m.addMapObject(ArMapObject.robotHome("", 1500, 3500, 0));
+    m.addMapObject(ArMapObject.goal("East", 10500, 3500));
+    return m;
+  }
+
+  @Test
+  void aBlockedPathIsReplannedTheOtherWayRound() {
+    ArMap loop = loop();
+    Rig r = rig(loop, 10, PlanMode.SYNCHRONOUS);
+    try {
+      assertTrue(r.path().pathPlanToGoal("east"));
+      assertTrue(
+          r.path().getCurrentPath().stream().allMatch(p -> p.y() < 4000),
+          "the wide southern corridor is planned first");
+      // The southern corridor is closed by a box nobody put on the map.
+      r.sim().world().injectBox(6000, 1000, 400, 2000, 0);
+      double[] northMost = {0};
+      r.robot()
+          .addUserTask(
+              "north",
+              5,
+              () -> northMost[0] = Math.max(northMost[0], r.sim().sim().getTruePose().y()));
+      assertTrue(r.finish(Duration.ofMinutes(4)));
+      assertEquals(PathPlanningState.REACHED_GOAL, r.path().getState(), r.path().getStatusString());
+      assertTrue(northMost[0] > 5600, "went round by the north: " + northMost[0]);
+      assertTrue(r.path().getReplanCount() > 0, "replanned");
+      assertTrue(
+          r.path().getCurrentPath().stream().anyMatch(p -> p.y() > 5500),
+          "the path in use goes north");
+      assertTrue(r.sim().sim().getTruePose().findDistanceTo(new ArPose(10500, 3500)) < 250);
     } finally {
       r.close();
     }
@@ -183,6 +289,33 @@ class ArPathPlanningTaskTest {
       }
       assertTrue(worst < 150, "localization error at the goals reached " + worst + " mm");
       assertEquals(LockState.LOCKED, r.loc().getLockState());
+    } finally {
+      r.close();
+    }
+  }
+
+  @Test
+  void losingLocalizationFailsTheGoalAndArActionLostStopsTheRobot() {
+    Rig r = rig(OFFICE, 11, PlanMode.SYNCHRONOUS);
+    try {
+      r.loc().getParams().get("RecoverOnFail").setBool(false);
+      r.path().getPathPlanActionGroup().addAction(new ArActionLost(r.loc(), r.path()), 150);
+      List<ArPose> failed = new ArrayList<>();
+      r.path().addGoalFailedCB(failed::add);
+      assertTrue(r.path().pathPlanToGoal("Corridor East"));
+      r.sim().runMillis(5000);
+      assertEquals(PathPlanningState.MOVING_TO_GOAL, r.path().getState());
+      // Carried into the kitchen: the sonar no longer fits the pose the robot believes.
+      r.sim().sim().setTruePose(new ArPose(3750, 3000, 0));
+      assertTrue(r.finish(Duration.ofSeconds(60)), "the goal ended");
+      assertEquals(PathPlanningState.FAILED_MOVE, r.path().getState());
+      assertTrue(
+          r.path().getFailureString().contains("localization lost"), r.path().getFailureString());
+      assertEquals(1, failed.size());
+      assertTrue(r.loc().getRobotIsLostFlag());
+      r.sim().runMillis(2000);
+      assertEquals(0, r.robot().getVel(), 10, "stopped");
+      assertEquals(0, r.robot().getRotVel(), 3, "stopped");
     } finally {
       r.close();
     }

@@ -58,8 +58,12 @@ final class SimSetup {
    * goal}, for driving by the true pose.
    */
   static List<ArPose> truePath(ArMap map, String goal) {
+    return truePath(map, map.findHomePose().orElseThrow(), goal);
+  }
+
+  /** As {@link #truePath(ArMap, String)}, from {@code home}. */
+  static List<ArPose> truePath(ArMap map, ArPose home, String goal) {
     NavigationMap nav = NavigationMap.build(map, 100, 300, 1000, 4);
-    ArPose home = map.findHomePose().orElseThrow();
     ArPose g = map.findMapObject(goal).orElseThrow().pose();
     int[] cells =
         new AStarPlanner()

@@ -20,6 +20,20 @@ final class BenchSupport {
 
   private BenchSupport() {}
 
+  private static final java.lang.management.ThreadMXBean THREADS =
+      java.lang.management.ManagementFactory.getThreadMXBean();
+
+  /**
+   * CPU time used by the calling thread so far, ns: timings made with it do not count the time the
+   * thread waited while other programs had the processor (the wall clock does, and on a busy
+   * computer that swamps what is measured). Falls back to the wall clock where the JVM cannot tell.
+   */
+  static long cpuNanos() {
+    return THREADS.isCurrentThreadCpuTimeSupported()
+        ? THREADS.getCurrentThreadCpuTime()
+        : System.nanoTime();
+  }
+
   /** The p-quantile (0..1) of the values, NaN if none. */
   static double quantile(List<Double> values, double p) {
     if (values.isEmpty()) {
@@ -77,12 +91,15 @@ final class BenchSupport {
 
   /**
    * Drives through waypoints steering by the simulator's true pose: the robot's motion for a
-   * localization benchmark, independent of the localization being measured.
+   * localization benchmark, independent of the localization being measured. It keeps its speed
+   * through the waypoints (braking only for the last one, or to turn more than 20° on the spot), so
+   * that the robot really drives at about {@code speed}.
    */
   static final class TruthDriver extends ArAction {
     private final ArActionDesired d = new ArActionDesired();
     private final SimRobot sim;
     private final List<ArPose> route;
+    private final double[] remaining;
     private final double speed;
     private int next;
 
@@ -91,6 +108,16 @@ final class BenchSupport {
       this.sim = sim;
       this.route = route;
       this.speed = speed;
+      // remaining[i]: the distance from waypoint i on to the next one where the robot must stop:
+      // the end, or a turn of more than 20 degrees, which it makes on the spot (as at the first
+      // waypoint, since the robot may start facing anywhere).
+      remaining = new double[route.size()];
+      for (int i = route.size() - 2; i >= 1; i--) {
+        double in = route.get(i - 1).findAngleTo(route.get(i));
+        double out = route.get(i).findAngleTo(route.get(i + 1));
+        boolean stop = Math.abs(ArMath.subAngle(out, in)) > 20;
+        remaining[i] = stop ? 0 : remaining[i + 1] + route.get(i).findDistanceTo(route.get(i + 1));
+      }
     }
 
     boolean done() {
@@ -112,8 +139,9 @@ final class BenchSupport {
       ArPose g = route.get(next);
       double off = ArMath.subAngle(p.findAngleTo(g), p.th());
       d.setRotVel(ArMath.clamp(2 * off, -60, 60));
-      double brake = Math.sqrt(2 * 250 * Math.max(0, p.findDistanceTo(g) - 40));
-      d.setVel(Math.abs(off) > 8 ? 0 : Math.min(speed, brake) * Math.cos(Math.toRadians(off)));
+      double toEnd = p.findDistanceTo(g) + remaining[next];
+      double brake = Math.sqrt(2 * 250 * Math.max(0, toEnd - 40));
+      d.setVel(Math.abs(off) > 20 ? 0 : Math.min(speed, brake) * Math.cos(Math.toRadians(off)));
       return d;
     }
   }

@@ -137,7 +137,7 @@ final class Navigator implements AutoCloseable {
             elapsed / 1000.0,
             NavigateDemo.fmt(robot.getPose()),
             path.getState(),
-            robot.getPose().findDistanceTo(path.getCurrentGoal()) / 1000,
+            path.getDistanceToGoal() / 1000,
             loc.getLocalizationScore());
       }
     }

@@ -33,6 +33,11 @@ public final class MclFilter {
   private final double[] nth;
   private final double[] ll;
   private int n;
+  // Scratch for injectFromScan, allocated on first use.
+  private double[] cx;
+  private double[] cy;
+  private double[] cth;
+  private double[] cll;
 
   private MotionModel motion = MotionModel.DEFAULTS;
   private double sensorBelief = 0.5;
@@ -174,6 +179,41 @@ public final class MclFilter {
   }
 
   /**
+   * Replaces the particles with {@code count} drawn where {@code scan} fits the map (poses on a
+   * grid {@code step} mm apart with {@code headings} headings, weighed with the sensor model),
+   * except a share {@code uniformShare} spread uniformly over the free space in case the scan
+   * misleads (people, furniture not on the map). Equally weighted. The first step of a global
+   * search.
+   */
+  public void initFromScan(
+      SonarScan scan, int count, double uniformShare, double step, int headings) {
+    n = clampCount(count);
+    int fromScan = (int) Math.round(n * (1 - ArMath.clamp(uniformShare, 0, 1)));
+    if (scan.size() == 0
+        || !ScanSeeder.draw(
+            field,
+            scan,
+            step,
+            Math.max(1, headings),
+            sensorBelief,
+            seeThroughLogPenalty,
+            rng,
+            x,
+            y,
+            th,
+            fromScan)) {
+      fromScan = 0;
+    }
+    for (int i = fromScan; i < n; i++) {
+      placeRandom(i);
+    }
+    double eq = 1.0 / n;
+    for (int i = 0; i < n; i++) {
+      w[i] = eq;
+    }
+  }
+
+  /**
    * Replaces a share {@code fraction} of the particles (the lowest weighted first would need a
    * sort; random ones are as good, since weights are equal right after resampling) by random poses
    * in free space, to recover when the robot is lost.
@@ -192,19 +232,81 @@ public final class MclFilter {
     normalize();
   }
 
+  /**
+   * Replaces a share {@code fraction} of the particles by poses where {@code scan} fits the map:
+   * {@code candidates} poses are drawn uniformly over the free space, weighed against the scan, and
+   * the replacements are drawn from them in proportion to those weights (sensor-resetting
+   * recovery). Far more likely than {@link #injectRandom} to put a particle near a kidnapped
+   * robot's real pose, at the cost of weighing the candidates (about one update of that many
+   * particles). Falls back to {@link #injectRandom} if the scan has no echoes.
+   */
+  public void injectFromScan(SonarScan scan, double fraction, int candidates) {
+    int k = (int) Math.round(ArMath.clamp(fraction, 0, 1) * n);
+    if (k == 0 || field.freeCellCount() == 0) {
+      return;
+    }
+    if (scan.size() == 0 || candidates < 1) {
+      injectRandom(fraction);
+      return;
+    }
+    if (cx == null || cx.length < candidates) {
+      cx = new double[candidates];
+      cy = new double[candidates];
+      cth = new double[candidates];
+      cll = new double[candidates];
+    }
+    int saveN = n;
+    for (int c = 0; c < candidates; c++) {
+      placeRandom(c, cx, cy, cth);
+    }
+    SonarLikelihood.score(field, scan, cx, cy, cth, candidates, seeThroughLogPenalty, cll);
+    double max = Double.NEGATIVE_INFINITY;
+    for (int c = 0; c < candidates; c++) {
+      cll[c] *= sensorBelief;
+      max = Math.max(max, cll[c]);
+    }
+    double total = 0;
+    for (int c = 0; c < candidates; c++) {
+      cll[c] = Math.exp(cll[c] - max);
+      total += cll[c];
+    }
+    double step = total / k;
+    double u = rng.nextDouble() * step;
+    double acc = cll[0];
+    int c = 0;
+    double mean = 1.0 / saveN;
+    for (int m = 0; m < k; m++) {
+      double pick = u + m * step;
+      while (pick > acc && c < candidates - 1) {
+        c++;
+        acc += cll[c];
+      }
+      int i = rng.nextInt(saveN);
+      x[i] = cx[c];
+      y[i] = cy[c];
+      th[i] = cth[c];
+      w[i] = mean;
+    }
+    normalize();
+  }
+
   private void placeRandom(int i) {
+    placeRandom(i, x, y, th);
+  }
+
+  private void placeRandom(int i, double[] xs, double[] ys, double[] ths) {
     GridSpec g = field.spec();
     if (field.freeCellCount() == 0) {
-      x[i] = g.originX() + rng.nextDouble() * g.width() * g.res();
-      y[i] = g.originY() + rng.nextDouble() * g.height() * g.res();
+      xs[i] = g.originX() + rng.nextDouble() * g.width() * g.res();
+      ys[i] = g.originY() + rng.nextDouble() * g.height() * g.res();
     } else {
       int cell = field.freeCell(rng.nextInt(field.freeCellCount()));
       int col = cell % g.width();
       int row = cell / g.width();
-      x[i] = g.originX() + (col + rng.nextDouble()) * g.res();
-      y[i] = g.originY() + (row + rng.nextDouble()) * g.res();
+      xs[i] = g.originX() + (col + rng.nextDouble()) * g.res();
+      ys[i] = g.originY() + (row + rng.nextDouble()) * g.res();
     }
-    th[i] = (rng.nextDouble() * 2 - 1) * Math.PI;
+    ths[i] = (rng.nextDouble() * 2 - 1) * Math.PI;
   }
 
   private int clampCount(int count) {

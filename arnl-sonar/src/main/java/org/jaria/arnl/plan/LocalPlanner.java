@@ -131,6 +131,15 @@ public final class LocalPlanner {
       if (Math.hypot(tx - x, ty - y) < 1) {
         w = 0;
       }
+      if (w != 0 && !turnClear(x, y, th, off, here, map, obsX, obsY, nObs, p)) {
+        // The robot's corners would sweep into something on the short way round: take the long
+        // way if that is clear, else report blocked (the follower then backs off or replans).
+        double longWay = off > 0 ? off - 2 * Math.PI : off + 2 * Math.PI;
+        if (!turnClear(x, y, th, longWay, here, map, obsX, obsY, nObs, p)) {
+          return new Command(0, 0, true, here);
+        }
+        w = Math.signum(longWay) * Math.max(Math.abs(w), Math.min(wMax, Math.toRadians(20)));
+      }
       return new Command(0, Math.toDegrees(w), false, here);
     }
     double vTop = Math.max(0, Math.min(p.maxVel(), speedCap));
@@ -207,6 +216,33 @@ public final class LocalPlanner {
       return new Command(0, Math.toDegrees(w), true, here);
     }
     return new Command(bestV, Math.toDegrees(bestW), false, here);
+  }
+
+  /**
+   * Whether turning on the spot by {@code turn} radians (at most the first 60°, enough to be free
+   * of what is near now) keeps the robot's rectangle clear: it may not get closer than the side
+   * clearance to anything it is not already that close to.
+   */
+  private static boolean turnClear(
+      double x,
+      double y,
+      double th,
+      double turn,
+      double here,
+      ClearanceMap map,
+      double[] ox,
+      double[] oy,
+      int n,
+      Params p) {
+    double span = Math.min(Math.abs(turn), Math.toRadians(60));
+    double step = Math.toRadians(5);
+    double floor = Math.min(0, here) - 5;
+    for (double a = step; a <= span + 1e-9; a += step) {
+      if (margin(x, y, th + Math.signum(turn) * a, map, ox, oy, n, p) < floor) {
+        return false;
+      }
+    }
+    return true;
   }
 
   /** How much room the robot has at (x, y, th): negative when it would touch something. */

@@ -78,6 +78,32 @@ public final class NavigationMap implements LocalPlanner.ClearanceMap {
     return k < 0 ? 5000 : walls[k];
   }
 
+  /**
+   * Range at which a sonar at (sx, sy) facing {@code axis} (radians) should hear a mapped wall or
+   * point: the nearest one met by five rays spread across the cone of half-angle {@code coneHalf},
+   * or {@code Double.MAX_VALUE} if none within {@code maxRange} mm.
+   */
+  public double expectedSonarRange(
+      double sx, double sy, double axis, double coneHalf, double maxRange) {
+    double best = Double.MAX_VALUE;
+    for (int k = -2; k <= 2; k++) {
+      double a = axis + coneHalf * k / 2;
+      double dx = Math.cos(a);
+      double dy = Math.sin(a);
+      // Sphere tracing through the distance field: each step is as long as the clearance there.
+      double t = FINE_RES;
+      while (t <= Math.min(maxRange, best)) {
+        double d = wallDistanceAt(sx + dx * t, sy + dy * t);
+        if (d < 0.75 * FINE_RES) {
+          best = Math.min(best, t);
+          break;
+        }
+        t += Math.max(0.5 * FINE_RES, d - 0.75 * FINE_RES);
+      }
+    }
+    return best;
+  }
+
   /** Whether (x, y) lies on the planning grid. */
   public boolean inBounds(double x, double y) {
     return grid.spec().indexOf(x, y) >= 0;

@@ -99,6 +99,15 @@ public final class PlannedPath {
     return best;
   }
 
+  /**
+   * Distance left to the end for someone at (px, py): to the nearest point of the path, then along
+   * it, mm.
+   */
+  public double remainingFrom(double px, double py) {
+    int i = closestIndex(px, py, 0, x.length);
+    return Math.hypot(px - x[i], py - y[i]) + length() - s[i];
+  }
+
   /** The points as poses (heading along the path). */
   public List<ArPose> toPoses() {
     List<ArPose> out = new ArrayList<>(x.length);

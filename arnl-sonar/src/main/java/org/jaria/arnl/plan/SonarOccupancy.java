@@ -95,6 +95,23 @@ public final class SonarOccupancy {
    */
   public void addReading(
       double sx, double sy, double axis, double range, double maxRange, double coneHalf) {
+    addReading(sx, sy, axis, range, maxRange, coneHalf, false);
+  }
+
+  /**
+   * As {@link #addReading(double, double, double, double, double, double)}; an {@code explained}
+   * echo (the map says a wall is at that range in the cone) only clears the cone in front of it:
+   * the wall is known exactly, and placing its echo across the cone would put phantom obstacles
+   * beside it — across a doorway when the echo came from the door frame.
+   */
+  public void addReading(
+      double sx,
+      double sy,
+      double axis,
+      double range,
+      double maxRange,
+      double coneHalf,
+      boolean explained) {
     if (!placed || range <= 0) {
       return;
     }
@@ -123,6 +140,9 @@ public final class SonarOccupancy {
         int k = j * n + i;
         float v = logOdds[k];
         if (echo && Math.abs(d - range) <= eps) {
+          if (explained) {
+            continue;
+          }
           double cross = dx * ay - dy * ax;
           double along = dx * ax + dy * ay;
           double a = Math.atan2(Math.abs(cross), along);

@@ -25,7 +25,7 @@ class NavigateDemoTest {
     assertEquals(2, r.outcomes().size());
     for (NavigateDemo.GoalOutcome o : r.outcomes()) {
       assertTrue(o.reached(), o.toString());
-      assertTrue(o.goalError() < 350, o.toString());
+      assertTrue(o.goalError() < 250, o.toString());
       assertTrue(o.locError() < 200, o.toString());
     }
     assertTrue(text.contains("Localized at home: yes"), text);

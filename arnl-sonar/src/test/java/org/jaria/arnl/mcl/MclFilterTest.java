@@ -234,6 +234,39 @@ class MclFilterTest {
   }
 
   @Test
+  void seedingFromAScanPutsParticlesWhereTheScanFits() {
+    ArPose truth = new ArPose(1500, 1000, 45);
+    SonarScan s = SonarScan.prepare(scan(truth, room().getLines(), 0), truth, 150, 4500, 15, 7);
+    MclFilter f = new MclFilter(field(), 5000, 12);
+    f.initFromScan(s, 5000, 0.2, 200, 36);
+    assertEquals(5000, f.size());
+    int near = nearTruth(f, truth);
+    f.initUniform(5000);
+    int nearUniform = nearTruth(f, truth);
+    assertTrue(near > 500, "particles near the true pose after seeding: " + near);
+    assertTrue(near > 20 * Math.max(1, nearUniform), near + " vs " + nearUniform + " uniform");
+    // Without echoes there is nothing to go by: uniform.
+    f.initFromScan(SonarScan.prepare(List.of(), truth, 150, 4500, 15, 7), 3000, 0.2, 200, 36);
+    assertEquals(3000, f.size());
+    assertTrue(nearTruth(f, truth) < 100);
+  }
+
+  private static int nearTruth(MclFilter f, ArPose truth) {
+    double[] xs = new double[f.size()];
+    double[] ys = new double[f.size()];
+    double[] ts = new double[f.size()];
+    int n = f.copySamples(xs, ys, ts, new double[f.size()]);
+    int near = 0;
+    for (int i = 0; i < n; i++) {
+      if (Math.hypot(xs[i] - truth.x(), ys[i] - truth.y()) < 300
+          && Math.abs(org.jaria.geom.ArMath.subAngle(ts[i], truth.th())) < 15) {
+        near++;
+      }
+    }
+    return near;
+  }
+
+  @Test
   void globalSearchFindsTheRobotInAnAsymmetricRoom() {
     ArPose truth = new ArPose(1500, 1000, 45);
     List<ArLineSegment> walls = room().getLines();

@@ -68,6 +68,27 @@ class LocalPlannerTest {
   }
 
   @Test
+  void turnsTheLongWayRoundWhenACornerWouldSweepIntoSomething() {
+    LocalPlanner lp = new LocalPlanner();
+    // Facing north, the path runs east: the short way is a right turn, but the front-right corner
+    // would sweep through a point 280 mm away at 30 degrees.
+    double[] ox = {242, -242};
+    double[] oy = {140, 140};
+    LocalPlanner.Command c =
+        lp.plan(0, 0, 90, 0, 0, straight(), 0, 600, (x, y) -> 3000, ox, oy, 1, P);
+    assertFalse(c.blocked(), c.toString());
+    assertEquals(0, c.vel());
+    assertTrue(c.rotVel() > 10, "turns left, the long way: " + c);
+    // Without the point it takes the short way.
+    c = lp.plan(0, 0, 90, 0, 0, straight(), 0, 600, (x, y) -> 3000, ox, oy, 0, P);
+    assertTrue(c.rotVel() < -10, "turns right: " + c);
+    // With a point on each side neither way is safe.
+    c = lp.plan(0, 0, 90, 0, 0, straight(), 0, 600, (x, y) -> 3000, ox, oy, 2, P);
+    assertTrue(c.blocked(), c.toString());
+    assertEquals(0, c.rotVel());
+  }
+
+  @Test
   void stopsBeforeAnObstacleRightAhead() {
     LocalPlanner lp = new LocalPlanner();
     double[] ox = new double[41];

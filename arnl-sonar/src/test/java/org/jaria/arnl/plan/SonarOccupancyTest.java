@@ -32,6 +32,18 @@ class SonarOccupancyTest {
   }
 
   @Test
+  void echoesTheMapExplainsOnlyClearTheConeBeforeThem() {
+    SonarOccupancy g = new SonarOccupancy(8000, 50);
+    g.follow(0, 0);
+    for (int k = 0; k < 3; k++) {
+      g.addReading(0, 0, 0, 1000, 3000, HALF, true);
+    }
+    assertEquals(0, g.logOddsAt(1000, 0), "a known wall's echo adds no obstacle");
+    assertEquals(0, g.logOddsAt(1000 * Math.cos(HALF * 0.8), 1000 * Math.sin(HALF * 0.8)));
+    assertTrue(g.logOddsAt(500, 0) < 0, "the cone before it is still free");
+  }
+
+  @Test
   void noEchoClearsOnlyWeakly() {
     SonarOccupancy g = new SonarOccupancy(8000, 50);
     g.follow(0, 0);
