@@ -42,7 +42,29 @@ public final class JariaCli implements Runnable {
 
   /** Builds the command line with every subcommand, ready to execute. */
   public static CommandLine commandLine() {
-    return new CommandLine(new JariaCli());
+    CommandLine cli = new CommandLine(new JariaCli());
+    addHelpOptions(cli);
+    return cli;
+  }
+
+  /**
+   * Gives every subcommand a {@code --help} (and {@code -h} where the command does not use it for
+   * something else), so {@code jaria demo --help} shows the demo's usage.
+   */
+  private static void addHelpOptions(CommandLine cl) {
+    for (CommandLine sub : cl.getSubcommands().values()) {
+      CommandLine.Model.CommandSpec spec = sub.getCommandSpec();
+      if (spec.findOption("--help") == null) {
+        String[] names =
+            spec.findOption("-h") == null ? new String[] {"-h", "--help"} : new String[] {"--help"};
+        spec.addOption(
+            CommandLine.Model.OptionSpec.builder(names)
+                .usageHelp(true)
+                .description("Show this help message and exit.")
+                .build());
+      }
+      addHelpOptions(sub);
+    }
   }
 
   /** Runs {@code jaria} with {@code args} and exits with its status. */

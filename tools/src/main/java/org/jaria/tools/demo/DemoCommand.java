@@ -17,8 +17,8 @@ import picocli.CommandLine.Spec;
 @Command(
     name = "demo",
     description = {
-      "Run one of the thesis's applications (default: wander) against an embedded simulator,",
-      "or against a robot or simulator given with --remote."
+      "Run one of the thesis's applications (default: wander) on an embedded simulator.",
+      "With --remote they drive that robot or simulator instead."
     },
     subcommands = {
       DemoCommand.Wander.class,

@@ -23,9 +23,10 @@ import picocli.CommandLine.Spec;
     mixinStandardHelpOptions = true,
     sortOptions = false,
     description = {
-      "The robot monitor (MobileEyes): map, robot, sonar, particles and path; click to send the",
-      "robot somewhere, drag it to relocalize, drive it with the arrow keys; status, information",
-      "strings, configuration, camera and custom commands of a guiServer (./jaria demo guiserver)."
+      "The robot monitor (MobileEyes) for a guiServer (./jaria demo guiserver).",
+      "Map, robot, sonar, particles and path; click to send the robot somewhere, drag it to",
+      "relocalize, drive it with the arrow keys; status, information strings, configuration,",
+      "camera and custom commands."
     })
 public final class MonitorCommand implements Callable<Integer>, AppCommand {
 
