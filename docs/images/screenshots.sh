@@ -13,3 +13,13 @@ cd "$root"
   --blob-stats -o "$out/eztrain-simcamera.png"
 ./jaria screenshot simview --map office --demo --advance 30000 --paused \
   --odometry-error constant:0.04,0.08 --region 0,5000,18000,14000 -o "$out/simview-office.png"
+# The monitor needs a guiServer to watch: start one for a while, wait until it listens.
+./jaria demo guiserver --map office --port 7399 --seconds 60 >/dev/null &
+server=$!
+for _ in $(seq 1 60); do
+  (exec 3<>/dev/tcp/127.0.0.1/7399) 2>/dev/null && break
+  sleep 1
+done
+./jaria screenshot monitor 127.0.0.1:7399 -o "$out/monitor-office.png"
+kill "$server" 2>/dev/null || true
+wait "$server" 2>/dev/null || true
