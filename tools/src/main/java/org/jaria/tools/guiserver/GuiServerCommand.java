@@ -2,12 +2,20 @@ package org.jaria.tools.guiserver;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import org.jaria.acts.image.CameraSource;
+import org.jaria.acts.image.ImageSequenceSource;
+import org.jaria.acts.image.ImageSource;
+import org.jaria.acts.image.StillImageSource;
+import org.jaria.clock.Clock;
+import org.jaria.connection.ArDeviceConnection;
+import org.jaria.connection.ArSerialConnection;
 import org.jaria.connection.ArTcpConnection;
 import org.jaria.map.ArMap;
 import org.jaria.map.MapFormatException;
@@ -18,6 +26,7 @@ import org.jaria.net.server.GuiServer;
 import org.jaria.net.server.ServerOptions;
 import org.jaria.net.server.modes.ArServerModes;
 import org.jaria.net.sim.SimulatedGuiServer;
+import org.jaria.net.video.JpegVideo;
 import org.jaria.robot.ArRobot;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -54,6 +63,35 @@ public final class GuiServerCommand implements Callable<Integer> {
       description =
           "Drive this robot or simulator (port 8101 if absent) instead of an embedded one.")
   String remote;
+
+  @Option(
+      names = "--serial",
+      paramLabel = "DEVICE",
+      description =
+          "Drive the robot on this serial port (e.g. /dev/ttyS0: the thesis's set-up, the"
+              + " program on the robot's own computer) instead of an embedded simulator.")
+  String serial;
+
+  @Option(
+      names = "--baud",
+      description = "Serial baud rate with --serial (default ${DEFAULT-VALUE}).")
+  int baud = ArSerialConnection.DEFAULT_BAUD;
+
+  @Option(
+      names = "--camera",
+      paramLabel = "DEVICE",
+      description =
+          "With --remote or --serial: serve this camera's video (an OpenCV index such as 0, or a"
+              + " device path).")
+  String camera;
+
+  @Option(
+      names = "--video",
+      paramLabel = "FILE|DIR",
+      description =
+          "With --remote or --serial: serve this picture, or the pictures of this folder in turn,"
+              + " as the video (a camera stand-in for tests and demonstrations).")
+  Path video;
 
   @Option(
       names = "--port",
@@ -108,8 +146,19 @@ public final class GuiServerCommand implements Callable<Integer> {
       ServerOptions options = serverOptions();
       ArMap m = loadMap(map);
       String mapName = Path.of(map).getFileName().toString();
-      if (remote != null) {
+      if (remote != null && serial != null) {
+        throw new IllegalArgumentException("give --remote or --serial, not both");
+      }
+      if (camera != null && video != null) {
+        throw new IllegalArgumentException("give --camera or --video, not both");
+      }
+      if (remote != null || serial != null) {
         return runOnRobot(m, mapName, options, out);
+      }
+      if (camera != null || video != null) {
+        throw new IllegalArgumentException(
+            "--camera and --video are for a real robot (--remote or --serial); the embedded"
+                + " simulator serves its own camera (or none with --no-camera)");
       }
       try (SimulatedGuiServer s =
           SimulatedGuiServer.start(
@@ -165,8 +214,24 @@ public final class GuiServerCommand implements Callable<Integer> {
     }
   }
 
-  private int runOnRobot(ArMap m, String mapName, ServerOptions options, PrintWriter out)
-      throws IOException {
+  /** The connection to the robot the options name: TCP for --remote, serial for --serial. */
+  private ArDeviceConnection robotConnection() throws IOException {
+    if (serial != null) {
+      ArSerialConnection c = new ArSerialConnection(serial, baud, Clock.system());
+      try {
+        c.open();
+      } catch (IOException e) {
+        throw new IOException(
+            "could not open the serial port "
+                + serial
+                + ": "
+                + e.getMessage()
+                + " (is the robot switched on and may you use the port? add yourself to the"
+                + " 'dialout' group)",
+            e);
+      }
+      return c;
+    }
     String[] hp = remote.split(":", 2);
     int robotPort;
     try {
@@ -174,18 +239,55 @@ public final class GuiServerCommand implements Callable<Integer> {
     } catch (NumberFormatException e) {
       throw new IllegalArgumentException("--remote must be HOST or HOST:PORT, not " + remote, e);
     }
+    return new ArTcpConnection(hp[0], robotPort);
+  }
+
+  /** The video --camera or --video asks for, or null. */
+  private JpegVideo openVideo() throws IOException {
+    int w = 320;
+    int h = 240;
+    ImageSource source;
+    String name;
+    if (camera != null) {
+      source = CameraSource.open(camera, w, h);
+      name = "Camera " + camera;
+    } else if (video != null) {
+      source =
+          Files.isDirectory(video)
+              ? ImageSequenceSource.ofDirectory(video, w, h, true)
+              : StillImageSource.open(video, w, h);
+      name = video.getFileName().toString();
+    } else {
+      return null;
+    }
+    return new JpegVideo(name, source.width(), source.height(), 5, source::nextFrame) {
+      @Override
+      public void close() {
+        super.close();
+        source.close();
+      }
+    };
+  }
+
+  private int runOnRobot(ArMap m, String mapName, ServerOptions options, PrintWriter out)
+      throws IOException {
+    String where = serial != null ? serial : remote;
     ArRobot robot = new ArRobot("robot");
-    robot.setDeviceConnection(new ArTcpConnection(hp[0], robotPort));
+    robot.setDeviceConnection(robotConnection());
     if (!robot.blockingConnect()) {
       throw new IllegalStateException(
-          "could not connect to the robot at " + remote + ": " + robot.getConnectFailure());
+          "could not connect to the robot at " + where + ": " + robot.getConnectFailure());
     }
     robot.runAsync(true);
-    try (ArnlNavigation nav = ArnlNavigation.create(robot, m, ArnlNavigation.Mode.THREADED, seed)) {
+    try (JpegVideo cam = openVideo();
+        ArnlNavigation nav = ArnlNavigation.create(robot, m, ArnlNavigation.Mode.THREADED, seed)) {
       robot.enableMotors();
       pause(Duration.ofMillis(1500));
       boolean localized = nav.localizeAtHome();
-      out.printf(Locale.ROOT, "guiServer: robot %s at %s on %s%n", robot.getName(), remote, map);
+      out.printf(Locale.ROOT, "guiServer: robot %s at %s on %s%n", robot.getName(), where, map);
+      if (cam != null) {
+        out.printf(Locale.ROOT, "Serving video: %s%n", cam.getName());
+      }
       report(out, localized, robot, nav);
       try (GuiServer gui =
           GuiServer.builder(robot)
@@ -194,6 +296,7 @@ public final class GuiServerCommand implements Callable<Integer> {
               .localization(nav.localization())
               .pathPlanning(nav.pathPlanning())
               .config(nav.configRegistry())
+              .video(cam)
               .build()) {
         nav.addCommands(gui.getCommands());
         gui.open();
