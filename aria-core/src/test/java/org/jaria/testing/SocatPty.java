@@ -25,7 +25,7 @@ public final class SocatPty implements AutoCloseable {
   /** One end (give it to the client). */
   public final Path a;
 
-  /** The other end (give it to the robot). */
+  /** The other end (give it to the robot); null when the other end is a TCP connection. */
   public final Path b;
 
   private final Process process;
@@ -36,24 +36,40 @@ public final class SocatPty implements AutoCloseable {
    * @throws IOException if socat is missing, exits, or has not made both links within 10 s
    */
   public SocatPty(Path dir) throws IOException, InterruptedException {
-    a = dir.resolve("ttyA");
-    b = dir.resolve("ttyB");
+    this(dir, dir.resolve("ttyA"), dir.resolve("ttyB"), null);
+  }
+
+  /**
+   * A serial port whose other end is a TCP connection to {@code host:port}: a robot program opens
+   * {@link #a} as a serial port and talks to, say, a simulator, through the real tty layer as it
+   * would to a Pioneer's serial port. {@link #b} is null.
+   */
+  public static SocatPty bridgedToTcp(Path dir, String host, int port)
+      throws IOException, InterruptedException {
+    return new SocatPty(dir, dir.resolve("ttyA"), null, "TCP:" + host + ":" + port);
+  }
+
+  private SocatPty(Path dir, Path a, Path b, String otherAddress)
+      throws IOException, InterruptedException {
+    this.a = a;
+    this.b = b;
     Path log = dir.resolve("socat.log");
+    String second = b != null ? "pty,raw,echo=0,link=" + b : otherAddress;
     // Watch the folder before socat starts, so the creation of a link cannot be missed.
     try (WatchService watcher = dir.getFileSystem().newWatchService()) {
       dir.register(watcher, StandardWatchEventKinds.ENTRY_CREATE);
       process =
-          new ProcessBuilder("socat", "pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b)
+          new ProcessBuilder("socat", "pty,raw,echo=0,link=" + a, second)
               .redirectErrorStream(true)
               .redirectOutput(log.toFile())
               .start();
       long deadline = System.nanoTime() + STARTUP.toNanos();
-      while (!(Files.exists(a) && Files.exists(b))) {
+      while (!(Files.exists(a) && (b == null || Files.exists(b)))) {
         long left = deadline - System.nanoTime();
         if (!process.isAlive() || left <= 0) {
           process.destroy();
           throw new IOException(
-              "socat did not create the pty pair within "
+              "socat did not create the pty within "
                   + STARTUP.toSeconds()
                   + " s (is socat installed? apt-get install socat): "
                   + Files.readString(log));

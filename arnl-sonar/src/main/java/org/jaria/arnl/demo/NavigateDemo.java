@@ -12,7 +12,8 @@ import java.util.Objects;
 import org.jaria.arnl.ArPathPlanningTask;
 import org.jaria.arnl.ArPathPlanningTask.PathPlanningState;
 import org.jaria.arnl.ArSonarLocalizationTask;
-import org.jaria.connection.ArTcpConnection;
+import org.jaria.connection.ArDeviceConnection;
+import org.jaria.connection.RobotAddress;
 import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
@@ -44,7 +45,8 @@ public final class NavigateDemo {
    *
    * @param map a map file, or a bundled map name ("office", "hall")
    * @param goals goal names from the map (or poses written "x,y" / "x,y,th"), visited in order
-   * @param robotAddress "host:port" of a robot to drive, or null for the embedded simulator
+   * @param robotAddress the robot to drive ({@link RobotAddress}: host[:port] or a serial device),
+   *     or null for the embedded simulator
    * @param speedUp for the embedded simulator: 0 = lockstep, as fast as possible; otherwise
    *     simulated seconds per real second
    * @param seed seed of the simulator and the localization
@@ -201,25 +203,19 @@ public final class NavigateDemo {
   }
 
   private static Result runOnRobot(Options o, ArMap map, PrintStream out) {
-    String address = o.robotAddress().strip();
-    int colon = address.lastIndexOf(':');
-    String host = colon < 0 ? address : address.substring(0, colon);
-    int port;
-    try {
-      port =
-          colon < 0 ? ArTcpConnection.DEFAULT_PORT : Integer.parseInt(address.substring(colon + 1));
-    } catch (NumberFormatException e) {
-      throw new IllegalArgumentException(
-          "robot address must be host:port, not " + o.robotAddress(), e);
-    }
+    RobotAddress address = RobotAddress.parse(o.robotAddress());
     ArRobot robot = new ArRobot("robot");
-    robot.setDeviceConnection(new ArTcpConnection(host, port));
+    ArDeviceConnection conn = address.connection(robot.getClock());
+    try {
+      conn.open();
+    } catch (IOException e) {
+      throw new IllegalStateException(
+          "could not reach the robot at " + address + ": " + e.getMessage(), e);
+    }
+    robot.setDeviceConnection(conn);
     if (!robot.blockingConnect()) {
       throw new IllegalStateException(
-          "could not connect to the robot at "
-              + o.robotAddress()
-              + ": "
-              + robot.getConnectFailure());
+          "could not connect to the robot at " + address + ": " + robot.getConnectFailure());
     }
     robot.runAsync(true);
     try {

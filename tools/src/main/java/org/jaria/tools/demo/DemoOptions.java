@@ -1,5 +1,6 @@
 package org.jaria.tools.demo;
 
+import org.jaria.connection.RobotAddress;
 import picocli.CommandLine.Option;
 
 /** Options every demo shares. */
@@ -30,14 +31,14 @@ class DemoOptions {
 
   @Option(
       names = "--remote",
-      paramLabel = "HOST[:PORT]",
-      description = "Use this robot or simulator instead of an embedded one (port 8101 if absent).")
+      paramLabel = "HOST[:PORT]|DEVICE",
+      description =
+          "Use this robot or simulator instead of an embedded one (port 8101 if absent; a serial"
+              + " device such as /dev/ttyS0 or /dev/ttyUSB0@115200 for a robot on a serial port).")
   String remote;
 
+  /** ARIA's connection options for --remote. */
   String[] remoteArgs() {
-    String[] hp = remote.split(":", 2);
-    return hp.length == 2
-        ? new String[] {"-rh", hp[0], "-rrtp", hp[1]}
-        : new String[] {"-rh", hp[0]};
+    return RobotAddress.parse(remote).toArgs();
   }
 }

@@ -35,8 +35,10 @@ final class NavigateDemoCommand implements Callable<Integer> {
 
   @Option(
       names = "--remote",
-      paramLabel = "HOST:PORT",
-      description = "Drive this robot or external simulator instead of an embedded one.")
+      paramLabel = "HOST[:PORT]|DEVICE",
+      description =
+          "Drive this robot or external simulator instead of an embedded one (a serial device"
+              + " such as /dev/ttyS0 for a robot on a serial port).")
   String remote;
 
   @Option(

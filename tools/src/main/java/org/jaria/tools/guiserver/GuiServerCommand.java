@@ -16,7 +16,7 @@ import org.jaria.acts.image.StillImageSource;
 import org.jaria.clock.Clock;
 import org.jaria.connection.ArDeviceConnection;
 import org.jaria.connection.ArSerialConnection;
-import org.jaria.connection.ArTcpConnection;
+import org.jaria.connection.RobotAddress;
 import org.jaria.map.ArMap;
 import org.jaria.map.MapFormatException;
 import org.jaria.net.arnl.ArnlNavigation;
@@ -59,9 +59,10 @@ public final class GuiServerCommand implements Callable<Integer> {
 
   @Option(
       names = "--remote",
-      paramLabel = "HOST[:PORT]",
+      paramLabel = "HOST[:PORT]|DEVICE",
       description =
-          "Drive this robot or simulator (port 8101 if absent) instead of an embedded one.")
+          "Drive this robot or simulator (port 8101 if absent; a serial device such as"
+              + " /dev/ttyS0 works too) instead of an embedded one.")
   String remote;
 
   @Option(
@@ -214,32 +215,29 @@ public final class GuiServerCommand implements Callable<Integer> {
     }
   }
 
-  /** The connection to the robot the options name: TCP for --remote, serial for --serial. */
-  private ArDeviceConnection robotConnection() throws IOException {
-    if (serial != null) {
-      ArSerialConnection c = new ArSerialConnection(serial, baud, Clock.system());
-      try {
-        c.open();
-      } catch (IOException e) {
-        throw new IOException(
-            "could not open the serial port "
-                + serial
-                + ": "
-                + e.getMessage()
-                + " (is the robot switched on and may you use the port? add yourself to the"
-                + " 'dialout' group)",
-            e);
-      }
-      return c;
-    }
-    String[] hp = remote.split(":", 2);
-    int robotPort;
+  /** Where the robot is: --serial, or --remote (a host, host:port or serial device). */
+  private RobotAddress robotAddress() {
+    return serial != null ? RobotAddress.serial(serial, baud) : RobotAddress.parse(remote);
+  }
+
+  /** The connection to the robot, opened. */
+  private ArDeviceConnection robotConnection(RobotAddress address) throws IOException {
+    ArDeviceConnection c = address.connection(Clock.system());
     try {
-      robotPort = hp.length == 2 ? Integer.parseInt(hp[1]) : ArTcpConnection.DEFAULT_PORT;
-    } catch (NumberFormatException e) {
-      throw new IllegalArgumentException("--remote must be HOST or HOST:PORT, not " + remote, e);
+      c.open();
+    } catch (IOException e) {
+      throw new IOException(
+          "could not reach the robot at "
+              + address
+              + ": "
+              + e.getMessage()
+              + (address.isSerial()
+                  ? " (is the robot switched on and may you use the port? add yourself to the"
+                      + " 'dialout' group)"
+                  : " (is the robot or simulator running there?)"),
+          e);
     }
-    return new ArTcpConnection(hp[0], robotPort);
+    return c;
   }
 
   /** The video --camera or --video asks for, or null. */
@@ -271,9 +269,9 @@ public final class GuiServerCommand implements Callable<Integer> {
 
   private int runOnRobot(ArMap m, String mapName, ServerOptions options, PrintWriter out)
       throws IOException {
-    String where = serial != null ? serial : remote;
+    RobotAddress where = robotAddress();
     ArRobot robot = new ArRobot("robot");
-    robot.setDeviceConnection(robotConnection());
+    robot.setDeviceConnection(robotConnection(where));
     if (!robot.blockingConnect()) {
       throw new IllegalStateException(
           "could not connect to the robot at " + where + ": " + robot.getConnectFailure());

@@ -5,8 +5,15 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.file.Path;
+import org.jaria.geom.ArPose;
+import org.jaria.sim.SimOptions;
+import org.jaria.sim.SimRobot;
+import org.jaria.sim.SimWorld;
+import org.jaria.testing.SocatPty;
 import org.jaria.tools.cli.JariaCli;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
 
 /**
@@ -47,6 +54,26 @@ class DemoCommandTest {
     assertEquals(0, r.status(), r.out() + r.err());
     assertTrue(r.out().contains("reached goal 2"), r.out());
     assertTrue(r.out().contains("all goals reached"), r.out());
+  }
+
+  @Test
+  void wanderDrivesARobotOnASerialPort(@TempDir Path dir) throws Exception {
+    // A simulator behind a real pseudo-terminal: the demo opens it as a serial port, exactly as
+    // it would open a Pioneer's /dev/ttyS0.
+    try (SimWorld world =
+        SimWorld.bundled("office", SimOptions.builder().basePort(0).seed(3).build())) {
+      SimRobot robot = world.addRobot("p3dx-sh");
+      world.listen();
+      world.startRealTime(1);
+      ArPose start = robot.getTruePose();
+      try (SocatPty serial = SocatPty.bridgedToTcp(dir, "127.0.0.1", robot.getPort())) {
+        Run r = jaria("demo", "wander", "--remote", serial.a.toString(), "--seconds", "3");
+        assertEquals(0, r.status(), r.out() + r.err());
+        assertTrue(r.out().contains("t=  2s"), r.out());
+      }
+      double moved = robot.getTruePose().findDistanceTo(start);
+      assertTrue(moved > 300, "the robot drove " + moved + " mm over the serial line");
+    }
   }
 
   @Test
