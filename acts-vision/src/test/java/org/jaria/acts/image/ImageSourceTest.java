@@ -19,7 +19,6 @@ import org.opencv.core.Scalar;
 import org.opencv.core.Size;
 import org.opencv.imgproc.Imgproc;
 import org.opencv.videoio.VideoWriter;
-import TempDir;
 
 class ImageSourceTest {
 
@@ -109,23 +108,17 @@ class ImageSourceTest {
   }
 
   @Test
-  void aVideoFileIsReadThroughTheCameraPath(@TempDir Path dir)
-      throws Exception {
+  void aVideoFileIsReadThroughTheCameraPath() throws Exception {
     // The live-camera code (OpenCV's VideoCapture) on a video OpenCV itself wrote: a red square
     // moving right across a grey field, 10 frames.
     OpenCvLoader.load();
     Path file = dir.resolve("square.avi");
     VideoWriter writer =
         new VideoWriter(
-            file.toString(),
-            VideoWriter.fourcc('M', 'J', 'P', 'G'),
-            10,
-            new Size(160, 120));
+            file.toString(), VideoWriter.fourcc('M', 'J', 'P', 'G'), 10, new Size(160, 120));
     assertTrue(writer.isOpened(), "OpenCV can write MJPG video here");
     for (int k = 0; k < 10; k++) {
-      Mat frame =
-          new Mat(
-              120, 160, CvType.CV_8UC3, new Scalar(90, 90, 90));
+      Mat frame = new Mat(120, 160, CvType.CV_8UC3, new Scalar(90, 90, 90));
       Imgproc.rectangle(
           frame,
           new Point(10 + 10 * k, 40),
