@@ -1,5 +1,6 @@
 package org.jaria.connection;
 
+import java.io.IOException;
 import java.util.Locale;
 import org.jaria.clock.Clock;
 
@@ -96,6 +97,40 @@ public record RobotAddress(String host, int port, String serialPort, int baud) {
     return isSerial()
         ? new ArSerialConnection(serialPort, baud, clock)
         : new ArTcpConnection(host, port, clock);
+  }
+
+  /**
+   * Opens a connection to the robot.
+   *
+   * @param portOption how the user names another port (e.g. "--remote"), for the advice
+   * @throws IOException saying what failed and what to try
+   */
+  public ArDeviceConnection open(Clock clock, String portOption) throws IOException {
+    ArDeviceConnection c = connection(clock);
+    openExplained(c, portOption);
+    return c;
+  }
+
+  /**
+   * Opens {@code c}; if that fails, the exception's message says what to try: for a serial port,
+   * power, the port name ({@code portOption}) and permission; for TCP, whether anything listens.
+   */
+  public static void openExplained(ArDeviceConnection c, String portOption) throws IOException {
+    try {
+      c.open();
+    } catch (IOException e) {
+      throw new IOException(
+          "could not open "
+              + c.getPortName()
+              + ": "
+              + e.getMessage()
+              + (c instanceof ArSerialConnection
+                  ? " (is the robot plugged in and switched on? give its port with "
+                      + portOption
+                      + ", and check that you may use it: add yourself to the 'dialout' group)"
+                  : " (is the robot or simulator running there? start one with ./jaria sim)"),
+          e);
+    }
   }
 
   /** ARIA's command-line options for this address ({@code -rh/-rrtp} or {@code -rp/-rb}). */

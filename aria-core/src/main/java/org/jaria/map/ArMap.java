@@ -149,6 +149,19 @@ public final class ArMap {
   }
 
   /**
+   * A map as a user names it on a command line: a bundled map's name ({@link #BUNDLED_MAPS}) or a
+   * {@code .map} file.
+   *
+   * @throws MapFormatException if the file is not a well-formed map
+   * @throws IOException if the file cannot be read
+   */
+  public static ArMap load(String fileOrBundledName) throws MapFormatException, IOException {
+    return BUNDLED_MAPS.contains(fileOrBundledName)
+        ? loadBundled(fileOrBundledName)
+        : readFile(Path.of(fileOrBundledName));
+  }
+
+  /**
    * One of the maps shipped with JAria ({@link #BUNDLED_MAPS}: "office", a 30 × 20 m office floor
    * with a corridor and nine rooms; "hall", an open 20 × 15 m hall with pillars).
    *

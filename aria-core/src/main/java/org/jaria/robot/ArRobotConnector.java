@@ -5,6 +5,7 @@ import java.util.Locale;
 import org.jaria.connection.ArDeviceConnection;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.connection.ArTcpConnection;
+import org.jaria.connection.RobotAddress;
 import org.jaria.util.ArArgumentParser;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -145,18 +146,10 @@ public class ArRobotConnector {
 
   private ArDeviceConnection open(ArDeviceConnection c) {
     try {
-      c.open();
+      RobotAddress.openExplained(c, "-rp");
       return c;
     } catch (IOException e) {
-      lastOpenFailure =
-          "could not open "
-              + c.getPortName()
-              + ": "
-              + e.getMessage()
-              + (c instanceof ArSerialConnection
-                  ? " (is the robot plugged in and switched on? give its port with -rp, and check"
-                      + " that you may use it: add yourself to the 'dialout' group)"
-                  : " (is the robot or simulator running there? start one with ./jaria sim)");
+      lastOpenFailure = e.getMessage();
       log.error("{}", lastOpenFailure);
       return null;
     }

@@ -3,7 +3,6 @@ package org.jaria.arnl.demo;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
-import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -12,7 +11,6 @@ import java.util.Objects;
 import org.jaria.arnl.ArPathPlanningTask;
 import org.jaria.arnl.ArPathPlanningTask.PathPlanningState;
 import org.jaria.arnl.ArSonarLocalizationTask;
-import org.jaria.connection.ArDeviceConnection;
 import org.jaria.connection.RobotAddress;
 import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
@@ -151,11 +149,8 @@ public final class NavigateDemo {
 
   /** A map file, or a bundled map name. */
   public static ArMap loadMap(String mapOrName) {
-    if (ArMap.BUNDLED_MAPS.contains(mapOrName)) {
-      return ArMap.loadBundled(mapOrName);
-    }
     try {
-      return ArMap.readFile(Path.of(mapOrName));
+      return ArMap.load(mapOrName);
     } catch (IOException e) {
       throw new UncheckedIOException("cannot read the map " + mapOrName + ": " + e.getMessage(), e);
     } catch (MapFormatException e) {
@@ -205,14 +200,11 @@ public final class NavigateDemo {
   private static Result runOnRobot(Options o, ArMap map, PrintStream out) {
     RobotAddress address = RobotAddress.parse(o.robotAddress());
     ArRobot robot = new ArRobot("robot");
-    ArDeviceConnection conn = address.connection(robot.getClock());
     try {
-      conn.open();
+      robot.setDeviceConnection(address.open(robot.getClock(), "--remote"));
     } catch (IOException e) {
-      throw new IllegalStateException(
-          "could not reach the robot at " + address + ": " + e.getMessage(), e);
+      throw new IllegalStateException(e.getMessage(), e);
     }
-    robot.setDeviceConnection(conn);
     if (!robot.blockingConnect()) {
       throw new IllegalStateException(
           "could not connect to the robot at " + address + ": " + robot.getConnectFailure());

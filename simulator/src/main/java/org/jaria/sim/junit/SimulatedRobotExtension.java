@@ -3,7 +3,6 @@ package org.jaria.sim.junit;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.lang.reflect.AnnotatedElement;
-import java.nio.file.Path;
 import java.util.Optional;
 import org.jaria.map.ArMap;
 import org.jaria.map.MapFormatException;
@@ -62,11 +61,8 @@ public final class SimulatedRobotExtension
   }
 
   private static ArMap loadMap(String map) {
-    if (ArMap.BUNDLED_MAPS.contains(map)) {
-      return ArMap.loadBundled(map);
-    }
     try {
-      return ArMap.readFile(Path.of(map));
+      return ArMap.load(map);
     } catch (IOException e) {
       throw new UncheckedIOException(
           "cannot read the map '" + map + "' of @SimulatedRobotTest: " + e.getMessage(), e);

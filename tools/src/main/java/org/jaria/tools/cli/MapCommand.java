@@ -49,7 +49,7 @@ final class MapCommand implements Runnable {
       ArMap m;
       boolean bundled = ArMap.BUNDLED_MAPS.contains(map);
       try {
-        m = bundled ? ArMap.loadBundled(map) : ArMap.readFile(Path.of(map));
+        m = ArMap.load(map);
       } catch (MapFormatException e) {
         spec.commandLine().getErr().println(e.getMessage());
         return 1;

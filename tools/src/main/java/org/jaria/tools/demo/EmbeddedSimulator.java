@@ -2,7 +2,6 @@ package org.jaria.tools.demo;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.file.Path;
 import org.jaria.map.ArMap;
 import org.jaria.map.MapFormatException;
 import org.jaria.sim.RobotOptions;
@@ -42,11 +41,8 @@ final class EmbeddedSimulator implements AutoCloseable {
   }
 
   static ArMap loadMap(String map) {
-    if (ArMap.BUNDLED_MAPS.contains(map)) {
-      return ArMap.loadBundled(map);
-    }
     try {
-      return ArMap.readFile(Path.of(map));
+      return ArMap.load(map);
     } catch (IOException e) {
       throw new UncheckedIOException("cannot read the map " + map + ": " + e.getMessage(), e);
     } catch (MapFormatException e) {

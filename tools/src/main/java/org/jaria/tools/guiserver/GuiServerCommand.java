@@ -14,7 +14,6 @@ import org.jaria.acts.image.ImageSequenceSource;
 import org.jaria.acts.image.ImageSource;
 import org.jaria.acts.image.StillImageSource;
 import org.jaria.clock.Clock;
-import org.jaria.connection.ArDeviceConnection;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.connection.RobotAddress;
 import org.jaria.map.ArMap;
@@ -205,11 +204,8 @@ public final class GuiServerCommand implements Callable<Integer> {
   }
 
   static ArMap loadMap(String map) throws IOException {
-    if (ArMap.BUNDLED_MAPS.contains(map)) {
-      return ArMap.loadBundled(map);
-    }
     try {
-      return ArMap.readFile(Path.of(map));
+      return ArMap.load(map);
     } catch (MapFormatException e) {
       throw new IllegalArgumentException("not a valid map: " + e.getMessage(), e);
     }
@@ -218,26 +214,6 @@ public final class GuiServerCommand implements Callable<Integer> {
   /** Where the robot is: --serial, or --remote (a host, host:port or serial device). */
   private RobotAddress robotAddress() {
     return serial != null ? RobotAddress.serial(serial, baud) : RobotAddress.parse(remote);
-  }
-
-  /** The connection to the robot, opened. */
-  private ArDeviceConnection robotConnection(RobotAddress address) throws IOException {
-    ArDeviceConnection c = address.connection(Clock.system());
-    try {
-      c.open();
-    } catch (IOException e) {
-      throw new IOException(
-          "could not reach the robot at "
-              + address
-              + ": "
-              + e.getMessage()
-              + (address.isSerial()
-                  ? " (is the robot switched on and may you use the port? add yourself to the"
-                      + " 'dialout' group)"
-                  : " (is the robot or simulator running there?)"),
-          e);
-    }
-    return c;
   }
 
   /** The video --camera or --video asks for, or null. */
@@ -271,7 +247,7 @@ public final class GuiServerCommand implements Callable<Integer> {
       throws IOException {
     RobotAddress where = robotAddress();
     ArRobot robot = new ArRobot("robot");
-    robot.setDeviceConnection(robotConnection(where));
+    robot.setDeviceConnection(where.open(Clock.system(), "--remote"));
     if (!robot.blockingConnect()) {
       throw new IllegalStateException(
           "could not connect to the robot at " + where + ": " + robot.getConnectFailure());
