@@ -30,21 +30,38 @@ final class BenchCommand implements Runnable {
     spec.commandLine().usage(spec.commandLine().getOut());
   }
 
+  /** A benchmark subcommand: runs, then prints the table it returns. */
+  abstract static class Bench implements Callable<Integer> {
+
+    @Spec CommandSpec spec;
+
+    /** Runs the benchmark; returns its table. */
+    abstract String table() throws Exception;
+
+    @Override
+    public Integer call() throws Exception {
+      spec.commandLine().getOut().println(table());
+      return 0;
+    }
+  }
+
+  /** A benchmark with a shorter, less precise form. */
+  abstract static class QuickBench extends Bench {
+
+    @Option(
+        names = "--quick",
+        description = "Shorter runs (fewer samples or shorter phases; less precise figures).")
+    boolean quick;
+  }
+
   /** {@code jaria bench protocol}. */
   @Command(
       name = "protocol",
       description = "SIP decode and command encode rates, and SIP-to-command latency over TCP.")
-  static final class Protocol implements Callable<Integer> {
-
-    @Spec CommandSpec spec;
-
-    @Option(names = "--quick", description = "Shorter runs (less precise).")
-    boolean quick;
-
+  static final class Protocol extends QuickBench {
     @Override
-    public Integer call() throws Exception {
-      spec.commandLine().getOut().println(ProtocolBenchmark.run(quick));
-      return 0;
+    String table() throws Exception {
+      return ProtocolBenchmark.run(quick);
     }
   }
 
@@ -52,14 +69,10 @@ final class BenchCommand implements Runnable {
   @Command(
       name = "sim",
       description = "Simulator real-time factors (1, 10, 100 robots) and sonar ray-cast cost.")
-  static final class Sim implements Callable<Integer> {
-
-    @Spec CommandSpec spec;
-
+  static final class Sim extends Bench {
     @Override
-    public Integer call() {
-      spec.commandLine().getOut().println(org.jaria.sim.bench.SimBenchmark.run());
-      return 0;
+    String table() {
+      return org.jaria.sim.bench.SimBenchmark.run();
     }
   }
 
@@ -67,17 +80,10 @@ final class BenchCommand implements Runnable {
   @Command(
       name = "vision",
       description = "Blob tracking per frame at three sizes and 1/8/32 channels, against OpenCV.")
-  static final class Vision implements Callable<Integer> {
-
-    @Spec CommandSpec spec;
-
-    @Option(names = "--quick", description = "Shorter runs (less precise).")
-    boolean quick;
-
+  static final class Vision extends QuickBench {
     @Override
-    public Integer call() throws Exception {
-      spec.commandLine().getOut().println(org.jaria.acts.bench.VisionBenchmark.run(quick));
-      return 0;
+    String table() throws Exception {
+      return org.jaria.acts.bench.VisionBenchmark.run(quick);
     }
   }
 
@@ -87,17 +93,10 @@ final class BenchCommand implements Runnable {
       description =
           "Sonar localization update time and accuracy, global localization, planning and"
               + " navigation success (fixed seeds).")
-  static final class Arnl implements Callable<Integer> {
-
-    @Spec CommandSpec spec;
-
-    @Option(names = "--quick", description = "Fewer repetitions (less precise).")
-    boolean quick;
-
+  static final class Arnl extends QuickBench {
     @Override
-    public Integer call() {
-      spec.commandLine().getOut().println(org.jaria.arnl.bench.ArnlBenchmark.run(quick));
-      return 0;
+    String table() {
+      return org.jaria.arnl.bench.ArnlBenchmark.run(quick);
     }
   }
 
@@ -105,17 +104,10 @@ final class BenchCommand implements Runnable {
   @Command(
       name = "actions",
       description = "Resolver and whole-cycle time with 20 active actions on a simulated P3-DX.")
-  static final class Actions implements Callable<Integer> {
-
-    @Spec CommandSpec spec;
-
-    @Option(names = "--quick", description = "Fewer samples (less precise).")
-    boolean quick;
-
+  static final class Actions extends QuickBench {
     @Override
-    public Integer call() {
-      spec.commandLine().getOut().println(org.jaria.tools.bench.ActionsBenchmark.run(quick));
-      return 0;
+    String table() {
+      return org.jaria.tools.bench.ActionsBenchmark.run(quick);
     }
   }
 
@@ -125,17 +117,10 @@ final class BenchCommand implements Runnable {
       description =
           "Robot cycle time with 20 monitors at 10 Hz and a hostile client; a client that stops"
               + " reading.")
-  static final class Net implements Callable<Integer> {
-
-    @Spec CommandSpec spec;
-
-    @Option(names = "--quick", description = "10 s phases instead of 30 s.")
-    boolean quick;
-
+  static final class Net extends QuickBench {
     @Override
-    public Integer call() throws Exception {
-      spec.commandLine().getOut().println(org.jaria.net.bench.NetBenchmark.run(quick));
-      return 0;
+    String table() throws Exception {
+      return org.jaria.net.bench.NetBenchmark.run(quick);
     }
   }
 
@@ -145,9 +130,7 @@ final class BenchCommand implements Runnable {
       description =
           "Map editor frame times (draw, and draw + pixels) while zooming and panning a"
               + " 60,000-point map, headless software rendering.")
-  static final class Mapper implements Callable<Integer> {
-
-    @Spec CommandSpec spec;
+  static final class Mapper extends QuickBench {
 
     @Option(
         names = "--map",
@@ -155,15 +138,9 @@ final class BenchCommand implements Runnable {
         description = "Time this map instead of the generated 60,000-point floor plan.")
     Path map;
 
-    @Option(names = "--quick", description = "Fewer frames a row (less precise).")
-    boolean quick;
-
     @Override
-    public Integer call() throws Exception {
-      spec.commandLine()
-          .getOut()
-          .println(org.jaria.tools.mapper.MapperBenchmark.run(map, quick ? 40 : 200));
-      return 0;
+    String table() throws Exception {
+      return org.jaria.tools.mapper.MapperBenchmark.run(map, quick ? 40 : 200);
     }
   }
 }
