@@ -1,6 +1,5 @@
 package org.jaria.robot;
 
-import java.util.function.DoubleToIntFunction;
 import org.jaria.action.ArActionDesired;
 import org.jaria.protocol.ArCommands;
 
@@ -96,7 +95,8 @@ final class ActionReflection {
   /**
    * Sends the rotation the desire asks for.
    *
-   * @param headingToRobot converts a global heading (degrees) into the HEAD argument
+   * @param s the robot's state (its heading, and the frames HEAD's argument is converted into)
+   * @param encoderTransformTh the encoder→global rotation, degrees
    * @param wasDirect whether direct motion had rotation last cycle (send at once)
    * @return whether the robot is being asked to turn
    */
@@ -104,8 +104,8 @@ final class ActionReflection {
       long now,
       long refreshNanos,
       ArActionDesired d,
-      double currentHeading,
-      DoubleToIntFunction headingToRobot,
+      RobotStatus s,
+      double encoderTransformTh,
       boolean wasDirect) {
     double accel =
         has(d.getRotAccelStrength()) ? Math.round(d.getRotAccel()) : limits.getRotAccel();
@@ -136,7 +136,7 @@ final class ActionReflection {
         heading = false;
         val = 0;
       } else {
-        val = headingToRobot.applyAsInt(currentHeading + delta);
+        val = MotionReflector.robotHeading(s.pose().th() + delta, s, encoderTransformTh);
         stopped = false;
         heading = true;
         trying = true;

@@ -316,13 +316,7 @@ final class MotionReflector {
         rotWasDirect = true;
       } else {
         tryingToMove |=
-            actions.reflectRot(
-                now,
-                refreshNanos,
-                desired,
-                s.pose().th(),
-                th -> robotHeading(th, s, encoderTransformTh),
-                rotWasDirect);
+            actions.reflectRot(now, refreshNanos, desired, s, encoderTransformTh, rotWasDirect);
         rotWasDirect = false;
       }
     }
@@ -427,7 +421,7 @@ final class MotionReflector {
    * Converts a global heading into the robot's own heading frame, which is what HEAD takes: undo
    * the encoder→global rotation and any gyro correction of the odometry heading.
    */
-  private static int robotHeading(double globalHeading, RobotStatus s, double encoderTransformTh) {
+  static int robotHeading(double globalHeading, RobotStatus s, double encoderTransformTh) {
     double encTh = ArMath.subAngle(globalHeading, encoderTransformTh);
     double rawTh =
         ArMath.addAngle(encTh, ArMath.subAngle(s.rawEncoderPose().th(), s.encoderPose().th()));
