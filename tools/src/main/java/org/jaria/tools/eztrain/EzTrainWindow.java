@@ -1,8 +1,6 @@
 package org.jaria.tools.eztrain;
 
-import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.Consumer;
@@ -18,8 +16,6 @@ import javafx.scene.control.SplitPane;
 import javafx.scene.control.Tab;
 import javafx.scene.control.TabPane;
 import javafx.scene.control.TextArea;
-import javafx.scene.control.TextInputControl;
-import javafx.scene.input.KeyCode;
 import javafx.scene.input.KeyEvent;
 import javafx.scene.layout.BorderPane;
 import javafx.scene.layout.HBox;
@@ -29,7 +25,6 @@ import javafx.scene.layout.StackPane;
 import javafx.scene.layout.VBox;
 import javafx.scene.paint.Color;
 import javafx.stage.Stage;
-import org.jaria.acts.blob.Blob;
 import org.jaria.acts.blob.TrackerSettings;
 import org.jaria.acts.color.ChannelBank;
 import org.jaria.acts.color.ColorPlane;
@@ -176,7 +171,7 @@ public final class EzTrainWindow implements DesktopApp {
     root.setTop(menus.menuBar());
     root.setBottom(new VBox(output, statusBar));
     Scene scene = new Scene(root);
-    scene.addEventFilter(KeyEvent.KEY_PRESSED, this::key);
+    scene.addEventFilter(KeyEvent.KEY_PRESSED, new EzTrainKeys(state, training, this::quit));
     stage.setScene(scene);
     stage.setOnCloseRequest(
         e -> {
@@ -441,18 +436,7 @@ public final class EzTrainWindow implements DesktopApp {
     if (manualTab.isSelected()) {
       manual.show(r, session.bank().copyOf(r.channel()));
     }
-    console.markTrained(trainedMask());
-  }
-
-  private int trainedMask() {
-    int m = 0;
-    ChannelBank b = session.bank();
-    for (int c = 1; c <= ChannelBank.NUM_CHANNELS; c++) {
-      if ((b.activeMask() & (1 << (c - 1))) != 0) {
-        m |= 1 << (c - 1);
-      }
-    }
-    return m;
+    console.markTrained(session.bank().activeMask());
   }
 
   // ------------------------------------------------------------------ actions
@@ -544,79 +528,26 @@ public final class EzTrainWindow implements DesktopApp {
   /** Info → Blob stats: the selected channel's tracked blobs in the output area. */
   public void blobStats() {
     Rendered r = last;
-    if (r == null) {
-      return;
+    if (r != null) {
+      print(EzTrainInfo.blobStats(r, session.bank().getTrackedBlobs(r.channel())));
     }
-    int c = r.channel();
-    StringBuilder b = new StringBuilder();
-    b.append(
-        String.format(
-            Locale.ROOT,
-            "Channel %d: %d blob(s) (tracking up to %d)",
-            c,
-            r.blobs().size(),
-            session.bank().getTrackedBlobs(c)));
-    int n = 1;
-    for (Blob blob : r.blobs()) {
-      b.append(
-          String.format(
-              Locale.ROOT,
-              "%n  %d: a %d  x %d  y %d  left %d  right %d  top %d  bottom %d",
-              n++,
-              blob.area(),
-              blob.xcg(),
-              blob.ycg(),
-              blob.left(),
-              blob.right(),
-              blob.top(),
-              blob.bottom()));
-    }
-    print(b.toString());
   }
 
   /** Info → Timing: tracking time per frame and frame rates. */
   public void timing() {
     Rendered r = last;
-    if (r == null) {
-      return;
+    if (r != null) {
+      print(
+          EzTrainInfo.timing(
+              r, feed != null ? feed.framesPerSecond() : Double.NaN, server.timing()));
     }
-    double ms = r.trackNanos() / 1e6;
-    StringBuilder b =
-        new StringBuilder(
-            String.format(
-                Locale.ROOT,
-                "Tracking a %dx%d frame (32 channels) took %.2f ms (up to %.0f frames/s)",
-                r.frame().width(),
-                r.frame().height(),
-                ms,
-                ms > 0 ? 1000 / ms : 0));
-    if (feed != null) {
-      b.append(String.format(Locale.ROOT, "; video %.1f frames/s", feed.framesPerSecond()));
-    }
-    b.append("; ").append(server.timing());
-    print(b.toString());
   }
 
   // ---- help
 
   /** Help → Keyboard Shortcuts. */
   void showShortcuts(MenuBar menus) {
-    List<String> intro = new ArrayList<>();
-    intro.add("Keys (not while typing in a field)");
-    for (ViewMode m : ViewMode.values()) {
-      intro.add(String.format(Locale.ROOT, "  %-18s %s view", m.key(), m.label()));
-    }
-    for (TrainTool t : TrainTool.values()) {
-      intro.add(String.format(Locale.ROOT, "  %-18s %s tool", t.key().getName(), t.label()));
-    }
-    intro.add("  Esc                cancel a drag, or quit");
-    intro.add("");
-    intro.add("Mouse on the image");
-    intro.add("  Left drag          Add/Remove: a rectangle; Draw/Erase: a brush stroke");
-    intro.add("  Left click         Pick: print the pixel's colour");
-    intro.add("  Right click        next view mode");
-    intro.add("  Middle click       grab a frame (single-frame video)");
-    prompts.info("Keyboard shortcuts", ShortcutHelp.text(intro, menus));
+    prompts.info("Keyboard shortcuts", ShortcutHelp.text(EzTrainInfo.keysAndMouse(), menus));
   }
 
   // ---- quitting
@@ -639,45 +570,7 @@ public final class EzTrainWindow implements DesktopApp {
     }
   }
 
-  // ------------------------------------------------------------------ keys and mouse
-
-  private void key(KeyEvent e) {
-    if (e.getTarget() instanceof TextInputControl
-        || stage.getScene().getFocusOwner() instanceof TextInputControl) {
-      return;
-    }
-    if (e.isShortcutDown() || e.isAltDown()) {
-      return;
-    }
-    KeyCode k = e.getCode();
-    if (k == KeyCode.ESCAPE) {
-      if (training.dragging()) {
-        training.cancel();
-      } else {
-        quit();
-      }
-      e.consume();
-      return;
-    }
-    for (ViewMode m : ViewMode.values()) {
-      if (k.getChar().equals(String.valueOf(m.key())) || k == numpad(m)) {
-        state.viewMode.set(m);
-        e.consume();
-        return;
-      }
-    }
-    for (TrainTool t : TrainTool.values()) {
-      if (k == t.key()) {
-        state.tool.set(t);
-        e.consume();
-        return;
-      }
-    }
-  }
-
-  private static KeyCode numpad(ViewMode m) {
-    return KeyCode.valueOf("NUMPAD" + m.key());
-  }
+  // ------------------------------------------------------------------ mouse
 
   private final class TrainingListener implements TrainingPane.Listener {
     @Override
