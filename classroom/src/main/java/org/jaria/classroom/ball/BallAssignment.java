@@ -3,6 +3,8 @@ package org.jaria.classroom.ball;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.Optional;
 import org.jaria.action.ArAction;
 import org.jaria.action.ArActionConstantVelocity;
 import org.jaria.action.ArActionLimiterForwards;
@@ -11,9 +13,14 @@ import org.jaria.classroom.grading.Assignment;
 import org.jaria.classroom.grading.Check;
 import org.jaria.classroom.grading.Fmt;
 import org.jaria.classroom.grading.Grade;
+import org.jaria.classroom.grading.Grading;
 import org.jaria.classroom.grading.GuardedAction;
 import org.jaria.classroom.grading.PoseTrace;
 import org.jaria.classroom.grading.Solutions;
+import org.jaria.classroom.link.StudentContext;
+import org.jaria.classroom.link.StudentLink;
+import org.jaria.classroom.link.StudentSide;
+import org.jaria.classroom.link.StudentStreams;
 import org.jaria.geom.ArPose;
 import org.jaria.robot.ArRobot;
 
@@ -66,31 +73,52 @@ public final class BallAssignment implements Assignment {
   }
 
   @Override
-  public Grade grade(Class<?> solution) {
-    try (BallScene scene = new BallScene(11, 2500, 400)) {
-      ArAction action;
-      try {
-        action =
+  public StudentSide studentSide() {
+    return new StudentSide() {
+      private GuardedAction guarded;
+
+      @Override
+      public void setUp(StudentContext ctx) throws Solutions.SolutionException {
+        ArRobot robot = ctx.robot();
+        ArACTS_1_2 acts = new ArACTS_1_2(ctx.clock());
+        acts.setReadTimeouts(0, 0); // lockstep: the reply comes on the next tick, never wait
+        if (!acts.openPort(robot, ctx.channel("acts"))) {
+          throw new IllegalStateException("ACTS did not open: " + acts.getOpenMessage());
+        }
+        ArAction action =
             Solutions.instantiate(
-                solution, ArAction.class, new Class<?>[] {ArACTS_1_2.class}, scene.acts);
-      } catch (Solutions.SolutionException e) {
-        return new Grade(
-            id(), List.of(Check.fail("solution can be created", points(), e.getMessage())));
+                ctx.solution(), ArAction.class, new Class<?>[] {ArACTS_1_2.class}, acts);
+        guarded = new GuardedAction(action);
+        robot.addAction(new ArActionLimiterForwards("speed limiter near", 350, 800, 200), 7);
+        robot.addAction(guarded, 3);
+        robot.addAction(new ArActionConstantVelocity("stop", 0), 1);
+        robot.enableMotors();
       }
-      ArRobot robot = scene.robot();
-      GuardedAction guarded = new GuardedAction(action);
-      robot.addAction(new ArActionLimiterForwards("speed limiter near", 350, 800, 200), 7);
-      robot.addAction(guarded, 3);
-      robot.addAction(new ArActionConstantVelocity("stop", 0), 1);
-      robot.enableMotors();
+
+      @Override
+      public String call(String name) {
+        return name.equals("fire") && guarded != null ? guarded.report() : "";
+      }
+    };
+  }
+
+  @Override
+  public Grade grade(StudentStreams student) {
+    try (BallScene scene = new BallScene(11, 2500, 400);
+        StudentLink sim =
+            StudentLink.connect(
+                scene.world, scene.simRobot, student, Map.of("acts", scene.actsEnd))) {
+      Optional<String> failed = sim.setUp();
+      if (failed.isPresent()) {
+        return Grading.setUpFailure(this, failed.get());
+      }
       try (PoseTrace trace = new PoseTrace(scene.world, scene.simRobot)) {
         List<Check> checks = new ArrayList<>();
-        boolean close =
-            scene.sim.runUntil(() -> scene.distanceToBall() < CLOSE, Duration.ofSeconds(30));
+        boolean close = sim.runUntil(() -> scene.distanceToBall() < CLOSE, Duration.ofSeconds(30));
         checks.add(approach(close, scene));
-        checks.add(follow(close, scene));
-        checks.add(stopsWhenLost(scene));
-        checks.add(guarded.check(1));
+        checks.add(follow(close, scene, sim));
+        checks.add(stopsWhenLost(scene, sim));
+        checks.add(GuardedAction.check(1, sim.call("fire")));
         checks.add(
             Check.of(
                 "no collisions",
@@ -127,7 +155,7 @@ public final class BallAssignment implements Assignment {
             + " desired.setDeltaHeading");
   }
 
-  private static Check follow(boolean close, BallScene scene) {
+  private static Check follow(boolean close, BallScene scene, StudentLink sim) {
     String name = "follows the ball as it rolls";
     if (!close) {
       return Check.fail(name, 3, "not tried: the robot never got close to the ball");
@@ -139,7 +167,7 @@ public final class BallAssignment implements Assignment {
     for (int step = 1; step <= 100; step++) {
       double d = 20.0 * step; // 100 mm/s to the robot's left
       scene.moveBall(x - d * Math.sin(heading), y + d * Math.cos(heading));
-      scene.sim.runMillis(200);
+      sim.runMillis(200);
       if (scene.distanceToBall() > KEEP_UP) {
         return Check.fail(
             name,
@@ -169,9 +197,9 @@ public final class BallAssignment implements Assignment {
         name, 3, "stayed within " + Fmt.dist(KEEP_UP) + " and moved " + Fmt.dist(moved));
   }
 
-  private static Check stopsWhenLost(BallScene scene) {
+  private static Check stopsWhenLost(BallScene scene, StudentLink sim) {
     scene.removeBall();
-    scene.sim.runMillis(3000);
+    sim.runMillis(3000);
     double v = scene.simRobot.getVel();
     return Check.of(
         "stops when the ball is gone",

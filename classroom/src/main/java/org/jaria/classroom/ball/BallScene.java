@@ -2,7 +2,6 @@ package org.jaria.classroom.ball;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import org.jaria.acts.ArACTS_1_2;
 import org.jaria.acts.blob.TrackerSettings;
 import org.jaria.acts.color.ChannelBank;
 import org.jaria.acts.color.Trainer;
@@ -12,18 +11,16 @@ import org.jaria.acts.server.ActsLink;
 import org.jaria.acts.server.VisionPipeline;
 import org.jaria.connection.PipeConnection;
 import org.jaria.geom.ArPose;
-import org.jaria.robot.ArRobot;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
 import org.jaria.sim.camera.ColoredObject;
 import org.jaria.sim.camera.SimCamera;
-import org.jaria.sim.client.SimulatedRobot;
 
 /**
  * The ball-following world: the hall, a robot with a camera, a red ball ahead of it, ACTS channel 1
- * trained on the ball's red, and an ACTS server answering the robot's ArACTS_1_2 over an in-memory
- * pipe, all in lockstep on the world's virtual clock.
+ * trained on the ball's red, and an ACTS server whose pipe the robot link carries to the student's
+ * ArACTS_1_2, all in lockstep on the world's virtual clock.
  */
 final class BallScene implements AutoCloseable {
 
@@ -32,8 +29,10 @@ final class BallScene implements AutoCloseable {
 
   final SimWorld world;
   final SimRobot simRobot;
-  final SimulatedRobot sim;
-  final ArACTS_1_2 acts;
+
+  /** The grader's end of the ACTS server's pipe: the student's ACTS client is at the other. */
+  final PipeConnection actsEnd;
+
   final double startDistance;
   private ColoredObject ball;
 
@@ -61,11 +60,7 @@ final class BallScene implements AutoCloseable {
       ChannelBank bank = new ChannelBank();
       trainRed(bank, camera);
       PipeConnection.Pair pipe = PipeConnection.pair(world.getClock(), "acts");
-      try {
-        pipe.b().open();
-      } catch (IOException e) {
-        throw new UncheckedIOException(e);
-      }
+      pipe.b().open();
       ActsLink link =
           new ActsLink(
               new VisionPipeline(cameraSource(camera), bank, TrackerSettings.DEFAULT), pipe.b());
@@ -77,21 +72,16 @@ final class BallScene implements AutoCloseable {
               throw new UncheckedIOException(e);
             }
           });
-      sim = SimulatedRobot.connect(world, simRobot);
+      actsEnd = pipe.a();
+      actsEnd.open();
       startDistance = distanceToBall();
-      acts = new ArACTS_1_2(world.getClock());
-      acts.setReadTimeouts(0, 0); // lockstep: the reply comes on the next tick, never wait
-      if (!acts.openPort(sim.robot(), pipe.a())) {
-        throw new IllegalStateException("ACTS did not open: " + acts.getOpenMessage());
-      }
+    } catch (IOException e) {
+      world.close();
+      throw new UncheckedIOException(e);
     } catch (RuntimeException e) {
       world.close();
       throw e;
     }
-  }
-
-  ArRobot robot() {
-    return sim.robot();
   }
 
   /** Distance from the robot's true centre to the ball's edge, mm. */
@@ -164,8 +154,7 @@ final class BallScene implements AutoCloseable {
 
   @Override
   public void close() {
-    acts.close();
-    sim.close();
+    actsEnd.close();
     world.close();
   }
 }

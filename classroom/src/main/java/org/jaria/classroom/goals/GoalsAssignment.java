@@ -3,6 +3,8 @@ package org.jaria.classroom.goals;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.jaria.arnl.ArActionLost;
 import org.jaria.arnl.ArActionSlowDownWhenNotCertain;
@@ -13,9 +15,14 @@ import org.jaria.classroom.grading.Assignment;
 import org.jaria.classroom.grading.Check;
 import org.jaria.classroom.grading.Fmt;
 import org.jaria.classroom.grading.Grade;
+import org.jaria.classroom.grading.Grading;
 import org.jaria.classroom.grading.PoseTrace;
 import org.jaria.classroom.grading.Programs;
 import org.jaria.classroom.grading.Solutions;
+import org.jaria.classroom.link.StudentContext;
+import org.jaria.classroom.link.StudentLink;
+import org.jaria.classroom.link.StudentSide;
+import org.jaria.classroom.link.StudentStreams;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
 import org.jaria.range.ArSonarDevice;
@@ -24,7 +31,6 @@ import org.jaria.sim.OdometryError;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
-import org.jaria.sim.client.SimulatedRobot;
 
 /**
  * Assignment 3: go to named goals with navigation. The student's {@link NavigationProgram} gets a
@@ -79,65 +85,92 @@ public final class GoalsAssignment implements Assignment {
   }
 
   @Override
-  public Grade grade(Class<?> solution) {
-    NavigationProgram program;
-    try {
-      program =
-          Solutions.instantiate(solution, NavigationProgram.class, new Class<?>[0], new Object[0]);
-    } catch (Solutions.SolutionException e) {
-      return new Grade(
-          id(), List.of(Check.fail("solution can be created", points(), e.getMessage())));
-    }
+  public StudentSide studentSide() {
+    return new StudentSide() {
+      private ArSonarLocalizationTask loc;
+      private final AtomicInteger interrupted = new AtomicInteger();
+
+      @Override
+      public void setUp(StudentContext ctx) throws Solutions.SolutionException {
+        NavigationProgram program =
+            Solutions.instantiate(
+                ctx.solution(), NavigationProgram.class, new Class<?>[0], new Object[0]);
+        ArRobot robot = ctx.robot();
+        ArMap map = ArMap.loadBundled("office");
+        ArSonarDevice sonar = new ArSonarDevice();
+        robot.addRangeDevice(sonar);
+        // Both tasks live as long as this JVM, which ends with the grading.
+        loc =
+            ArSonarLocalizationTask.builder(robot, map)
+                .sonar(sonar)
+                .mode(ArSonarLocalizationTask.UpdateMode.SYNCHRONOUS)
+                .seed(SEED)
+                .build();
+        ArPathPlanningTask path =
+            ArPathPlanningTask.builder(robot, map)
+                .sonar(sonar)
+                .mode(ArPathPlanningTask.PlanMode.SYNCHRONOUS)
+                .build();
+        path.getPathPlanActionGroup().addAction(new ArActionSlowDownWhenNotCertain(loc), 140);
+        path.getPathPlanActionGroup().addAction(new ArActionLost(loc, path), 150);
+        path.addGoalInterruptedCB(g -> interrupted.incrementAndGet());
+        robot.enableMotors();
+        ctx.setProgram(rb -> program.run(rb, path, GOALS));
+      }
+
+      @Override
+      public String call(String name) {
+        return switch (name) {
+          case "localize" -> String.valueOf(loc.localizeRobotAtHomeBlocking());
+          case "interrupted" -> String.valueOf(interrupted.get());
+          default -> "";
+        };
+      }
+    };
+  }
+
+  @Override
+  public Grade grade(StudentStreams student) {
     ArMap map = ArMap.loadBundled("office");
     SimOptions options =
         SimOptions.builder().seed(SEED).odometryError(OdometryError.random(0.02, 0.02)).build();
     try (SimWorld world = SimWorld.create(map, options)) {
       SimRobot r = world.addRobot("p3dx-sh");
-      try (SimulatedRobot sim = SimulatedRobot.connect(world, r)) {
-        ArRobot robot = sim.robot();
-        ArSonarDevice sonar = new ArSonarDevice();
-        robot.addRangeDevice(sonar);
-        try (ArSonarLocalizationTask loc =
-                ArSonarLocalizationTask.builder(robot, map)
-                    .sonar(sonar)
-                    .mode(ArSonarLocalizationTask.UpdateMode.SYNCHRONOUS)
-                    .seed(SEED)
-                    .build();
-            ArPathPlanningTask path =
-                ArPathPlanningTask.builder(robot, map)
-                    .sonar(sonar)
-                    .mode(ArPathPlanningTask.PlanMode.SYNCHRONOUS)
-                    .build()) {
-          path.getPathPlanActionGroup().addAction(new ArActionSlowDownWhenNotCertain(loc), 140);
-          path.getPathPlanActionGroup().addAction(new ArActionLost(loc, path), 150);
-          robot.enableMotors();
-          sim.runMillis(1500);
-          if (!loc.localizeRobotAtHomeBlocking()) {
-            throw new IllegalStateException("the grader could not localize the robot at home");
-          }
-          AtomicInteger interrupted = new AtomicInteger();
-          path.addGoalInterruptedCB(g -> interrupted.incrementAndGet());
-          try (PoseTrace trace = new PoseTrace(world, r)) {
-            List<Check> checks = new ArrayList<>();
-            Programs.Ending end =
-                Programs.run(sim, rb -> program.run(rb, path, GOALS), MAX_TIME, 2);
-            checks.add(end.check());
-            sim.runMillis(5000);
-            checks.addAll(goals(map, trace, interrupted.get()));
-            checks.add(
-                Check.of(
-                    "no collisions",
-                    2,
-                    !trace.everStalled(),
-                    "the robot never touched a wall",
-                    "the robot ran into something at "
-                        + trace.firstStallWhere()
-                        + " after "
-                        + Fmt.seconds(trace.firstStallSeconds())
-                        + ": let the path planning task drive (do not add motion commands or"
-                        + " actions of your own while it is active)"));
-            return new Grade(id(), checks);
-          }
+      try (StudentLink sim = StudentLink.connect(world, r, student, Map.of())) {
+        Optional<String> failed = sim.setUp();
+        if (failed.isPresent()) {
+          return Grading.setUpFailure(this, failed.get());
+        }
+        sim.runMillis(1500);
+        if (!sim.call("localize").equals("true")) {
+          return new Grade(
+              id(),
+              List.of(
+                  Check.fail(
+                      "robot localized",
+                      points(),
+                      "the robot could not be localized at home; did your constructor move it?")));
+        }
+        try (PoseTrace trace = new PoseTrace(world, r)) {
+          List<Check> checks = new ArrayList<>();
+          Programs.Ending end = Programs.run(sim, MAX_TIME, 2);
+          checks.add(end.check());
+          sim.runMillis(5000);
+          int interrupted = sim.call("interrupted").matches("0*") ? 0 : 1;
+          checks.addAll(goals(map, trace, interrupted));
+          checks.add(
+              Check.of(
+                  "no collisions",
+                  2,
+                  !trace.everStalled(),
+                  "the robot never touched a wall",
+                  "the robot ran into something at "
+                      + trace.firstStallWhere()
+                      + " after "
+                      + Fmt.seconds(trace.firstStallSeconds())
+                      + ": let the path planning task drive (do not add motion commands or"
+                      + " actions of your own while it is active)"));
+          return new Grade(id(), checks);
         }
       }
     }

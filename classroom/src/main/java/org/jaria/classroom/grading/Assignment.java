@@ -1,5 +1,8 @@
 package org.jaria.classroom.grading;
 
+import org.jaria.classroom.link.StudentSide;
+import org.jaria.classroom.link.StudentStreams;
+
 /**
  * One assignment of the classroom kit: what a solution must be, and how it is graded on the
  * simulator. Grading is deterministic (a seeded world on virtual time), so a solution gets the same
@@ -29,8 +32,15 @@ public interface Assignment {
   int points();
 
   /**
-   * Grades {@code solution} (a class of {@link #solutionType()}) on the simulator. Never throws for
-   * a faulty solution: every problem becomes a failed check with a message.
+   * Grades the student whose process is at the other end of {@code student} on the simulator: the
+   * world, its ground truth and the checks live here, the student's object lives in their process
+   * ({@link #studentSide()}), joined by a {@link org.jaria.classroom.link.StudentLink}. Never
+   * throws for a faulty solution: every problem becomes a failed check with a message.
+   *
+   * @throws org.jaria.classroom.link.LinkLost if the student's process stops answering
    */
-  Grade grade(Class<?> solution);
+  Grade grade(StudentStreams student);
+
+  /** The half that runs in the student's process: makes their object and hooks it up. */
+  StudentSide studentSide();
 }

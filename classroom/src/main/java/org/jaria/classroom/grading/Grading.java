@@ -1,14 +1,22 @@
 package org.jaria.classroom.grading;
 
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.net.URLClassLoader;
+import java.nio.channels.Channels;
+import java.nio.channels.Pipe;
 import java.nio.file.Path;
 import java.util.List;
+import org.jaria.classroom.link.StudentHarness;
+import org.jaria.classroom.link.StudentStreams;
 
 /**
- * Grading in this JVM: compile a folder of Java files, find the solution class, run the
- * assignment's checks. The {@link Grader} does the same for many students, each in a JVM of its
- * own; tests use this directly.
+ * Grading in this JVM, for tests and for trying an assignment out: compile a folder of Java files
+ * and grade it, with the student's side of the robot link on a thread of this JVM instead of a
+ * process of its own. The grade is the same as {@link Grader} gives (the same link, the same
+ * lockstep), but nothing is contained: use it only on code you trust, such as the kit's own.
  */
 public final class Grading {
 
@@ -17,14 +25,49 @@ public final class Grading {
   /** Grades the solution among the classes compiled into {@code classesDir}. */
   public static Grade gradeClasses(Assignment a, Path classesDir) throws IOException {
     List<String> names = SubmissionCompiler.classNames(classesDir);
+    Pipe toStudent = Pipe.open();
+    Pipe toGrader = Pipe.open();
     try (URLClassLoader loader = SolutionFinder.loaderFor(classesDir)) {
-      Class<?> solution;
+      StudentHarness harness =
+          new StudentHarness(
+              a,
+              loader,
+              names,
+              new DataInputStream(Channels.newInputStream(toStudent.source())),
+              new DataOutputStream(Channels.newOutputStream(toGrader.sink())));
+      Thread student =
+          new Thread(
+              () -> {
+                try {
+                  harness.serve();
+                } catch (IOException e) {
+                  // the grader's side ended first: it reports why
+                } finally {
+                  try {
+                    toGrader.sink().close();
+                  } catch (IOException e) {
+                    // closing only wakes the grader's reads
+                  }
+                }
+              },
+              "student-side-" + a.id());
+      student.setDaemon(true);
+      student.start();
       try {
-        solution = SolutionFinder.find(a, loader, names);
-      } catch (Solutions.SolutionException e) {
-        return new Grade(a.id(), List.of(Check.fail("solution found", a.points(), e.getMessage())));
+        return a.grade(
+            StudentStreams.of(
+                Channels.newInputStream(toGrader.source()),
+                Channels.newOutputStream(toStudent.sink())));
+      } finally {
+        toStudent.sink().close();
+        try {
+          student.join(10_000);
+        } catch (InterruptedException e) {
+          Thread.currentThread().interrupt();
+        }
       }
-      return a.grade(solution);
+    } catch (UncheckedIOException e) {
+      throw e.getCause();
     }
   }
 
@@ -48,5 +91,16 @@ public final class Grading {
         a.id(),
         List.of(
             Check.fail("compiles", a.points(), "your code does not compile:\n" + errors.strip())));
+  }
+
+  /**
+   * The grade of a solution that could not be set up, from the student's side's answer: the check's
+   * name, a tab, the message.
+   */
+  public static Grade setUpFailure(Assignment a, String answer) {
+    int tab = answer.indexOf('\t');
+    String name = tab < 0 ? "solution can be created" : answer.substring(0, tab);
+    String message = tab < 0 ? answer : answer.substring(tab + 1);
+    return new Grade(a.id(), List.of(Check.fail(name, a.points(), message)));
   }
 }

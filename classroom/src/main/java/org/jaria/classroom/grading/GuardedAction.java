@@ -50,20 +50,31 @@ public final class GuardedAction extends ArAction {
     return fired.get();
   }
 
-  /** A check that the action never threw (worth {@code points}). */
-  public Check check(int points) {
+  /**
+   * What the action did, as the student's side reports it to the grader: the times it fired, a tab,
+   * and what it first threw (empty if nothing); {@link #check(int, String)} reads it.
+   */
+  public String report() {
     Throwable t = failure;
-    if (t == null) {
+    return fired.get() + "\t" + (t == null ? "" : Solutions.describe(t));
+  }
+
+  /**
+   * The check that the action never threw (worth {@code points}), from the student's side's {@link
+   * #report()}.
+   */
+  public static Check check(int points, String report) {
+    String[] f = report.split("\t", 2);
+    String fired = f[0].isEmpty() ? "0" : f[0];
+    if (f.length < 2 || f[1].isEmpty()) {
       return Check.pass(
-          "fire() runs without errors",
-          points,
-          "fire() ran " + fired.get() + " times without throwing");
+          "fire() runs without errors", points, "fire() ran " + fired + " times without throwing");
     }
     return Check.fail(
         "fire() runs without errors",
         points,
         "your fire() threw "
-            + Solutions.describe(t)
+            + f[1]
             + "; the robot switched your action off, so it stopped steering");
   }
 }

@@ -1,16 +1,15 @@
 package org.jaria.classroom.grading;
 
 import java.time.Duration;
-import java.util.function.Consumer;
+import org.jaria.classroom.link.StudentLink;
 import org.jaria.robot.ArRobot;
-import org.jaria.sim.client.SimulatedRobot;
 import org.jaria.sim.client.SimulatedRobot.ProgramResult;
 
 /** Runs a student's sequential program on the simulator and says how it ended. */
 public final class Programs {
 
   /** Real time a program may compute without waiting on the robot's clock before it is stuck. */
-  static final Duration STUCK_AFTER = Duration.ofSeconds(3);
+  public static final Duration STUCK_AFTER = Duration.ofSeconds(3);
 
   private Programs() {}
 
@@ -25,21 +24,13 @@ public final class Programs {
   public record Ending(ProgramResult result, Check check) {}
 
   /**
-   * Runs {@code body} on {@code sim} for at most {@code max} of simulated time.
+   * Runs the student's program (set up on their side of {@code link}) for at most {@code max} of
+   * simulated time.
    *
    * @param points what ending normally is worth
    */
-  public static Ending run(SimulatedRobot sim, Body body, Duration max, int points) {
-    sim.setStuckTimeout(STUCK_AFTER);
-    Consumer<ArRobot> program =
-        robot -> {
-          try {
-            body.run(robot);
-          } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-          }
-        };
-    ProgramResult r = sim.runProgram(program, max);
+  public static Ending run(StudentLink link, Duration max, int points) {
+    ProgramResult r = link.runProgram(max);
     String name = "program ends";
     Check c =
         switch (r) {
@@ -60,11 +51,7 @@ public final class Programs {
                       + " so simulated time could not pass: wait with"
                       + " robot.getClock().sleepMillis(50) inside every loop (never busy-wait or"
                       + " Thread.sleep)");
-          case FAILED ->
-              Check.fail(
-                  name,
-                  points,
-                  "your program threw " + Solutions.describe(sim.lastProgramFailure()));
+          case FAILED -> Check.fail(name, points, "your program threw " + link.programFailure());
         };
     return new Ending(r, c);
   }

@@ -3,20 +3,27 @@ package org.jaria.classroom.square;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.Optional;
 import org.jaria.classroom.RobotProgram;
 import org.jaria.classroom.grading.Assignment;
 import org.jaria.classroom.grading.Check;
 import org.jaria.classroom.grading.Fmt;
 import org.jaria.classroom.grading.Grade;
+import org.jaria.classroom.grading.Grading;
 import org.jaria.classroom.grading.PoseTrace;
 import org.jaria.classroom.grading.Programs;
 import org.jaria.classroom.grading.Solutions;
+import org.jaria.classroom.link.StudentContext;
+import org.jaria.classroom.link.StudentLink;
+import org.jaria.classroom.link.StudentSide;
+import org.jaria.classroom.link.StudentStreams;
 import org.jaria.geom.ArPose;
+import org.jaria.robot.ArRobot;
 import org.jaria.sim.RobotOptions;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
-import org.jaria.sim.client.SimulatedRobot;
 
 /**
  * Assignment 1: drive a 2 m square, counter-clockwise, with motion commands ({@code move}, {@code
@@ -72,32 +79,51 @@ public final class SquareAssignment implements Assignment {
   }
 
   @Override
-  public Grade grade(Class<?> solution) {
-    RobotProgram program;
-    try {
-      program = Solutions.instantiate(solution, RobotProgram.class, new Class<?>[0], new Object[0]);
-    } catch (Solutions.SolutionException e) {
-      return new Grade(
-          id(), List.of(Check.fail("solution can be created", points(), e.getMessage())));
-    }
+  public StudentSide studentSide() {
+    return new StudentSide() {
+      private ArRobot robot;
+
+      @Override
+      public void setUp(StudentContext ctx) throws Solutions.SolutionException {
+        RobotProgram program =
+            Solutions.instantiate(
+                ctx.solution(), RobotProgram.class, new Class<?>[0], new Object[0]);
+        robot = ctx.robot();
+        ctx.setProgram(program::run);
+      }
+
+      @Override
+      public String call(String name) {
+        return name.equals("actions") ? String.valueOf(robot.getActionList().size()) : "";
+      }
+    };
+  }
+
+  @Override
+  public Grade grade(StudentStreams student) {
     try (SimWorld world = SimWorld.empty(SimOptions.builder().seed(1).build())) {
       SimRobot r = world.addRobot(RobotOptions.of("p3dx-sh").withStartPose(START));
-      try (SimulatedRobot sim = SimulatedRobot.connect(world, r);
+      try (StudentLink sim = StudentLink.connect(world, r, student, Map.of());
           PoseTrace trace = new PoseTrace(world, r)) {
+        Optional<String> failed = sim.setUp();
+        if (failed.isPresent()) {
+          return Grading.setUpFailure(this, failed.get());
+        }
         List<Check> checks = new ArrayList<>();
-        Programs.Ending end = Programs.run(sim, program::run, MAX_TIME, 1);
+        Programs.Ending end = Programs.run(sim, MAX_TIME, 1);
         checks.add(end.check());
         sim.runMillis(2000); // a program that returns while moving keeps moving
         checks.addAll(corners(trace));
         checks.add(stopped(r));
+        String actions = sim.call("actions");
         checks.add(
             Check.of(
                 "motion commands only",
                 1,
-                sim.robot().getActionList().isEmpty(),
+                actions.equals("0"),
                 "no actions were added",
                 "you added actions ("
-                    + sim.robot().getActionList().size()
+                    + actions
                     + "); this assignment is about motion commands: use robot.move(mm) and"
                     + " robot.setDeltaHeading(deg) and wait for isMoveDone()/isHeadingDone()"));
         return new Grade(id(), checks);

@@ -2,14 +2,21 @@ package org.jaria.classroom.wall;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.Optional;
 import org.jaria.action.ArAction;
 import org.jaria.classroom.grading.Assignment;
 import org.jaria.classroom.grading.Check;
 import org.jaria.classroom.grading.Fmt;
 import org.jaria.classroom.grading.Grade;
+import org.jaria.classroom.grading.Grading;
 import org.jaria.classroom.grading.GuardedAction;
 import org.jaria.classroom.grading.PoseTrace;
 import org.jaria.classroom.grading.Solutions;
+import org.jaria.classroom.link.StudentContext;
+import org.jaria.classroom.link.StudentLink;
+import org.jaria.classroom.link.StudentSide;
+import org.jaria.classroom.link.StudentStreams;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
 import org.jaria.range.ArSonarDevice;
@@ -17,7 +24,6 @@ import org.jaria.sim.RobotOptions;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
-import org.jaria.sim.client.SimulatedRobot;
 
 /**
  * Assignment 2: wall following with a custom action. The student writes an {@link ArAction} that
@@ -88,25 +94,40 @@ public final class WallAssignment implements Assignment {
   }
 
   @Override
-  public Grade grade(Class<?> solution) {
-    ArAction action;
-    try {
-      action = Solutions.instantiate(solution, ArAction.class, new Class<?>[0], new Object[0]);
-    } catch (Solutions.SolutionException e) {
-      return new Grade(
-          id(), List.of(Check.fail("solution can be created", points(), e.getMessage())));
-    }
+  public StudentSide studentSide() {
+    return new StudentSide() {
+      private GuardedAction guarded;
+
+      @Override
+      public void setUp(StudentContext ctx) throws Solutions.SolutionException {
+        ArAction action =
+            Solutions.instantiate(ctx.solution(), ArAction.class, new Class<?>[0], new Object[0]);
+        guarded = new GuardedAction(action);
+        ctx.robot().addRangeDevice(new ArSonarDevice());
+        ctx.robot().addAction(guarded, 50);
+        ctx.robot().enableMotors();
+      }
+
+      @Override
+      public String call(String name) {
+        return name.equals("fire") && guarded != null ? guarded.report() : "";
+      }
+    };
+  }
+
+  @Override
+  public Grade grade(StudentStreams student) {
     try (SimWorld world = SimWorld.ofLines(WALLS, START, SimOptions.builder().seed(3).build())) {
       SimRobot r = world.addRobot(RobotOptions.of("p3dx-sh").withStartPose(START));
-      try (SimulatedRobot sim = SimulatedRobot.connect(world, r);
+      try (StudentLink sim = StudentLink.connect(world, r, student, Map.of());
           PoseTrace trace = new PoseTrace(world, r)) {
-        GuardedAction guarded = new GuardedAction(action);
-        sim.robot().addRangeDevice(new ArSonarDevice());
-        sim.robot().addAction(guarded, 50);
-        sim.robot().enableMotors();
+        Optional<String> failed = sim.setUp();
+        if (failed.isPresent()) {
+          return Grading.setUpFailure(this, failed.get());
+        }
         sim.runMillis(SECONDS * 1000L);
         List<Check> checks = new ArrayList<>();
-        checks.add(guarded.check(1));
+        checks.add(GuardedAction.check(1, sim.call("fire")));
         double progress = progress(trace.x(trace.size() - 1), trace.y(trace.size() - 1));
         checks.add(alongFirst(progress, trace));
         checks.add(aroundCorner(progress, trace));
