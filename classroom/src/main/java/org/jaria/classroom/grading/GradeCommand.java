@@ -6,9 +6,12 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.jaria.classroom.sandbox.Sandbox;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -21,8 +24,10 @@ import picocli.CommandLine.Parameters;
     description = {
       "Grade students' solutions of a classroom assignment on the simulator, in lockstep time.",
       "SUBMISSIONS holds one folder per student with their .java files (or is itself one"
-          + " submission). Each is compiled here and graded in a JVM of its own with a time"
-          + " limit; the report is printed and written as report.txt, report.md and report.html."
+          + " submission). Each is copied and compiled here, then runs in a JVM of its own inside"
+          + " a bubblewrap sandbox (no network, no other files, limits on time, memory and"
+          + " threads) while the simulator and the grade stay in this process. Writes report.txt,"
+          + " report.md, report.html, gradebook.csv and students/NAME/feedback.txt."
     })
 public final class GradeCommand implements Callable<Integer> {
 
@@ -35,16 +40,45 @@ public final class GradeCommand implements Callable<Integer> {
   @Option(
       names = {"-o", "--out"},
       paramLabel = "DIR",
-      description = "Where the reports and each student's output go (default: ${DEFAULT-VALUE}).",
+      description = "Where the reports and each student's files go (default: ${DEFAULT-VALUE}).",
       defaultValue = "grading-report")
   Path out;
 
   @Option(
       names = "--timeout",
       paramLabel = "SECONDS",
-      description = "Real time allowed per submission (default: ${DEFAULT-VALUE}).",
-      defaultValue = "120")
+      description = "Real time allowed per student (default: ${DEFAULT-VALUE}).",
+      defaultValue = "60")
   long timeoutSeconds;
+
+  @Option(
+      names = {"-j", "--jobs"},
+      paramLabel = "N",
+      description =
+          "Students graded at once (default: ${DEFAULT-VALUE}); results are the same for any N.",
+      defaultValue = "1")
+  int jobs;
+
+  @Option(
+      names = "--only",
+      paramLabel = "STUDENT",
+      description =
+          "Re-grade only this student (a folder in SUBMISSIONS) into the existing report in --out.")
+  String only;
+
+  @Option(
+      names = "--lang",
+      paramLabel = "LANG",
+      description = "Language of the reports and feedback: en or es (default: ${DEFAULT-VALUE}).",
+      defaultValue = "en")
+  String lang;
+
+  @Option(
+      names = "--unsafe",
+      description =
+          "Grade even where no isolation is available: submissions then run as your user and"
+              + " could change anything you can, grades included. Every report says so.")
+  boolean unsafe;
 
   @Option(names = "--list", description = "List the assignments and exit.")
   boolean list;
@@ -69,6 +103,14 @@ public final class GradeCommand implements Callable<Integer> {
       err.println("grade: give --assignment ID and a SUBMISSIONS folder (--list shows the ids)");
       return 2;
     }
+    if (timeoutSeconds <= 0 || jobs <= 0) {
+      err.println("grade: --timeout and --jobs must be positive");
+      return 2;
+    }
+    if (!lang.equals("en") && !lang.equals("es")) {
+      err.println("grade: --lang is en or es");
+      return 2;
+    }
     Assignment a;
     List<Path> found;
     try {
@@ -85,20 +127,58 @@ public final class GradeCommand implements Callable<Integer> {
               + ": put each student's .java files in a folder of their own inside it");
       return 2;
     }
-    if (timeoutSeconds <= 0) {
-      err.println("grade: --timeout must be positive");
+    Path subsReal = submissions.toAbsolutePath().normalize();
+    Path outAbs = out.toAbsolutePath().normalize();
+    if (outAbs.startsWith(subsReal)) {
+      err.println("grade: put --out outside the submissions folder (students must not see it)");
       return 2;
     }
-    o.printf(Locale.ROOT, "Grading %d submission(s) of '%s'...%n", found.size(), a.id());
+    Sandbox sandbox;
+    if (unsafe) {
+      sandbox = Sandbox.none();
+      err.println(GradeReport.UNSAFE_WARNING);
+    } else {
+      try {
+        sandbox = Sandbox.bubblewrap();
+      } catch (IllegalStateException e) {
+        err.println(
+            "grade: cannot isolate the submissions: "
+                + e.getMessage()
+                + ". Refusing to grade; --unsafe grades anyway (only for code you trust).");
+        return 2;
+      }
+    }
+    List<Path> toGrade = found;
+    if (only != null) {
+      toGrade = found.stream().filter(p -> Grader.studentOf(p).equals(only)).toList();
+      if (toGrade.isEmpty()) {
+        err.println("grade: no submission called '" + only + "' in " + submissions);
+        return 2;
+      }
+    }
+    Path students = out.resolve("students");
+    Grader grader =
+        new Grader(
+            a, Grader.Options.of(Duration.ofSeconds(timeoutSeconds), jobs, sandbox), students);
+    o.printf(
+        Locale.ROOT,
+        "Grading %d submission(s) of '%s', %d at a time%s...%n",
+        toGrade.size(),
+        a.id(),
+        Math.min(jobs, toGrade.size()),
+        sandbox.isolated() ? ", each in a sandbox" : ", WITHOUT isolation (--unsafe)");
     o.flush();
-    Grader grader = new Grader(a, Duration.ofSeconds(timeoutSeconds), out.resolve("students"));
-    List<Grader.Result> results =
+    AtomicInteger done = new AtomicInteger();
+    int total = toGrade.size();
+    List<Grader.Result> graded =
         grader.gradeAll(
-            submissions,
+            toGrade,
             r -> {
               o.printf(
                   Locale.ROOT,
-                  "  %-20s %3d/%d  %s (%.1f s)%n",
+                  "  [%d/%d] %-20s %3d/%d  %s (%.1f s)%n",
+                  done.incrementAndGet(),
+                  total,
                   r.student(),
                   r.grade().score(),
                   r.grade().maxScore(),
@@ -106,16 +186,43 @@ public final class GradeCommand implements Callable<Integer> {
                   r.seconds());
               o.flush();
             });
-    GradeReport report = new GradeReport(a, results);
+    List<Grader.Result> results = new ArrayList<>();
+    if (only == null) {
+      results.addAll(graded);
+    } else {
+      // the others as graded before, from their files in the report
+      for (Path p : found) {
+        String name = Grader.studentOf(p);
+        if (name.equals(only)) {
+          results.add(graded.get(0));
+          continue;
+        }
+        try {
+          results.add(ResultFiles.read(students.resolve(Grader.safeName(name)), name));
+        } catch (IOException e) {
+          err.println(
+              "grade: " + name + " has no earlier result in " + out + " (grade the class first)");
+        }
+      }
+    }
+    GradeReport report = new GradeReport(a, results, lang, unsafe);
     Files.createDirectories(out);
     Files.writeString(out.resolve("report.txt"), report.text(), StandardCharsets.UTF_8);
     Files.writeString(out.resolve("report.md"), report.markdown(), StandardCharsets.UTF_8);
     Files.writeString(out.resolve("report.html"), report.html(), StandardCharsets.UTF_8);
+    Files.writeString(out.resolve("gradebook.csv"), report.csv(), StandardCharsets.UTF_8);
+    for (Grader.Result r : results) {
+      Path dir = students.resolve(Grader.safeName(r.student()));
+      Files.createDirectories(dir);
+      Files.writeString(dir.resolve("feedback.txt"), report.feedback(r), StandardCharsets.UTF_8);
+    }
     o.println();
     o.print(report.text());
     o.println();
     o.println(
-        "Reports written to " + out.toAbsolutePath().normalize() + " (report.md, .html, .txt)");
+        "Reports written to "
+            + out.toAbsolutePath().normalize()
+            + " (report.md, .html, .txt, gradebook.csv, students/NAME/feedback.txt)");
     o.flush();
     return 0;
   }

@@ -169,8 +169,8 @@ public final class SubmissionCompiler {
     return false;
   }
 
-  /** The binary names of the classes under {@code classesDir}. */
-  static List<String> classNames(Path classesDir) throws IOException {
+  /** The binary names of the classes under {@code classesDir}, sorted. */
+  public static List<String> classNames(Path classesDir) throws IOException {
     List<String> names = new ArrayList<>();
     try (Stream<Path> s = Files.walk(classesDir)) {
       for (Path p : s.filter(f -> f.toString().endsWith(".class")).sorted().toList()) {

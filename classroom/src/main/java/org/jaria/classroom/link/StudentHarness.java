@@ -60,6 +60,7 @@ public final class StudentHarness {
   private String message = "";
   private long lastCycleNanos;
   private volatile boolean ended;
+  private java.util.function.Consumer<OutOfMemoryError> onResourceError = e -> {};
 
   /**
    * A harness for {@code assignment} over the grader's streams, with the student's classes (named
@@ -76,6 +77,14 @@ public final class StudentHarness {
     this.classNames = List.copyOf(classNames);
     this.in = in;
     this.out = out;
+  }
+
+  /**
+   * What to do when the program runs out of memory or threads (the student's JVM ends at once, so
+   * the grader names it; in a shared JVM nothing is done).
+   */
+  public void onResourceError(java.util.function.Consumer<OutOfMemoryError> action) {
+    onResourceError = action;
   }
 
   /** Whether the grader ended the link normally (END answered). */
@@ -268,8 +277,12 @@ public final class StudentHarness {
                 body.run(robot);
               } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
+              } catch (OutOfMemoryError e) {
+                failure = e;
+                onResourceError.accept(e);
               } catch (RuntimeException | Error e) {
                 failure = e;
+                System.err.println("your program threw " + Solutions.describe(e));
               } finally {
                 finished.set(true);
                 clock.wakeWatchers(); // hand control back at once

@@ -88,7 +88,7 @@ class GradeCommandTest {
     assertTrue(rows.get("alice").matches("alice +10/10 +GRADED .*"), r.out());
     assertTrue(rows.get("bob").matches("bob +\\d/10 +GRADED .*corner 2.*"), r.out());
     assertTrue(rows.get("carol").matches("carol +0/10 +COMPILE_ERROR .*"), r.out());
-    assertTrue(rows.get("dave").matches("dave +0/10 +TIMED_OUT .*"), r.out());
+    assertTrue(rows.get("dave").matches("dave +0/10 +TIMEOUT .*"), r.out());
     assertTrue(
         r.out().contains("Square.java:5: error: cannot find symbol"),
         "the compile error is shown with its line:\n" + r.out());

@@ -1,0 +1,88 @@
+package org.jaria.classroom.grading;
+
+import java.time.Duration;
+import java.util.List;
+
+/**
+ * Naming how a student's JVM ended, from what the grader saw: whether its watchdog fired, whether
+ * the JVM announced System.exit, its exit code and the end of its output. A plain function of those
+ * values, so every case is tested as a value.
+ */
+final class Outcomes {
+
+  /** Exit code of a JVM killed by SIGXCPU (its processor-time limit). */
+  static final int CPU_LIMIT_EXIT = 128 + 24;
+
+  private static final List<String> MEMORY =
+      List.of(
+          "OutOfMemoryError: Java heap space",
+          "OutOfMemoryError: Metaspace",
+          "OutOfMemoryError: Direct buffer memory",
+          "OutOfMemoryError: Requested array size",
+          "OutOfMemoryError: GC overhead");
+
+  private static final List<String> TASKS =
+      List.of(
+          "unable to create native thread",
+          "unable to create new native thread",
+          "pthread_create failed",
+          "Cannot fork",
+          "error=11, Resource temporarily unavailable");
+
+  private Outcomes() {}
+
+  /** Whether the output shows the JVM ran out of memory or of threads/processes. */
+  static Status exhausted(String log) {
+    if (MEMORY.stream().anyMatch(log::contains)) {
+      return Status.OUT_OF_MEMORY;
+    }
+    if (TASKS.stream().anyMatch(log::contains)) {
+      return Status.TOO_MANY_THREADS;
+    }
+    return null;
+  }
+
+  /** The status of a JVM that ended before grading was done. */
+  static Status classify(boolean timedOut, boolean announcedExit, int exitCode, String log) {
+    if (timedOut || exitCode == CPU_LIMIT_EXIT) {
+      return Status.TIMEOUT;
+    }
+    Status s = exhausted(log);
+    if (s != null) {
+      return s;
+    }
+    return announcedExit ? Status.EXIT : Status.CRASH;
+  }
+
+  /**
+   * What the teacher and the student read about it (English; the sentence is in {@link Status}).
+   */
+  static String detail(Status s, int exitCode, Duration timeout, String lastOutput) {
+    return switch (s) {
+      case TIMEOUT ->
+          "stopped after "
+              + timeout.toSeconds()
+              + " s of real time (or its processor-time limit): look for a loop that never ends"
+              + " in a constructor or in fire() (they run on the robot's cycle, which then never"
+              + " finishes)";
+      case OUT_OF_MEMORY ->
+          "its Java machine ran out of memory: does it keep adding to a list without end?"
+              + " Last output: "
+              + lastOutput;
+      case TOO_MANY_THREADS ->
+          "it started more threads or processes than allowed; a robot program needs none of its"
+              + " own. Last output: "
+              + lastOutput;
+      case EXIT ->
+          "it called System.exit("
+              + exitCode
+              + "), which ended its Java machine, robot included, before grading was done: return"
+              + " from run() instead";
+      default ->
+          "its Java machine ended (exit code "
+              + exitCode
+              + ") before grading was done. Last output: "
+              + lastOutput;
+    };
+  }
+}

@@ -1,0 +1,49 @@
+package org.jaria.classroom.grading;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+
+/**
+ * One student's result on disk, in their folder of the report: grade.txt (the checks) and
+ * status.txt (status and seconds), written by the grader only. Re-grading one student reads the
+ * others' back from here.
+ */
+final class ResultFiles {
+
+  private ResultFiles() {}
+
+  static void write(Path studentDir, Grader.Result r) throws IOException {
+    Files.createDirectories(studentDir);
+    GradeFile.write(r.grade(), studentDir.resolve("grade.txt"));
+    Files.writeString(
+        studentDir.resolve("status.txt"),
+        String.format(Locale.ROOT, "%s %.2f%n", r.status(), r.seconds()),
+        StandardCharsets.UTF_8);
+  }
+
+  /**
+   * Reads {@code student}'s result back from {@code studentDir}.
+   *
+   * @throws IOException if the files are missing or not the grader's
+   */
+  static Grader.Result read(Path studentDir, String student) throws IOException {
+    Grade g = GradeFile.read(studentDir.resolve("grade.txt"));
+    String[] f =
+        Files.readString(studentDir.resolve("status.txt"), StandardCharsets.UTF_8)
+            .strip()
+            .split(" ");
+    try {
+      return new Grader.Result(
+          student,
+          Status.valueOf(f[0]),
+          g,
+          f.length > 1 ? Double.parseDouble(f[1]) : 0,
+          studentDir.resolve("output.txt"));
+    } catch (IllegalArgumentException e) {
+      throw new IOException("not a status file: " + studentDir.resolve("status.txt"), e);
+    }
+  }
+}

@@ -1,0 +1,80 @@
+package org.jaria.classroom.link;
+
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
+import java.io.ByteArrayInputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.FileDescriptor;
+import java.io.FileInputStream;
+import java.io.FileOutputStream;
+import java.io.IOException;
+import java.net.URLClassLoader;
+import java.nio.file.Path;
+import org.jaria.classroom.grading.Assignment;
+import org.jaria.classroom.grading.Assignments;
+import org.jaria.classroom.grading.SolutionFinder;
+import org.jaria.classroom.grading.SubmissionCompiler;
+
+/**
+ * The main class of a student's JVM: the student's side of the robot link over standard input and
+ * output. It knows only its assignment and its own compiled classes; the grade is made by the
+ * grader at the other end. Whatever the student's code prints goes to standard error, so it cannot
+ * mix with the link (a program that writes to the link's descriptor directly only breaks its own
+ * grading).
+ */
+public final class StudentMain {
+
+  private StudentMain() {}
+
+  /**
+   * Ends this JVM when the student's code ran out of memory or threads: its output names the error,
+   * which the grader reads to name the outcome.
+   */
+  private static void endOnResourceError(OutOfMemoryError e) {
+    System.err.println("java.lang.OutOfMemoryError: " + e.getMessage());
+    System.err.flush();
+    Runtime.getRuntime().halt(3);
+  }
+
+  /** Arguments: assignment id, folder of the student's compiled classes. */
+  public static void main(String[] args) throws IOException {
+    DataOutputStream out =
+        new DataOutputStream(
+            new BufferedOutputStream(new FileOutputStream(FileDescriptor.out), 1 << 16));
+    DataInputStream in =
+        new DataInputStream(
+            new BufferedInputStream(new FileInputStream(FileDescriptor.in), 1 << 16));
+    System.setOut(System.err);
+    System.setIn(new ByteArrayInputStream(new byte[0]));
+    if (args.length != 2) {
+      System.err.println("usage: StudentMain ASSIGNMENT CLASSES_DIR (started by the grader)");
+      Runtime.getRuntime().halt(2);
+    }
+    Assignment a = Assignments.byId(args[0]);
+    Path classes = Path.of(args[1]);
+    URLClassLoader loader = SolutionFinder.loaderFor(classes);
+    StudentHarness harness =
+        new StudentHarness(a, loader, SubmissionCompiler.classNames(classes), in, out);
+    Runtime.getRuntime().addShutdownHook(new Thread(harness::announceExit, "announce-exit"));
+    harness.onResourceError(StudentMain::endOnResourceError);
+    Thread.setDefaultUncaughtExceptionHandler(
+        (t, e) -> {
+          if (e instanceof OutOfMemoryError oom) {
+            endOnResourceError(oom);
+          }
+          System.err.println("Exception in thread \"" + t.getName() + "\" " + e);
+        });
+    try {
+      harness.serve();
+    } catch (IOException | RuntimeException e) {
+      System.err.println("student side: " + e);
+      System.err.flush();
+      Runtime.getRuntime().halt(1);
+    }
+    System.err.flush();
+    // The student's threads may still run (a program that ignored its interrupt): end regardless,
+    // and without their shutdown hooks.
+    Runtime.getRuntime().halt(0);
+  }
+}
