@@ -336,6 +336,15 @@ public final class Grader {
             "cannot find where " + anchor.getName() + " is loaded from", e);
       }
     }
+    try {
+      // the student's program logs like the grader does, if the grader has a logger
+      var simple = Class.forName("org.slf4j.simple.SimpleLogger").getProtectionDomain();
+      if (simple.getCodeSource() != null) {
+        parts.add(Path.of(simple.getCodeSource().getLocation().toURI()).toRealPath());
+      }
+    } catch (ClassNotFoundException | URISyntaxException | IOException e) {
+      // no simple logger: SLF4J says once that it logs nothing
+    }
     return List.copyOf(parts);
   }
 

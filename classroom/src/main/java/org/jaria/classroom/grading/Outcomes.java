@@ -13,6 +13,9 @@ final class Outcomes {
   /** Exit code of a JVM killed by SIGXCPU (its processor-time limit). */
   static final int CPU_LIMIT_EXIT = 128 + 24;
 
+  /** Exit code of a JVM ended by -XX:+ExitOnOutOfMemoryError. */
+  static final int OOM_EXIT = 3;
+
   private static final List<String> MEMORY =
       List.of(
           "OutOfMemoryError: Java heap space",
@@ -51,7 +54,11 @@ final class Outcomes {
     if (s != null) {
       return s;
     }
-    return announcedExit ? Status.EXIT : Status.CRASH;
+    if (announcedExit) {
+      return Status.EXIT;
+    }
+    // -XX:+ExitOnOutOfMemoryError ends the JVM with 3, its message on the link's stdout
+    return exitCode == OOM_EXIT ? Status.OUT_OF_MEMORY : Status.CRASH;
   }
 
   /**

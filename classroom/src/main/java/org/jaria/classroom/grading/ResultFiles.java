@@ -31,10 +31,13 @@ final class ResultFiles {
    */
   static Grader.Result read(Path studentDir, String student) throws IOException {
     Grade g = GradeFile.read(studentDir.resolve("grade.txt"));
+    String status =
+        Files.readString(studentDir.resolve("status.txt"), StandardCharsets.UTF_8).strip();
+    int space = status.indexOf(' ');
     String[] f =
-        Files.readString(studentDir.resolve("status.txt"), StandardCharsets.UTF_8)
-            .strip()
-            .split(" ");
+        space < 0
+            ? new String[] {status}
+            : new String[] {status.substring(0, space), status.substring(space + 1)};
     try {
       return new Grader.Result(
           student,

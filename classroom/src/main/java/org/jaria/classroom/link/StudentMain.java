@@ -67,7 +67,8 @@ public final class StudentMain {
         });
     try {
       harness.serve();
-    } catch (IOException | RuntimeException e) {
+    } catch (IOException | RuntimeException | Error e) {
+      // Not System.exit: end without the shutdown hook that would say so.
       System.err.println("student side: " + e);
       System.err.flush();
       Runtime.getRuntime().halt(1);

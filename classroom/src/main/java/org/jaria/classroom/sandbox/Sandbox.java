@@ -206,14 +206,9 @@ public final class Sandbox {
           List.of("--ro-bind", "/usr/lib64", "/usr/lib64", "--symlink", "usr/lib64", "/lib64"));
     }
     bind(cmd, javaHome);
-    // Debian's JDK keeps its configuration under /etc, linked from JAVA_HOME/conf.
-    try {
-      Path conf = javaHome.resolve("conf").toRealPath();
-      if (!conf.startsWith(javaHome)) {
-        bind(cmd, conf);
-      }
-    } catch (IOException e) {
-      // no conf folder: nothing to bind
+    // Debian's JDK keeps its configuration under /etc, linked from files in JAVA_HOME/conf.
+    for (Path target : linkedFolders(javaHome.resolve("conf"), javaHome)) {
+      bind(cmd, target);
     }
     if (root) {
       bind(cmd, SETPRIV);
@@ -279,6 +274,32 @@ public final class Sandbox {
       }
     }
     cmd.addAll(List.of("--ro-bind", s, s));
+  }
+
+  /**
+   * The top folders (two levels, e.g. /etc/java-17-openjdk) that links under {@code dir} point
+   * into, outside {@code home}.
+   */
+  private static java.util.Set<Path> linkedFolders(Path dir, Path home) {
+    java.util.Set<Path> out = new java.util.TreeSet<>();
+    if (!Files.isDirectory(dir)) {
+      return out;
+    }
+    try (var s = Files.walk(dir)) {
+      for (Path p : s.filter(Files::isSymbolicLink).toList()) {
+        try {
+          Path real = p.toRealPath();
+          if (!real.startsWith(home) && real.getNameCount() >= 2) {
+            out.add(real.getRoot().resolve(real.subpath(0, 2)));
+          }
+        } catch (IOException e) {
+          // a dangling link: nothing to bind
+        }
+      }
+    } catch (IOException e) {
+      // unreadable: the JVM will say what it misses
+    }
+    return out;
   }
 
   private static Path realJavaHome() {

@@ -113,7 +113,8 @@ public final class SquareAssignment implements Assignment {
         Programs.Ending end = Programs.run(sim, MAX_TIME, 1);
         checks.add(end.check());
         sim.runMillis(2000); // a program that returns while moving keeps moving
-        checks.addAll(corners(trace));
+        List<Check> corners = corners(trace);
+        checks.addAll(corners);
         checks.add(stopped(r));
         String actions = sim.call("actions");
         checks.add(
@@ -126,9 +127,27 @@ public final class SquareAssignment implements Assignment {
                     + actions
                     + "); this assignment is about motion commands: use robot.move(mm) and"
                     + " robot.setDeltaHeading(deg) and wait for isMoveDone()/isHeadingDone()"));
-        return new Grade(id(), checks);
+        return new Grade(id(), corners.get(0).passed() ? checks : notEarned(checks));
       }
     }
+  }
+
+  /**
+   * The checks of a robot that never reached the first corner: ending cleanly, standing still and
+   * using motion commands are worth nothing if it never drove, so an empty program earns 0.
+   */
+  private static List<Check> notEarned(List<Check> checks) {
+    List<Check> out = new ArrayList<>();
+    for (Check c : checks) {
+      out.add(
+          c.passed()
+              ? Check.fail(
+                  c.name(),
+                  c.points(),
+                  c.message() + ", but this earns nothing while the robot never reaches corner 1")
+              : c);
+    }
+    return out;
   }
 
   /** The three corners and the return to the start, in order. */

@@ -1,0 +1,352 @@
+package org.jaria.classroom.grading;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.net.ServerSocket;
+import java.net.SocketTimeoutException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.util.HexFormat;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.stream.Stream;
+import org.jaria.classroom.sandbox.Sandbox;
+import org.jaria.classroom.square.SquareAssignment;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+/**
+ * A class with hostile submissions beside honest ones, graded once in the sandbox with two jobs:
+ * each attack of issue 15 (forge the grade, tamper with or read others' files, write outside,
+ * network, fork, threads, spin, allocate, System.exit, a stray process) gets 0 and its own status,
+ * the honest students keep exactly the grade they get in one JVM, nothing outside the scratch
+ * folders changes and no process of theirs is left.
+ */
+class GradeAttackTest {
+
+  @TempDir static Path tmp;
+
+  static Path subs;
+  static Path out;
+  static Path canary;
+  static ServerSocket server;
+  static String stdout;
+  static Map<String, String> before;
+  static Map<String, Grader.Result> byStudent = new TreeMap<>();
+
+  private static String program(String imports, String body) {
+    return "import org.jaria.classroom.RobotProgram;\nimport org.jaria.robot.ArRobot;\n"
+        + imports
+        + "\npublic class Square implements RobotProgram {\n"
+        + body
+        + "\n}\n";
+  }
+
+  private static String run(String body) {
+    return program(
+        "import java.nio.file.*;\nimport java.util.*;\nimport java.io.*;",
+        "  public void run(ArRobot robot) throws InterruptedException {\n"
+            + "    try {\n"
+            + body
+            + "\n    } catch (Exception e) { throw new RuntimeException(e); }\n  }");
+  }
+
+  private static void write(String student, String file, String text) throws IOException {
+    Files.createDirectories(subs.resolve(student));
+    Files.writeString(subs.resolve(student).resolve(file), text, StandardCharsets.UTF_8);
+  }
+
+  @BeforeAll
+  static void gradeTheClass() throws Exception {
+    assumeTrue(Sandbox.whyUnavailable().isEmpty(), "bubblewrap is not usable here");
+    subs = tmp.resolve("submissions");
+    out = tmp.resolve("report");
+    canary = tmp.resolve("canary");
+    Files.createDirectories(canary);
+    Files.writeString(canary.resolve("keep.txt"), "unchanged");
+    server = new ServerSocket(0, 50, java.net.InetAddress.getLoopbackAddress());
+    server.setSoTimeout(1);
+    String solution = Files.readString(Path.of("assignments/square/solution/Square.java"));
+    write("alice", "Square.java", solution);
+    write(
+        "bob", "Square.java", Files.readString(Path.of("assignments/square/starter/Square.java")));
+    write("zoe", "Square.java", solution);
+    // Every file the walk finds outside /sandbox is reported, then rewritten or deleted.
+    String walk =
+        "    List<Path> found = new ArrayList<>();\n"
+            + "    try (var s = Files.walk(Path.of(\"/\"))) {\n"
+            + "      s.filter(p -> !p.startsWith(\"/sandbox\") && !p.startsWith(\"/proc\")"
+            + " && !p.startsWith(\"/usr\") && !p.startsWith(\"/sys\"))\n"
+            + "       .filter(p -> NAME_TEST).forEach(found::add);\n"
+            + "    } catch (UncheckedIOException e) { }\n"
+            + "    System.out.println(\"found \" + found.size() + \" \" + found);\n";
+    write(
+        "forge",
+        "Square.java",
+        run(
+            walk.replace(
+                    "NAME_TEST",
+                    "p.getFileName() != null && (p.getFileName().toString().endsWith(\".txt\")"
+                        + " || Files.isDirectory(p))")
+                + "    for (Path p : found) { try { Files.writeString(Files.isDirectory(p) ?"
+                + " p.resolve(\"grade.txt\") : p, \"jaria-grade 1 square\\n10\\tPASS\\tforged\\tall"
+                + " good\\n\"); } catch (IOException e) { } }\n"
+                + "    Files.writeString(Path.of(\"/sandbox/grade.txt\"), \"jaria-grade 1"
+                + " square\\n10\\tPASS\\tforged\\tall good\\n\");"));
+    write(
+        "tamper",
+        "Square.java",
+        run(
+            walk.replace("NAME_TEST", "p.toString().endsWith(\".java\")")
+                + "    for (Path p : found) { try { Files.writeString(p, \"broken\"); } catch"
+                + " (IOException e) { } try { Files.delete(p); } catch (IOException e) { } }\n"
+                + "    for (String n : List.of(\"alice\", \"bob\", \"zoe\")) { try {"
+                + " Files.delete(Path.of(\"/sandbox/../\" + n + \"/Square.java\")); } catch"
+                + " (IOException e) { } }"));
+    write(
+        "reader",
+        "Square.java",
+        run(
+            walk.replace(
+                "NAME_TEST",
+                "p.toString().endsWith(\".java\") || p.toString().contains(\"solution\")")));
+    write(
+        "outside",
+        "Square.java",
+        run(
+            "    for (String p : List.of(\""
+                + canary.resolve("pwned")
+                + "\", \""
+                + canary.resolve("keep.txt")
+                + "\", \"/tmp/pwned\", \"/pwned\", \"/etc/pwned\")) {\n"
+                + "      try { Files.writeString(Path.of(p), \"pwned\"); System.out.println(\"wrote \" +"
+                + " p); } catch (IOException e) { System.out.println(\"refused \" + p); }\n"
+                + "    }"));
+    write(
+        "network",
+        "Square.java",
+        run(
+            "    try (var s = new java.net.Socket()) { s.connect(new"
+                + " java.net.InetSocketAddress(\"127.0.0.1\", "
+                + server.getLocalPort()
+                + "), 2000); System.out.println(\"connected\"); } catch (IOException e) {"
+                + " System.out.println(\"no network: \" + e.getMessage()); }"));
+    String java = Path.of(System.getProperty("java.home"), "bin", "java").toRealPath().toString();
+    write(
+        "fork",
+        "Square.java",
+        run(
+            "    List<Process> ps = new ArrayList<>();\n"
+                + "    for (int i = 0; i < 2000; i++) { ps.add(new ProcessBuilder(\""
+                + java
+                + "\", \"-cp\", \"/sandbox/classes\", \"Square\").start()); }"));
+    write(
+        "threads",
+        "Square.java",
+        run(
+            "    for (int i = 0; i < 100000; i++) { Thread t = new Thread(() -> { try {"
+                + " Thread.sleep(60000); } catch (InterruptedException e) { } }); t.setDaemon(true);"
+                + " t.start(); }"));
+    write(
+        "spin",
+        "Square.java",
+        program(
+            "",
+            "  private long n;\n  public Square() { while (n >= 0) { n++; } }\n"
+                + "  public void run(ArRobot robot) {}"));
+    write(
+        "allocate",
+        "Square.java",
+        run(
+            "    List<long[]> hoard = new ArrayList<>();\n"
+                + "    while (true) { hoard.add(new long[1 << 20]); }"));
+    write("exit", "Square.java", run("    System.exit(0);"));
+    write(
+        "stray",
+        "Square.java",
+        run(
+            "    new ProcessBuilder(\""
+                + java
+                + "\", \"-cp\", \"/sandbox/classes\", \"Sleeper\").start();\n"
+                + "    robot.getClock().sleepMillis(500);"));
+    write(
+        "stray",
+        "Sleeper.java",
+        "public class Sleeper { public static void main(String[] a) throws Exception {"
+            + " Thread.sleep(90_000); } }");
+    before = snapshot(subs);
+    before.putAll(snapshot(canary));
+
+    StringWriter o = new StringWriter();
+    StringWriter e = new StringWriter();
+    CommandLine cl = new CommandLine(new GradeCommand());
+    cl.setOut(new PrintWriter(o));
+    cl.setErr(new PrintWriter(e));
+    int exit =
+        cl.execute(
+            "--assignment",
+            "square",
+            "--jobs",
+            "2",
+            "--timeout",
+            "10",
+            "-o",
+            out.toString(),
+            subs.toString());
+    stdout = o.toString();
+    assertEquals(0, exit, e.toString());
+    for (Path dir : Grader.submissions(subs)) {
+      String name = Grader.studentOf(dir);
+      byStudent.put(name, ResultFiles.read(out.resolve("students").resolve(name), name));
+    }
+  }
+
+  @AfterAll
+  static void closeServer() throws IOException {
+    if (server != null) {
+      server.close();
+    }
+  }
+
+  private static Map<String, String> snapshot(Path root) throws IOException {
+    Map<String, String> m = new TreeMap<>();
+    try (Stream<Path> s = Files.walk(root)) {
+      for (Path p : s.filter(Files::isRegularFile).toList()) {
+        m.put(p.toString(), sha(Files.readAllBytes(p)));
+      }
+    }
+    return m;
+  }
+
+  private static String sha(byte[] b) {
+    try {
+      return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(b));
+    } catch (NoSuchAlgorithmException e) {
+      throw new IllegalStateException(e);
+    }
+  }
+
+  private static Grader.Result result(String student) {
+    Grader.Result r = byStudent.get(student);
+    assertTrue(r != null, "no result for " + student + "\n" + stdout);
+    return r;
+  }
+
+  private static String output(String student) throws IOException {
+    return Files.readString(out.resolve("students").resolve(student).resolve("output.txt"));
+  }
+
+  @Test
+  void honestStudentsKeepExactlyTheGradeTheyGetInOneJvm(@TempDir Path work) throws IOException {
+    Grade solution =
+        Grading.compileAndGrade(
+            new SquareAssignment(), Path.of("assignments/square/solution"), work.resolve("s"));
+    Grade starter =
+        Grading.compileAndGrade(
+            new SquareAssignment(), Path.of("assignments/square/starter"), work.resolve("t"));
+    assertEquals(10, solution.score(), solution.describe());
+    for (String s : List.of("alice", "zoe")) {
+      assertEquals(Status.GRADED, result(s).status(), stdout);
+      assertEquals(solution.checks(), result(s).grade().checks(), stdout);
+    }
+    assertEquals(Status.GRADED, result("bob").status(), stdout);
+    assertEquals(starter.checks(), result("bob").grade().checks(), stdout);
+  }
+
+  @Test
+  void everyAttackGetsZeroAndItsOwnStatus() {
+    Map<String, Status> expected =
+        Map.of(
+            "forge", Status.GRADED,
+            "tamper", Status.GRADED,
+            "reader", Status.GRADED,
+            "outside", Status.GRADED,
+            "network", Status.GRADED,
+            "fork", Status.TOO_MANY_THREADS,
+            "threads", Status.TOO_MANY_THREADS,
+            "spin", Status.TIMEOUT,
+            "allocate", Status.OUT_OF_MEMORY,
+            "exit", Status.EXIT);
+    for (var e : expected.entrySet()) {
+      Grader.Result r = result(e.getKey());
+      assertEquals(e.getValue(), r.status(), e.getKey() + ": " + r.grade().describe());
+      assertEquals(0, r.grade().score(), e.getKey() + ": " + r.grade().describe());
+    }
+    assertEquals(0, result("stray").grade().score());
+    assertTrue(
+        result("exit").grade().describe().contains("System.exit"),
+        result("exit").grade().describe());
+  }
+
+  @Test
+  void theySeeNothingOfTheClassAndReachNothingOutside() throws IOException {
+    assertTrue(output("reader").contains("found 0 []"), output("reader"));
+    assertTrue(output("tamper").contains("found 0 []"), output("tamper"));
+    String outside = output("outside");
+    assertFalse(outside.contains("wrote"), outside);
+    assertTrue(outside.contains("refused " + canary.resolve("pwned")), outside);
+    assertTrue(output("network").contains("no network"), output("network"));
+    assertFalse(output("network").contains("connected"), output("network"));
+    try {
+      server.accept().close();
+      throw new AssertionError("a submission connected to the test's server");
+    } catch (SocketTimeoutException expected) {
+      // nobody came
+    }
+  }
+
+  @Test
+  void nothingOutsideTheScratchFoldersChanged() throws IOException {
+    Map<String, String> after = snapshot(subs);
+    after.putAll(snapshot(canary));
+    assertEquals(before, after);
+    assertFalse(Files.exists(Path.of("/tmp/pwned")));
+    assertFalse(Files.exists(Path.of("/pwned")));
+    // the grade files are the grader's: the forger's did not replace them
+    assertFalse(Files.readString(out.resolve("students/forge/grade.txt")).contains("forged"));
+    try (Stream<Path> s = Files.list(out.resolve("students"))) {
+      for (Path d : s.toList()) {
+        assertFalse(Files.exists(d.resolve("scratch")), "scratch left: " + d);
+      }
+    }
+  }
+
+  @Test
+  void noProcessOfTheirsIsLeft() {
+    List<String> left =
+        ProcessHandle.allProcesses()
+            .filter(
+                p -> p.info().commandLine().map(c -> c.contains("/sandbox/classes")).orElse(false))
+            .map(p -> p.pid() + " " + p.info().commandLine().orElse(""))
+            .toList();
+    assertEquals(List.of(), left);
+  }
+
+  @Test
+  void theReportsCarryTheOutcomes() throws IOException {
+    String csv = Files.readString(out.resolve("gradebook.csv"));
+    assertTrue(csv.startsWith("student,score,max,status,program ends,corner 1 reached"), csv);
+    assertTrue(csv.contains("\nalice,10,10,GRADED,1,2,2,2,1,1,1\n"), csv);
+    assertTrue(csv.contains("\nspin,0,10,TIMEOUT,"), csv);
+    String feedback = Files.readString(out.resolve("students/allocate/feedback.txt"));
+    assertTrue(
+        feedback.contains("Status: OUT_OF_MEMORY — Your program ran out of memory"), feedback);
+    assertTrue(
+        Files.exists(out.resolve("students/spin/grade.txt")),
+        "a timed-out student has a grade file");
+    assertTrue(stdout.contains("[13/13]"), stdout);
+  }
+}
