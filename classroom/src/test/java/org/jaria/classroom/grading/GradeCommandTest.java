@@ -89,6 +89,7 @@ class GradeCommandTest {
     assertTrue(rows.get("bob").matches("bob +\\d/10 +GRADED .*corner 2.*"), r.out());
     assertTrue(rows.get("carol").matches("carol +0/10 +COMPILE_ERROR .*"), r.out());
     assertTrue(rows.get("dave").matches("dave +0/10 +TIMEOUT .*"), r.out());
+    assertTrue(r.out().contains("[4/4] "), "progress is printed:\n" + r.out());
     assertTrue(
         r.out().contains("Square.java:5: error: cannot find symbol"),
         "the compile error is shown with its line:\n" + r.out());
@@ -98,6 +99,54 @@ class GradeCommandTest {
     String html = Files.readString(out.resolve("report.html"));
     assertTrue(html.contains("<td>dave</td>") || html.contains(">dave</a>"), html);
     assertTrue(Files.readString(out.resolve("report.txt")).contains("[FAIL] compiles"));
+    assertTrue(
+        Files.readString(out.resolve("students/dave/feedback.txt")).contains("Status: TIMEOUT"));
+
+    // bob hands in the solution: re-grade only him into the same report, in Spanish
+    write(subs.resolve("bob"), "Square.java", kit("solution"));
+    Run again =
+        jaria(
+            "--assignment",
+            "square",
+            "--only",
+            "bob",
+            "--lang",
+            "es",
+            "-o",
+            out.toString(),
+            subs.toString());
+    assertEquals(0, again.exit(), again.err());
+    assertTrue(again.out().contains("[1/1] bob "), again.out());
+    String csv = Files.readString(out.resolve("gradebook.csv"));
+    assertTrue(csv.contains("\nalice,10,10,GRADED,"), csv);
+    assertTrue(csv.contains("\nbob,10,10,GRADED,"), csv);
+    assertTrue(csv.contains("\ncarol,0,10,COMPILE_ERROR,"), csv);
+    assertTrue(csv.contains("\ndave,0,10,TIMEOUT,"), csv);
+    String feedback = Files.readString(out.resolve("students/bob/feedback.txt"));
+    assertTrue(feedback.contains("Nota: 10/10"), feedback);
+    assertTrue(feedback.contains("Tu programa se ejecutó"), feedback);
+    assertTrue(Files.readString(out.resolve("report.md")).contains("| Estudiante | Nota |"));
+  }
+
+  @Test
+  void unsafeGradingWarnsOnEveryReport(@TempDir Path tmp) throws IOException {
+    write(tmp.resolve("subs/alice"), "Square.java", kit("solution"));
+    Path out = tmp.resolve("report");
+    Run r =
+        jaria(
+            "--assignment",
+            "square",
+            "--unsafe",
+            "-o",
+            out.toString(),
+            tmp.resolve("subs").toString());
+    assertEquals(0, r.exit(), r.err());
+    assertTrue(r.err().contains("WARNING: graded with --unsafe"), r.err());
+    assertTrue(r.out().contains("alice") && r.out().contains("10/10"), r.out());
+    for (String f :
+        List.of("report.txt", "report.md", "report.html", "students/alice/feedback.txt")) {
+      assertTrue(Files.readString(out.resolve(f)).contains("WARNING: graded with --unsafe"), f);
+    }
   }
 
   @Test
