@@ -50,6 +50,11 @@ public final class Sandbox {
     return new Sandbox(true, isRoot());
   }
 
+  /** A sandbox as it would be with or without root (for tests of the command it builds). */
+  static Sandbox of(boolean isolated, boolean root) {
+    return new Sandbox(isolated, root);
+  }
+
   /** No isolation at all: the student's JVM runs as the grader's user, with only its JVM limits. */
   public static Sandbox none() {
     return new Sandbox(false, false);
