@@ -43,6 +43,9 @@ import org.jaria.classroom.sandbox.Sandbox;
  */
 public final class Grader {
 
+  /** How the scratch folders in the system's temporary folder are named. */
+  public static final String SCRATCH_PREFIX = "jaria-grade-";
+
   /** The most Java files, and bytes per file, copied from a submission. */
   static final int MAX_FILES = 200;
 
@@ -175,8 +178,11 @@ public final class Grader {
     String student = studentOf(dir);
     long t0 = System.nanoTime();
     Path work = workDir.resolve(safeName(student));
-    Path scratch = work.resolve("scratch");
     deleteTree(work);
+    Files.createDirectories(work);
+    // A temporary folder of its own, not inside the report: the sandbox's command line, which the
+    // student's process can read, then names no folder of the class.
+    Path scratch = Files.createTempDirectory(SCRATCH_PREFIX);
     Files.createDirectories(scratch.resolve("tmp"));
     try {
       copySources(dir, scratch.resolve("src"));

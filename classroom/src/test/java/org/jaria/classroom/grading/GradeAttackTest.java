@@ -121,8 +121,13 @@ class GradeAttackTest {
         "Square.java",
         run(
             walk.replace(
-                "NAME_TEST",
-                "p.toString().endsWith(\".java\") || p.toString().contains(\"solution\")")));
+                    "NAME_TEST",
+                    "p.toString().endsWith(\".java\") || p.toString().contains(\"solution\")")
+                + "    try (var ps = Files.list(Path.of(\"/proc\"))) {\n"
+                + "      for (Path p : ps.toList()) { try { System.out.println(\"cmdline \" +"
+                + " Files.readString(p.resolve(\"cmdline\")).replace('\\0', ' ')); } catch"
+                + " (IOException e) { } }\n"
+                + "    }"));
     write(
         "outside",
         "Square.java",
@@ -294,6 +299,10 @@ class GradeAttackTest {
   @Test
   void theySeeNothingOfTheClassAndReachNothingOutside() throws IOException {
     assertTrue(output("reader").contains("found 0 []"), output("reader"));
+    // the processes it can see are its own: no grader, no path of the class or the report
+    assertTrue(output("reader").contains("cmdline "), output("reader"));
+    assertFalse(output("reader").contains(subs.toString()), output("reader"));
+    assertFalse(output("reader").contains(out.toString()), output("reader"));
     assertTrue(output("tamper").contains("found 0 []"), output("tamper"));
     String outside = output("outside");
     assertFalse(outside.contains("wrote"), outside);
@@ -317,10 +326,10 @@ class GradeAttackTest {
     assertFalse(Files.exists(Path.of("/pwned")));
     // the grade files are the grader's: the forger's did not replace them
     assertFalse(Files.readString(out.resolve("students/forge/grade.txt")).contains("forged"));
-    try (Stream<Path> s = Files.list(out.resolve("students"))) {
-      for (Path d : s.toList()) {
-        assertFalse(Files.exists(d.resolve("scratch")), "scratch left: " + d);
-      }
+    try (Stream<Path> s = Files.list(Path.of(System.getProperty("java.io.tmpdir")))) {
+      List<Path> left =
+          s.filter(p -> p.getFileName().toString().startsWith(Grader.SCRATCH_PREFIX)).toList();
+      assertEquals(List.of(), left, "scratch folders left");
     }
   }
 
