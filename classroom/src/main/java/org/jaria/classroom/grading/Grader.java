@@ -241,6 +241,22 @@ public final class Grader {
       grade = assignment.grade(StudentStreams.of(p.getInputStream(), p.getOutputStream()));
     } catch (LinkLost e) {
       lost = e;
+    } catch (RuntimeException e) {
+      // Whatever the student's side did to the grader's half, it costs only this student.
+      kill(p);
+      waitOrKill(p);
+      return new Result(
+          student,
+          Status.CRASH,
+          new Grade(
+              assignment.id(),
+              List.of(
+                  Check.fail(
+                      "grading ran to the end",
+                      assignment.points(),
+                      "grading could not go on: " + e.getMessage()))),
+          seconds(t0),
+          log);
     } finally {
       alarm.cancel(false);
       watchdog.shutdownNow();
