@@ -192,6 +192,10 @@ class GradeAttackTest {
         "Sleeper.java",
         "public class Sleeper { public static void main(String[] a) throws Exception {"
             + " Thread.sleep(90_000); } }");
+    // a link to a classmate's file is not copied: the submission is empty
+    Files.createDirectories(subs.resolve("linker"));
+    Files.createSymbolicLink(
+        subs.resolve("linker/Square.java"), subs.resolve("alice/Square.java").toAbsolutePath());
     before = snapshot(subs);
     before.putAll(snapshot(canary));
 
@@ -274,17 +278,18 @@ class GradeAttackTest {
   @Test
   void everyAttackGetsZeroAndItsOwnStatus() {
     Map<String, Status> expected =
-        Map.of(
-            "forge", Status.GRADED,
-            "tamper", Status.GRADED,
-            "reader", Status.GRADED,
-            "outside", Status.GRADED,
-            "network", Status.GRADED,
-            "fork", Status.TOO_MANY_THREADS,
-            "threads", Status.TOO_MANY_THREADS,
-            "spin", Status.TIMEOUT,
-            "allocate", Status.OUT_OF_MEMORY,
-            "exit", Status.EXIT);
+        Map.ofEntries(
+            Map.entry("forge", Status.GRADED),
+            Map.entry("tamper", Status.GRADED),
+            Map.entry("reader", Status.GRADED),
+            Map.entry("outside", Status.GRADED),
+            Map.entry("network", Status.GRADED),
+            Map.entry("fork", Status.TOO_MANY_THREADS),
+            Map.entry("threads", Status.TOO_MANY_THREADS),
+            Map.entry("spin", Status.TIMEOUT),
+            Map.entry("allocate", Status.OUT_OF_MEMORY),
+            Map.entry("exit", Status.EXIT),
+            Map.entry("linker", Status.COMPILE_ERROR));
     for (var e : expected.entrySet()) {
       Grader.Result r = result(e.getKey());
       assertEquals(e.getValue(), r.status(), e.getKey() + ": " + r.grade().describe());
@@ -356,6 +361,6 @@ class GradeAttackTest {
     assertTrue(
         Files.exists(out.resolve("students/spin/grade.txt")),
         "a timed-out student has a grade file");
-    assertTrue(stdout.contains("[14/14]"), stdout);
+    assertTrue(stdout.contains("[15/15]"), stdout);
   }
 }
