@@ -34,7 +34,7 @@ final class ClientMapLoader implements AutoCloseable {
   private final ClientMapFolder folder;
   private final String threadName;
   private final AtomicReference<Result> done = new AtomicReference<>();
-  private Thread thread;
+  private volatile Thread thread;
 
   ClientMapLoader(ClientMapFolder folder, String threadName) {
     this.folder = folder;

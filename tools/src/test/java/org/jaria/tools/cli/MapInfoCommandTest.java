@@ -28,8 +28,7 @@ class MapInfoCommandTest {
     StringWriter out = new StringWriter();
     StringWriter err = new StringWriter();
     assertEquals(0, run(out, err, "map", "info", f.toString()), err.toString());
-    assertTrue(
-        out.toString().contains("warning  " + f + ":2: NumPoints says 4"), out.toString());
+    assertTrue(out.toString().contains("warning  " + f + ":2: NumPoints says 4"), out.toString());
   }
 
   @Test
