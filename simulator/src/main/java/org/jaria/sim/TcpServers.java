@@ -100,10 +100,7 @@ final class TcpServers implements AutoCloseable {
   private static void start(RobotSlot slot, SocketChannel c, Clock clock, SessionHost host) {
     try {
       SocketAddress remote = c.getRemoteAddress();
-      ClientKind kind =
-          remote instanceof InetSocketAddress a && a.getAddress().isLoopbackAddress()
-              ? ClientKind.LOOPBACK_TCP
-              : ClientKind.REMOTE_TCP;
+      ClientKind kind = ClientKind.ofTcpPeer(remote);
       slot.session =
           new ArcosSession(slot.body, new NioSocketConnection(c, clock), host, slot.drops, kind);
       slot.sessionsStarted++;

@@ -13,6 +13,15 @@ public enum ClientKind {
   /** A TCP client from another address. */
   REMOTE_TCP;
 
+  /** The kind of a TCP client whose address is {@code remote}. */
+  public static ClientKind ofTcpPeer(java.net.SocketAddress remote) {
+    return remote instanceof java.net.InetSocketAddress a
+            && a.getAddress() != null
+            && a.getAddress().isLoopbackAddress()
+        ? LOOPBACK_TCP
+        : REMOTE_TCP;
+  }
+
   /** Whether the client is on this machine. */
   public boolean isLocal() {
     return this != REMOTE_TCP;

@@ -3,6 +3,8 @@ package org.jaria.sim.server;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 
@@ -52,5 +54,29 @@ class CommandPolicyTest {
       assertEquals(IgnoredCommand.Reason.BY_OPTION, p.refusal(SIM_CTRL, 6, k));
       assertNull(p.refusal(VEL, -1, k));
     }
+  }
+
+  @Test
+  void onlyLoopbackAddressesAreThisMachine() throws Exception {
+    assertEquals(
+        ClientKind.LOOPBACK_TCP,
+        ClientKind.ofTcpPeer(
+            new InetSocketAddress(InetAddress.getByAddress(new byte[] {127, 0, 0, 1}), 5000)));
+    assertEquals(
+        ClientKind.LOOPBACK_TCP,
+        ClientKind.ofTcpPeer(
+            new InetSocketAddress(
+                InetAddress.getByAddress(
+                    new byte[] {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1}),
+                5000)));
+    assertEquals(
+        ClientKind.REMOTE_TCP,
+        ClientKind.ofTcpPeer(
+            new InetSocketAddress(
+                InetAddress.getByAddress(new byte[] {(byte) 192, 0, 2, 7}), 5000)));
+    assertEquals(
+        ClientKind.REMOTE_TCP,
+        ClientKind.ofTcpPeer(InetSocketAddress.createUnresolved("localhost", 5000)),
+        "an address that is not known is not trusted");
   }
 }
