@@ -289,7 +289,7 @@ public final class ActsServer implements AutoCloseable {
     int i = IdleClients.toEvict(views, clock.nanoTime(), evictIdle);
     if (i >= 0 && clients.remove(list.get(i))) {
       replaced.incrementAndGet();
-      LOG.info(
+      LOG.debug( // a flood replaces clients by the hundred: counted, not logged one by one
           "ACTS: server full; idle client {} makes room for a new one",
           list.get(i).socket.getRemoteSocketAddress());
       closeQuietly(list.get(i).socket);
