@@ -31,13 +31,25 @@ final class ClientMapLoader implements AutoCloseable {
    */
   record Result(String requested, int robotIndex, WorldMap map) {}
 
-  private final ClientMapFolder folder;
+  /** Where the bytes of a requested map come from (the map folder, with its checks). */
+  @FunctionalInterface
+  interface MapBytes {
+    /**
+     * The bytes of the map {@code requested} names.
+     *
+     * @throws ClientMapFolder.Refused if the request breaks a rule
+     * @throws IOException if the file cannot be read
+     */
+    byte[] read(String requested) throws IOException;
+  }
+
+  private final MapBytes source;
   private final String threadName;
   private final AtomicReference<Result> done = new AtomicReference<>();
   private volatile Thread thread;
 
-  ClientMapLoader(ClientMapFolder folder, String threadName) {
-    this.folder = folder;
+  ClientMapLoader(MapBytes source, String threadName) {
+    this.source = source;
     this.threadName = threadName;
   }
 
@@ -76,7 +88,7 @@ final class ClientMapLoader implements AutoCloseable {
   private Result load(String requested, int robotIndex, String robotName) {
     String shown = ClientMapFolder.printable(requested);
     try {
-      byte[] bytes = folder.read(requested);
+      byte[] bytes = source.read(requested);
       ArMap m =
           ArMap.read(
               new InputStreamReader(new ByteArrayInputStream(bytes), StandardCharsets.ISO_8859_1),

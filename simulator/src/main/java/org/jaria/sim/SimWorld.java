@@ -91,7 +91,7 @@ public final class SimWorld implements AutoCloseable {
     Path folder = so.mapFolder() != null ? so.mapFolder() : Path.of("");
     this.mapLoader =
         new ClientMapLoader(
-            new ClientMapFolder(folder, so.maxMapBytes()), "jaria-sim-maps-" + this.name);
+            new ClientMapFolder(folder, so.maxMapBytes())::read, "jaria-sim-maps-" + this.name);
     this.commandPolicy =
         new CommandPolicy(so.ignoredCommands(), so.remoteExit(), so.mapFolder() != null);
   }
