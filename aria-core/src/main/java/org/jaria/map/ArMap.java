@@ -3,18 +3,18 @@ package org.jaria.map;
 import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.InputStreamReader;
 import java.io.Reader;
 import java.io.UncheckedIOException;
 import java.io.Writer;
-import java.nio.ByteBuffer;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.Charset;
+import java.nio.charset.CharsetDecoder;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
@@ -81,6 +81,7 @@ public final class ArMap {
   final List<ArLineSegment> lines = new ArrayList<>();
   ArMapPoints points = ArMapPoints.EMPTY;
   int resolution = -1;
+  final List<String> warnings = new ArrayList<>();
   boolean linesEdited;
   boolean pointsEdited;
 
@@ -108,24 +109,27 @@ public final class ArMap {
    * @throws IOException if it cannot be read
    */
   public static ArMap readFile(Path file) throws MapFormatException, IOException {
-    byte[] bytes = Files.readAllBytes(file);
+    ArMap m;
     Charset cs = StandardCharsets.UTF_8;
-    String text;
     try {
-      text =
-          StandardCharsets.UTF_8
-              .newDecoder()
-              .onMalformedInput(CodingErrorAction.REPORT)
-              .onUnmappableCharacter(CodingErrorAction.REPORT)
-              .decode(ByteBuffer.wrap(bytes))
-              .toString();
-    } catch (CharacterCodingException e) {
+      m = readFile(file, cs);
+    } catch (CharacterCodingException notUtf8) {
       cs = StandardCharsets.ISO_8859_1;
-      text = new String(bytes, cs);
+      m = readFile(file, cs);
     }
-    ArMap m = MapReader.parse(text.toCharArray(), file.toString());
     m.charset = cs;
     return m;
+  }
+
+  /** Streams {@code file} through a decoder that reports malformed input. */
+  private static ArMap readFile(Path file, Charset cs) throws MapFormatException, IOException {
+    CharsetDecoder d =
+        cs.newDecoder()
+            .onMalformedInput(CodingErrorAction.REPORT)
+            .onUnmappableCharacter(CodingErrorAction.REPORT);
+    try (Reader r = new InputStreamReader(Files.newInputStream(file), d)) {
+      return MapReader.parse(r, file.toString());
+    }
   }
 
   /**
@@ -136,16 +140,7 @@ public final class ArMap {
    * @throws IOException if reading fails
    */
   public static ArMap read(Reader in, String sourceName) throws MapFormatException, IOException {
-    char[] buf = new char[64 * 1024];
-    int len = 0;
-    int n;
-    while ((n = in.read(buf, len, buf.length - len)) >= 0) {
-      len += n;
-      if (len == buf.length) {
-        buf = Arrays.copyOf(buf, buf.length * 2);
-      }
-    }
-    return MapReader.parse(Arrays.copyOf(buf, len), sourceName);
+    return MapReader.parse(in, sourceName);
   }
 
   /**
@@ -177,8 +172,7 @@ public final class ArMap {
       if (in == null) {
         throw new IllegalStateException("JAria's bundled map " + res + " is missing");
       }
-      String text = new String(in.readAllBytes(), StandardCharsets.UTF_8);
-      return MapReader.parse(text.toCharArray(), "classpath:" + res);
+      return MapReader.parse(new InputStreamReader(in, StandardCharsets.UTF_8), "classpath:" + res);
     } catch (IOException e) {
       throw new UncheckedIOException("cannot read bundled map " + res, e);
     } catch (MapFormatException e) {
@@ -208,6 +202,15 @@ public final class ArMap {
   /** The map type from line 1: "2D-Map", "2D-Map-Ex", ... "2D-Map-Ex4". */
   public String getMapType() {
     return mapType;
+  }
+
+  /**
+   * What was odd about the file but did not stop it loading, one "file:line: what" message each: a
+   * LINES or DATA section with fewer (or more) rows than the header's NumLines or NumPoints, as
+   * when a copy was cut short. Empty for a map made in memory.
+   */
+  public List<String> getWarnings() {
+    return Collections.unmodifiableList(warnings);
   }
 
   /** The wall lines (LINES section), in file order; unmodifiable view. */

@@ -1,5 +1,7 @@
 package org.jaria.map;
 
+import java.io.IOException;
+import java.io.Reader;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -7,54 +9,133 @@ import java.util.Locale;
 import org.jaria.geom.ArLineSegment;
 
 /**
- * Parses map text into an {@link ArMap}. The body (tens of thousands of rows) is scanned straight
- * from the character array with no per-row objects; only header lines become strings.
+ * Parses map text into an {@link ArMap}, streaming: the text is read a line at a time from a {@link
+ * Reader} into one reusable line buffer, so memory follows what the map holds (its points, lines
+ * and header), never the file's size, and parsing stops at the first fatal error. The body (tens of
+ * thousands of rows) is scanned straight from the line buffer with no per-row objects; only header
+ * lines become strings. Counts that cannot be right are errors; a body shorter (or longer) than the
+ * header's count is a warning in {@link ArMap#getWarnings()}.
  */
 final class MapReader {
 
   private static final String LINES_FORM = "'x1 y1 x2 y2' (four numbers, mm)";
   private static final String DATA_FORM = "'x y' (two numbers, mm)";
 
-  private final char[] buf;
+  /** A line longer than this is not a map line (a binary file, or garbage without newlines). */
+  static final int MAX_LINE_CHARS = 1 << 20;
+
+  /** More points or lines than this in a header count is a corrupt header, not a map. */
+  static final long MAX_COUNT = 1_000_000_000L;
+
+  /** Resolutions (mm per grid cell) outside 1..this are not a map's. */
+  static final int MAX_RESOLUTION = 100_000;
+
+  private final Reader in;
   private final String source;
   private final ArMap map;
-  private int pos;
-  private int lineNo;
-  private int lineStart;
+  private final char[] chunk = new char[64 * 1024];
+  private int chunkPos;
+  private int chunkLen;
+  private boolean eof;
+
+  /** The current line (without its line break) is buf[0 .. lineEnd). */
+  private char[] buf = new char[256];
+
+  private final int lineStart = 0;
   private int lineEnd;
+  private boolean lineHadBreak;
+  private boolean lineHadCr;
+  private int lineNo;
   private int pointCapacityHint = 1024;
+  private long declaredPoints = -1;
+  private long declaredLines = -1;
+  private int declaredPointsLine;
+  private int declaredLinesLine;
 
   // Row scanning results (reused to avoid allocation).
   private final double[] rowValues = new double[4];
   private boolean rowCanonical;
 
-  private MapReader(char[] buf, String source) {
-    this.buf = buf;
+  private MapReader(Reader in, String source) {
+    this.in = in;
     this.source = source;
     this.map = new ArMap(source);
   }
 
-  static ArMap parse(char[] buf, String source) throws MapFormatException {
-    MapReader r = new MapReader(buf, source);
+  /**
+   * Parses the map text {@code in} delivers (not closed here).
+   *
+   * @throws MapFormatException at the first thing that is not a map
+   * @throws IOException if reading fails (a {@link java.nio.charset.CharacterCodingException} if
+   *     the reader's decoder reports malformed input)
+   */
+  static ArMap parse(Reader in, String source) throws MapFormatException, IOException {
+    MapReader r = new MapReader(in, source);
     r.run();
     return r.map;
   }
 
-  /** Advances to the next line; false at the end of the text. */
-  private boolean nextLine() {
-    if (pos >= buf.length) {
+  /** Parses map text held in memory. */
+  static ArMap parse(char[] text, String source) throws MapFormatException {
+    try {
+      return parse(new java.io.CharArrayReader(text), source);
+    } catch (IOException e) {
+      throw new java.io.UncheckedIOException("reading from memory failed", e);
+    }
+  }
+
+  private boolean fill() throws IOException {
+    if (eof) {
       return false;
     }
-    lineStart = pos;
-    int i = pos;
-    while (i < buf.length && buf[i] != '\n') {
-      i++;
+    int n = in.read(chunk, 0, chunk.length);
+    if (n <= 0) {
+      eof = n < 0;
+      return !eof && fill();
     }
-    lineEnd = i;
-    pos = i < buf.length ? i + 1 : i;
-    if (lineEnd > lineStart && buf[lineEnd - 1] == '\r') {
-      lineEnd--;
+    chunkPos = 0;
+    chunkLen = n;
+    return true;
+  }
+
+  /** Reads the next line into {@link #buf}; false at the end of the text. */
+  private boolean nextLine() throws IOException, MapFormatException {
+    int len = 0;
+    boolean any = false;
+    boolean lineBreak = false;
+    while (true) {
+      if (chunkPos >= chunkLen && !fill()) {
+        break;
+      }
+      any = true;
+      int i = chunkPos;
+      while (i < chunkLen && chunk[i] != '\n') {
+        i++;
+      }
+      int n = i - chunkPos;
+      if (len + n > buf.length) {
+        if (len + n > MAX_LINE_CHARS) {
+          lineNo++;
+          throw error(
+              "line longer than " + MAX_LINE_CHARS + " characters: this is not a text map file");
+        }
+        buf = Arrays.copyOf(buf, Math.min(MAX_LINE_CHARS, Math.max(len + n, buf.length * 2)));
+      }
+      System.arraycopy(chunk, chunkPos, buf, len, n);
+      len += n;
+      chunkPos = i;
+      if (i < chunkLen) {
+        chunkPos++;
+        lineBreak = true;
+        break;
+      }
     }
+    if (!any) {
+      return false;
+    }
+    lineHadBreak = lineBreak;
+    lineHadCr = len > 0 && buf[len - 1] == '\r';
+    lineEnd = lineHadCr ? len - 1 : len;
     lineNo++;
     return true;
   }
@@ -67,18 +148,17 @@ final class MapReader {
     return new MapFormatException(source, lineNo, what);
   }
 
-  private void run() throws MapFormatException {
-    if (buf.length > 0 && buf[0] == '\uFEFF') {
+  private void run() throws MapFormatException, IOException {
+    if (fill() && chunk[0] == '\uFEFF') {
       map.byteOrderMark = true;
-      pos = 1;
+      chunkPos = 1;
     }
-    map.endsWithNewline = buf.length > 0 && buf[buf.length - 1] == '\n';
     if (!nextLine()) {
+      map.endsWithNewline = false;
       throw new MapFormatException(
           source, 1, "empty input; a map file starts with a line '2D-Map' (or 2D-Map-Ex...)");
     }
-    boolean crlf = pos > 0 && buf[pos - 1] == '\n' && lineEnd < pos - 1;
-    map.lineSeparator = crlf ? "\r\n" : "\n";
+    map.lineSeparator = lineHadBreak && lineHadCr ? "\r\n" : "\n";
     String first = lineText();
     String type = first.strip().split("[ \t]", 2)[0];
     if (!type.startsWith("2D-Map")) {
@@ -99,7 +179,67 @@ final class MapReader {
     while (kind != null) {
       kind = body(kind);
     }
+    map.endsWithNewline = lineHadBreak; // of the last line read
+    checkCounts();
     map.refreshObjects();
+  }
+
+  /** A body that does not match its header count is a warning the caller can see. */
+  private void checkCounts() {
+    boolean hasData = false;
+    boolean hasLines = false;
+    for (BodySection s : map.sections) {
+      hasData |= s.kind == BodySection.Kind.DATA;
+      hasLines |= s.kind == BodySection.Kind.LINES;
+    }
+    if (declaredPoints >= 0 && (hasData || declaredPoints > 0)) {
+      countWarning(
+          "DATA", "points", "NumPoints", declaredPointsLine, map.points.size(), declaredPoints);
+    }
+    if (declaredLines >= 0 && (hasLines || declaredLines > 0)) {
+      countWarning(
+          "LINES", "lines", "NumLines", declaredLinesLine, map.lines.size(), declaredLines);
+    }
+  }
+
+  private void countWarning(
+      String section, String what, String key, int line, long found, long declared) {
+    if (found < declared) {
+      map.warnings.add(
+          source
+              + ":"
+              + line
+              + ": "
+              + key
+              + " says "
+              + declared
+              + " but the "
+              + section
+              + " section has only "
+              + found
+              + " "
+              + what
+              + "; the file may have been cut short (copy it again, or correct "
+              + key
+              + ")");
+    } else if (found > declared) {
+      map.warnings.add(
+          source
+              + ":"
+              + line
+              + ": "
+              + key
+              + " says "
+              + declared
+              + " but the "
+              + section
+              + " section has "
+              + found
+              + " "
+              + what
+              + "; correct "
+              + key);
+    }
   }
 
   /** The section this line opens (the line is exactly LINES or DATA, blanks aside), else null. */
@@ -161,16 +301,41 @@ final class MapReader {
           map.mapInfo.add(
               MapFormat.parseMapInfo(
                   MapFormat.tokenize(rest, source, lineNo), raw, source, lineNo));
-      case "Resolution" -> map.resolution = (int) Math.round(numbers(key, rest, 1)[0]);
+      case "Resolution" -> {
+        double r = numbers(key, rest, 1)[0];
+        if (!(r >= 1 && r <= MAX_RESOLUTION)) {
+          throw error(
+              "Resolution must be 1.."
+                  + MAX_RESOLUTION
+                  + " mm (the size of a grid cell; 100 is usual), not '"
+                  + rest.strip()
+                  + "'");
+        }
+        map.resolution = (int) Math.round(r);
+      }
       case "MinPos", "MaxPos", "LineMinPos", "LineMaxPos" -> numbers(key, rest, 2);
       case "NumPoints", "NumLines" -> {
         double n = numbers(key, rest, 1)[0];
         if (n < 0 || n != Math.rint(n)) {
           throw error(key + " must be a whole number >= 0, not '" + rest.strip() + "'");
         }
+        if (n > MAX_COUNT) {
+          throw error(
+              key
+                  + " "
+                  + rest.strip()
+                  + " is more than any map holds (at most "
+                  + MAX_COUNT
+                  + "): the header is corrupt");
+        }
         if (key.equals("NumPoints")) {
-          // Only a capacity hint: never trust it beyond what the text could hold.
-          pointCapacityHint = (int) Math.min(n, (buf.length - pos) / 4.0 + 16);
+          declaredPoints = (long) n;
+          declaredPointsLine = lineNo;
+          // Only a capacity hint: the array grows with what the file really holds.
+          pointCapacityHint = (int) Math.min(n, 1 << 20);
+        } else {
+          declaredLines = (long) n;
+          declaredLinesLine = lineNo;
         }
       }
       case "PointsAreSorted", "LinesAreSorted" -> {
@@ -217,7 +382,7 @@ final class MapReader {
   // ------------------------------------------------------------------ body
 
   /** Reads one section; returns the kind of the next section, or null at the end of the text. */
-  private BodySection.Kind body(BodySection.Kind kind) throws MapFormatException {
+  private BodySection.Kind body(BodySection.Kind kind) throws MapFormatException, IOException {
     for (BodySection s : map.sections) {
       if (s.kind == kind) {
         throw error(
@@ -237,9 +402,9 @@ final class MapReader {
       xs = new int[Math.max(16, pointCapacityHint)];
       ys = new int[xs.length];
     }
-    boolean canonical = true;
-    int bodyStart = pos;
-    int bodyEnd = pos;
+    // Rows are kept as text only once a row is not canonical (the earlier ones are regenerated).
+    List<String> raw = null;
+    int rows = 0;
     BodySection.Kind next = null;
     while (nextLine()) {
       if (startsWithLetter()) {
@@ -248,13 +413,15 @@ final class MapReader {
           break;
         }
       }
-      bodyEnd = pos;
       if (isBlankLine()) {
-        canonical = false;
+        if (raw == null) {
+          raw = regenerate(lines, rows, 0, xs, ys);
+        }
+        raw.add(lineText());
         continue;
       }
       scanRow(expected, lines ? LINES_FORM : DATA_FORM, kind);
-      canonical &= rowCanonical;
+      boolean rowIsCanonical = rowCanonical;
       if (lines) {
         map.lines.add(new ArLineSegment(rowValues[0], rowValues[1], rowValues[2], rowValues[3]));
       } else {
@@ -265,18 +432,51 @@ final class MapReader {
         xs[n] = toInt(rowValues[0]);
         ys[n] = toInt(rowValues[1]);
         if (xs[n] != rowValues[0] || ys[n] != rowValues[1]) {
-          canonical = false;
+          rowIsCanonical = false;
         }
         n++;
       }
+      if (raw == null && !rowIsCanonical) {
+        raw = regenerate(lines, rows, lines ? 1 : 0, xs, ys); // this row is in the list already
+      }
+      if (raw != null) {
+        raw.add(lineText());
+      }
+      rows++;
     }
     if (!lines) {
       map.points = ArMapPoints.wrap(xs, ys, n);
     }
-    if (!canonical) {
-      section.rawRows = splitLines(bodyStart, bodyEnd);
-    }
+    section.rawRows = raw;
     return next;
+  }
+
+  /**
+   * The text of the first {@code rows} rows of the section being read, all canonical, so exactly as
+   * the writer formats them.
+   */
+  private List<String> regenerate(boolean lines, int rows, int skipLast, int[] xs, int[] ys) {
+    List<String> out = new ArrayList<>(Math.max(16, rows * 2));
+    if (lines) {
+      List<ArLineSegment> l = map.lines;
+      int end = l.size() - skipLast;
+      for (int i = end - rows; i < end; i++) {
+        ArLineSegment s = l.get(i);
+        out.add(
+            MapFormat.formatNumber(s.x1())
+                + " "
+                + MapFormat.formatNumber(s.y1())
+                + " "
+                + MapFormat.formatNumber(s.x2())
+                + " "
+                + MapFormat.formatNumber(s.y2()));
+      }
+    } else {
+      for (int i = 0; i < rows; i++) {
+        out.add(xs[i] + " " + ys[i]);
+      }
+    }
+    return out;
   }
 
   private boolean startsWithLetter() {
@@ -378,21 +578,6 @@ final class MapReader {
   private MapFormatException rowError(BodySection.Kind kind, String what, String form) {
     return error(
         kind + " row '" + abbreviate(lineText()) + "' " + what + "; each row must be " + form);
-  }
-
-  private List<String> splitLines(int from, int to) {
-    List<String> out = new ArrayList<>();
-    int s = from;
-    while (s < to) {
-      int e = s;
-      while (e < to && buf[e] != '\n') {
-        e++;
-      }
-      int end = e > s && buf[e - 1] == '\r' ? e - 1 : e;
-      out.add(new String(buf, s, end - s));
-      s = e + 1;
-    }
-    return out;
   }
 
   private static String abbreviate(String s) {

@@ -13,8 +13,6 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.SortedMap;
 import java.util.TreeMap;
-import org.slf4j.Logger;
-import org.slf4j.LoggerFactory;
 
 /**
  * What ARIA knows about a robot model: size, speed limits, conversion factors between robot units
@@ -33,8 +31,6 @@ import org.slf4j.LoggerFactory;
  * text through {@link #getRaw(String)}.
  */
 public final class ArRobotParams {
-
-  private static final Logger LOG = LoggerFactory.getLogger(ArRobotParams.class);
 
   /** Classpath folder of the parameter files shipped with JAria. */
   public static final String RESOURCE_DIR = "/org/jaria/params/";
@@ -59,6 +55,7 @@ public final class ArRobotParams {
   private final SortedMap<Integer, SonarUnit> sonarUnits;
   private final SortedMap<Integer, IRUnit> irUnits;
   private final List<String> sources;
+  private final List<String> problems;
 
   private final String className;
   private final String subClassName;
@@ -115,12 +112,14 @@ public final class ArRobotParams {
       Map<String, ParamFile.Entry> raw,
       SortedMap<Integer, SonarUnit> sonarUnits,
       SortedMap<Integer, IRUnit> irUnits,
-      List<String> sources)
+      List<String> sources,
+      List<String> problems)
       throws ParamFormatException {
     this.raw = Collections.unmodifiableMap(new LinkedHashMap<>(raw));
     this.sonarUnits = Collections.unmodifiableSortedMap(new TreeMap<>(sonarUnits));
     this.irUnits = Collections.unmodifiableSortedMap(new TreeMap<>(irUnits));
     this.sources = List.copyOf(sources);
+    this.problems = List.copyOf(problems);
     ParamValues v = new ParamValues(this.raw);
     className = v.string("Class");
     subClassName = v.string("Subclass");
@@ -179,6 +178,50 @@ public final class ArRobotParams {
     irs = new IRUnit[numIR];
     for (int i = 0; i < numIR; i++) {
       irs[i] = this.irUnits.getOrDefault(i, new IRUnit(i, 0, 0, 0, 0));
+    }
+    checkPlausible();
+  }
+
+  /**
+   * Values that cannot describe a robot are errors naming the key and the line that set it: a
+   * conversion factor or divisor of zero or less (every distance, speed or range would be zero or
+   * infinite) and a negative size.
+   */
+  private void checkPlausible() throws ParamFormatException {
+    positive("AngleConvFactor", angleConvFactor);
+    positive("DistConvFactor", distConvFactor);
+    positive("VelConvFactor", velConvFactor);
+    positive("RangeConvFactor", rangeConvFactor);
+    positive("Vel2Divisor", vel2Divisor);
+    notNegative("RobotRadius", robotRadius);
+    notNegative("RobotDiagonal", robotDiagonal);
+    notNegative("RobotWidth", robotWidth);
+    notNegative("RobotLength", robotLength);
+    notNegative("RobotLengthFront", robotLengthFront);
+    notNegative("RobotLengthRear", robotLengthRear);
+  }
+
+  private void positive(String key, double value) throws ParamFormatException {
+    if (!(value > 0)) {
+      ParamFile.Entry e = raw.get(key.toLowerCase(Locale.ROOT));
+      throw new ParamFormatException(
+          e.sourceName(),
+          e.line(),
+          key
+              + " must be greater than 0, not "
+              + e.value()
+              + " (it multiplies or divides what the"
+              + " robot reports; copy the value from the robot's bundled parameter file)");
+    }
+  }
+
+  private void notNegative(String key, double value) throws ParamFormatException {
+    if (value < 0) {
+      ParamFile.Entry e = raw.get(key.toLowerCase(Locale.ROOT));
+      throw new ParamFormatException(
+          e.sourceName(),
+          e.line(),
+          key + " is a size in mm and cannot be negative, not " + e.value());
     }
   }
 
@@ -253,11 +296,13 @@ public final class ArRobotParams {
         base == null ? new TreeMap<>() : new TreeMap<>(base.sonarUnits);
     SortedMap<Integer, IRUnit> ir = base == null ? new TreeMap<>() : new TreeMap<>(base.irUnits);
     Set<String> seen = new HashSet<>();
+    Map<Integer, ParamFile.Entry> unitLines = new TreeMap<>();
     for (ParamFile.Entry e : f.entries()) {
       String k = e.keyword().toLowerCase(Locale.ROOT);
       if (k.equals("sonarunit")) {
         SonarUnit u = ParamValues.parseSonarUnit(e);
         sonar.put(u.number(), u);
+        unitLines.putIfAbsent(u.number(), e);
       } else if (k.equals("irunit")) {
         IRUnit u = ParamValues.parseIRUnit(e);
         ir.put(u.number(), u);
@@ -268,16 +313,70 @@ public final class ArRobotParams {
     }
     List<String> src = new ArrayList<>(base == null ? List.of() : base.sources);
     src.add(f.getSourceName());
-    ArRobotParams p = new ArRobotParams(r, sonar, ir, src);
-    if (p.numSonar > 0 && !sonar.keySet().containsAll(rangeSet(p.numSonar))) {
-      LOG.warn(
-          "{}: SonarNum is {} but not every SonarUnit 0..{} is defined; the missing ones are"
-              + " placed at the robot centre",
-          f.getSourceName(),
-          p.numSonar,
-          p.numSonar - 1);
-    }
+    ArRobotParams p =
+        new ArRobotParams(r, sonar, ir, src, base == null ? List.of() : base.problems);
+    checkSonarCount(p, r.get("sonarnum"), unitLines);
     return p;
+  }
+
+  /**
+   * SonarNum and the SonarUnit lines must agree: a unit this file lists beyond SonarNum, or a unit
+   * 0..SonarNum-1 that no layer lists, is an error at the line concerned.
+   */
+  private static void checkSonarCount(
+      ArRobotParams p, ParamFile.Entry sonarNum, Map<Integer, ParamFile.Entry> unitLines)
+      throws ParamFormatException {
+    for (Map.Entry<Integer, ParamFile.Entry> u : unitLines.entrySet()) {
+      if (u.getKey() >= p.numSonar) {
+        ParamFile.Entry e = u.getValue();
+        throw new ParamFormatException(
+            e.sourceName(),
+            e.line(),
+            "SonarUnit "
+                + u.getKey()
+                + " is listed but SonarNum is "
+                + p.numSonar
+                + " (units are numbered 0..SonarNum-1): raise SonarNum ("
+                + sonarNum.where()
+                + ") or remove the unit");
+      }
+    }
+    if (p.numSonar > 0 && !p.sonarUnits.keySet().containsAll(rangeSet(p.numSonar))) {
+      Set<Integer> missing = new java.util.TreeSet<>(rangeSet(p.numSonar));
+      missing.removeAll(p.sonarUnits.keySet());
+      throw new ParamFormatException(
+          sonarNum.sourceName(),
+          sonarNum.line(),
+          "SonarNum is "
+              + p.numSonar
+              + " but no SonarUnit line describes sonar "
+              + missing
+              + ": add them or lower SonarNum");
+    }
+  }
+
+  /**
+   * This set with a note on a file that could not be used (see {@link #getProblems()}).
+   *
+   * @throws IllegalStateException never in practice: the values were accepted before
+   */
+  ArRobotParams withProblem(String problem) {
+    List<String> all = new ArrayList<>(problems);
+    all.add(problem);
+    try {
+      return new ArRobotParams(raw, sonarUnits, irUnits, sources, all);
+    } catch (ParamFormatException e) {
+      throw new IllegalStateException("values accepted once were refused: " + e.getMessage(), e);
+    }
+  }
+
+  /**
+   * What went wrong loading this set: one "file:line: what" message per user file that could not be
+   * used (and was replaced by the bundled file for the subtype). Empty when every file was used. A
+   * connect callback can show these; {@link #getSources()} says which files were used.
+   */
+  public List<String> getProblems() {
+    return problems;
   }
 
   private static Set<Integer> rangeSet(int n) {

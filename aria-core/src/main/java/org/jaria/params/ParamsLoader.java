@@ -65,26 +65,50 @@ final class ParamsLoader {
   /**
    * The parameters of a connected robot, as ARIA loads them: generic defaults, then {@code
    * <subtype>.p} (from {@code userDir} if there is one there, else the bundled one), then {@code
-   * userDir/<robotName>.p} if present. A user file that cannot be read or parsed is skipped with an
-   * ERROR in the log naming file and line; use {@link #loadStrict} to get the exception instead.
+   * userDir/<robotName>.p} if present. A user {@code <subtype>.p} that cannot be read, parsed or
+   * holds impossible values is replaced by JAria's bundled file for the subtype (never by generic
+   * defaults, which have no sonar); a bad {@code <robotName>.p} is skipped. Either way the problem
+   * is logged as an ERROR naming file and line and kept in {@link ArRobotParams#getProblems()}; use
+   * {@link #loadStrict} to get the exception instead.
    *
    * @param subtype the subtype the robot reported (e.g. "p3dx-sh")
    * @param robotName the robot's name from its FLASH, may be null
    * @param userDir folder with the user's parameter files, may be null
    */
   static ArRobotParams load(String subtype, String robotName, Path userDir) {
-    ArRobotParams p;
+    ArRobotParams p = null;
+    String problem = null;
     Path userSub = userFile(userDir, subtype);
     if (userSub != null) {
-      p = overlayLenient(ArRobotParams.defaults(), userSub);
-    } else {
+      try {
+        p = ArRobotParams.defaults().overlay(ParamFile.read(userSub));
+        LOG.info("Loaded robot parameters from {}", userSub);
+      } catch (ParamFormatException | IOException e) {
+        problem = describe(userSub, e);
+        LOG.error(
+            "{} -- ignoring this parameter file; using JAria's bundled parameters for '{}'"
+                + " instead. Fix the line (or remove the file) to use your values.",
+            problem,
+            subtype);
+      }
+    }
+    if (p == null) {
       p = forSubtype(subtype);
+    }
+    if (problem != null) {
+      p = p.withProblem(problem);
     }
     Path userRobot = userFile(userDir, robotName);
     if (userRobot != null && !userRobot.equals(userSub)) {
       p = overlayLenient(p, userRobot);
     }
     return p;
+  }
+
+  private static String describe(Path file, Exception e) {
+    return e instanceof ParamFormatException
+        ? e.getMessage()
+        : file + ": cannot be read (" + e + ")";
   }
 
   /**
@@ -112,14 +136,11 @@ final class ParamsLoader {
       ArRobotParams p = base.overlay(ParamFile.read(file));
       LOG.info("Loaded robot parameters from {}", file);
       return p;
-    } catch (ParamFormatException e) {
-      LOG.error(
-          "{} -- ignoring this parameter file, keeping the values loaded before it",
-          e.getMessage());
-    } catch (IOException e) {
-      LOG.error("Cannot read parameter file {} ({}); ignoring it", file, e.toString());
+    } catch (ParamFormatException | IOException e) {
+      String problem = describe(file, e);
+      LOG.error("{} -- ignoring this parameter file, keeping the values loaded before it", problem);
+      return base.withProblem(problem);
     }
-    return base;
   }
 
   /** userDir/name.p (or its lower-case spelling) if it is a readable file, else null. */

@@ -216,6 +216,8 @@ final class RobotConnection implements Handshake.Host {
     robotType = type;
     robotSubType = subtype;
     ArRobotParams p = ArRobotParams.load(subtype, name, paramsDir);
+    // which files the robot runs on; problems were logged as ERRORs by the loader
+    log.info("robot parameters for '{}' from {}", subtype, p.getSources());
     robot.setParams(p);
     robot.motion.configure(
         p.hasSettableVelMaxes(), p.hasSettableAccsDecs(), p.hasMoveCommand(), p.getVel2Divisor());

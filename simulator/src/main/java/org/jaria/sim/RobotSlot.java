@@ -1,13 +1,16 @@
 package org.jaria.sim;
 
 import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
 import java.util.SplittableRandom;
+import java.util.concurrent.TimeUnit;
 import java.util.random.RandomGenerator;
 import org.jaria.geom.ArPose;
 import org.jaria.protocol.DropCounters;
 import org.jaria.sim.robot.RobotBody;
 import org.jaria.sim.robot.RobotModel;
 import org.jaria.sim.server.ArcosSession;
+import org.jaria.sim.server.LogRateLimit;
 
 /** A robot in a world with its server side: TCP port, current client session, drop counters. */
 final class RobotSlot {
@@ -25,12 +28,26 @@ final class RobotSlot {
   ArcosSession session;
   long sessionsStarted;
 
+  /** A client that connected while the robot had one; it gets the robot when that one leaves. */
+  SocketChannel waiting;
+
+  long waitingSinceNanos;
+
+  /** Connections refused (the robot was taken), sessions ended by a timeout. */
+  long refused;
+
+  long timedOut;
+  final LogRateLimit refusalLog;
+
   RobotSlot(SimWorld world, RobotBody body, RobotOptions options, int requestedPort) {
     this.body = body;
     this.options = options;
     this.requestedPort = requestedPort;
     this.drops = new DropCounters(body.name());
     this.handle = new SimRobot(world, this);
+    this.refusalLog =
+        new LogRateLimit(
+            TimeUnit.MILLISECONDS.toNanos(world.getOptions().server().refusalLogMillis()));
   }
 
   /**
@@ -93,6 +110,9 @@ final class RobotSlot {
   private void forgetIfEnded(ArcosSession ses) {
     if (ses.state() == ArcosSession.State.ENDED && session == ses) {
       session = null;
+      if (ses.timedOut()) {
+        timedOut++;
+      }
     }
   }
 

@@ -16,6 +16,7 @@ import java.time.Duration;
  * @param odometryError how odometry errs
  * @param basePort TCP port of the first robot (default 8101; each further robot takes the next; 0
  *     lets the system pick free ports)
+ * @param server how the robots' ports treat their clients (timeouts, ignored commands, map folder)
  */
 public record SimOptions(
     long seed,
@@ -25,7 +26,8 @@ public record SimOptions(
     boolean watchdogWarnOnly,
     SonarOptions sonar,
     OdometryError odometryError,
-    int basePort) {
+    int basePort,
+    ServerOptions server) {
 
   /** MobileSim's first robot port. */
   public static final int DEFAULT_PORT = 8101;
@@ -51,6 +53,9 @@ public record SimOptions(
     if (basePort < 0 || basePort > 65535) {
       throw new IllegalArgumentException("port must be 0..65535, was " + basePort);
     }
+    if (server == null) {
+      throw new IllegalArgumentException("server options must not be null");
+    }
   }
 
   /** Defaults: seed 1, 10 ms ticks, 100 ms SIPs, 2 s watchdog, default sonar, exact odometry. */
@@ -74,6 +79,7 @@ public record SimOptions(
     b.sonar = sonar;
     b.odometryError = odometryError;
     b.basePort = basePort;
+    b.server = server;
     return b;
   }
 
@@ -87,6 +93,7 @@ public record SimOptions(
     private SonarOptions sonar = SonarOptions.DEFAULTS;
     private OdometryError odometryError = OdometryError.NONE;
     private int basePort = DEFAULT_PORT;
+    private ServerOptions server = ServerOptions.DEFAULTS;
 
     private Builder() {}
 
@@ -143,6 +150,12 @@ public record SimOptions(
       return this;
     }
 
+    /** How the robots' ports treat their clients. */
+    public Builder server(ServerOptions s) {
+      server = s;
+      return this;
+    }
+
     /** The options. */
     public SimOptions build() {
       return new SimOptions(
@@ -153,7 +166,8 @@ public record SimOptions(
           watchdogWarnOnly,
           sonar,
           odometryError,
-          basePort);
+          basePort,
+          server);
     }
   }
 }

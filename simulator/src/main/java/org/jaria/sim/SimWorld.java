@@ -18,6 +18,7 @@ import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
 import org.jaria.sim.camera.ColoredObjects;
 import org.jaria.sim.robot.RobotModel;
+import org.jaria.sim.server.CommandPolicy;
 import org.jaria.sim.world.WorldGeometry;
 import org.jaria.sim.world.WorldMap;
 import org.slf4j.Logger;
@@ -70,6 +71,8 @@ public final class SimWorld implements AutoCloseable {
   private final WorldObstacles obstacles;
   private final WorldQueries queries;
   private final WorldServing serving = new WorldServing(lock);
+  private final ClientMapLoader mapLoader;
+  private final CommandPolicy commandPolicy;
   private volatile IntConsumer exitHandler =
       code -> log.warn("a client asked the simulator to exit with code {}; no exit handler", code);
   private long steps;
@@ -84,6 +87,13 @@ public final class SimWorld implements AutoCloseable {
     this.clock = clock;
     this.tickNanos = options.tick().toNanos();
     this.name = "world-" + WORLD_NUMBERS.incrementAndGet() + "-" + shortName(map.source());
+    ServerOptions so = options.server();
+    Path folder = so.mapFolder() != null ? so.mapFolder() : Path.of("");
+    this.mapLoader =
+        new ClientMapLoader(
+            new ClientMapFolder(folder, so.maxMapBytes())::read, "jaria-sim-maps-" + this.name);
+    this.commandPolicy =
+        new CommandPolicy(so.ignoredCommands(), so.remoteExit(), so.mapFolder() != null);
   }
 
   /** "office" for "bundled:office", "hall" for "/maps/hall.map". */
@@ -256,8 +266,12 @@ public final class SimWorld implements AutoCloseable {
 
   private void stepLocked() {
     long now = clock.nanoTime();
+    ClientMapLoader.Result loaded = mapLoader.poll();
+    if (loaded != null) {
+      host.mapLoadFinished(loaded);
+    }
     statics.rebuild();
-    serving.acceptPending(clock, host);
+    serving.acceptPending(clock, host, slots);
     for (RobotSlot s : slots) {
       s.poll(now);
       if (closed) {
@@ -457,8 +471,40 @@ public final class SimWorld implements AutoCloseable {
     return locked(() -> queries.connectedClientCount(slots));
   }
 
+  /** What the robots' ports did with their clients so far. */
+  public ServerCounters getServerCounters() {
+    return locked(
+        () -> {
+          long sessions = 0;
+          long refused = 0;
+          long timedOut = 0;
+          for (RobotSlot s : slots) {
+            sessions += s.sessionsStarted;
+            refused += s.refused;
+            timedOut += s.timedOut;
+          }
+          return new ServerCounters(sessions, refused, timedOut);
+        });
+  }
+
   WorldHost host() {
     return host;
+  }
+
+  ClientMapLoader mapLoader() {
+    return mapLoader;
+  }
+
+  CommandPolicy commandPolicy() {
+    return commandPolicy;
+  }
+
+  /**
+   * Waits until a map a client asked for has been read and parsed (it is applied on the next step).
+   * For tests that step by hand and must not depend on how fast the loader thread is.
+   */
+  public void awaitClientMapLoad() throws InterruptedException {
+    mapLoader.awaitIdle();
   }
 
   WorldGeometry geometry() {
@@ -524,5 +570,6 @@ public final class SimWorld implements AutoCloseable {
     } finally {
       lock.unlock();
     }
+    mapLoader.close();
   }
 }

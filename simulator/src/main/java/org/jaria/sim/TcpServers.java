@@ -3,6 +3,7 @@ package org.jaria.sim;
 import java.io.IOException;
 import java.net.BindException;
 import java.net.InetSocketAddress;
+import java.net.SocketAddress;
 import java.net.StandardSocketOptions;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
@@ -10,9 +11,11 @@ import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.Iterator;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import java.util.function.BiConsumer;
 import org.jaria.clock.Clock;
 import org.jaria.sim.server.ArcosSession;
+import org.jaria.sim.server.ClientKind;
 import org.jaria.sim.server.NioSocketConnection;
 import org.jaria.sim.server.SessionHost;
 import org.slf4j.Logger;
@@ -55,21 +58,72 @@ final class TcpServers implements AutoCloseable {
     }
   }
 
-  /** Gives a newly accepted client to its robot, or refuses it if the robot has one already. */
+  /**
+   * Gives a newly accepted client to its robot. If the robot still has a client, that client is
+   * checked first (it may just have left: ARIA's disconnect and a new connect can arrive in the
+   * same tick); if it is still there, the newcomer waits (one per robot, see {@link #serveWaiting})
+   * and any further one is refused.
+   */
   static void attach(RobotSlot slot, SocketChannel c, Clock clock, SessionHost host) {
-    if (slot.session != null) {
-      log.warn("robot {} already has a client; refusing another connection", slot.body.name());
-      closeQuietly(c);
+    long now = clock.nanoTime();
+    slot.poll(now);
+    if (slot.session == null) {
+      start(slot, c, clock, host);
+    } else if (slot.waiting == null) {
+      slot.waiting = c;
+      slot.waitingSinceNanos = now;
+    } else {
+      refuse(slot, c, now, "it already has a client and another is waiting");
+    }
+  }
+
+  /**
+   * Hands the waiting client over once its robot is free; refuses it if the robot is still taken
+   * after the handshake timeout.
+   */
+  static void serveWaiting(RobotSlot slot, Clock clock, SessionHost host) {
+    SocketChannel c = slot.waiting;
+    if (c == null) {
       return;
     }
+    long now = clock.nanoTime();
+    if (slot.session == null) {
+      slot.waiting = null;
+      start(slot, c, clock, host);
+    } else if (now - slot.waitingSinceNanos
+        > TimeUnit.MILLISECONDS.toNanos(host.handshakeTimeoutMillis())) {
+      slot.waiting = null;
+      refuse(slot, c, now, "it still has a client");
+    }
+  }
+
+  private static void start(RobotSlot slot, SocketChannel c, Clock clock, SessionHost host) {
     try {
+      SocketAddress remote = c.getRemoteAddress();
+      ClientKind kind = ClientKind.ofTcpPeer(remote);
       slot.session =
-          new ArcosSession(slot.body, new NioSocketConnection(c, clock), host, slot.drops);
+          new ArcosSession(slot.body, new NioSocketConnection(c, clock), host, slot.drops, kind);
       slot.sessionsStarted++;
-      log.info("robot {}: client connected ({})", slot.body.name(), c.getRemoteAddress());
+      log.info("robot {}: client connected ({})", slot.body.name(), remote);
     } catch (IOException e) {
       log.warn("robot {}: could not set up the connection: {}", slot.body.name(), e.getMessage());
       closeQuietly(c);
+    }
+  }
+
+  /** Closes a client the robot cannot take; counted always, logged rate-limited. */
+  private static void refuse(RobotSlot slot, SocketChannel c, long now, String why) {
+    closeQuietly(c);
+    slot.refused++;
+    long unlogged = slot.refusalLog.record(now);
+    if (unlogged == 0) {
+      log.warn("robot {}: connection refused: {}", slot.body.name(), why);
+    } else if (unlogged > 0) {
+      log.warn(
+          "robot {}: connection refused: {} ({} more refused since the last line)",
+          slot.body.name(),
+          why,
+          unlogged);
     }
   }
 
@@ -146,6 +200,10 @@ final class TcpServers implements AutoCloseable {
 
   /** Closes one robot's port. */
   static void unbind(RobotSlot slot) {
+    if (slot.waiting != null) {
+      closeQuietly(slot.waiting);
+      slot.waiting = null;
+    }
     if (slot.server != null) {
       closeQuietly(slot.server);
       slot.server = null;

@@ -1,15 +1,13 @@
 package org.jaria.sim;
 
-import java.io.IOException;
-import java.nio.file.Path;
 import org.jaria.clock.Clock;
 import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
+import org.jaria.sim.server.CommandPolicy;
 import org.jaria.sim.server.IgnoredCommand;
 import org.jaria.sim.server.ServerPackets;
 import org.jaria.sim.server.SessionHost;
 import org.jaria.sim.world.WorldGeometry;
-import org.jaria.sim.world.WorldMap;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -64,6 +62,14 @@ final class WorldHost implements SessionHost {
               "{}: {} is not simulated (no such device in the simulator); ignored (logged once)",
               robotName,
               what);
+      case BY_OPTION ->
+          log.info("{}: {} ignored as the options ask (logged once)", robotName, what);
+      case REMOTE_CLIENT ->
+          log.warn(
+              "{}: {} refused: only clients on this machine may send it (logged once); see"
+                  + " docs/simulator.md, Hostile clients and safe defaults",
+              robotName,
+              what);
       case NO_DEVICE ->
           log.warn(
               "{}: {} needs a device this robot does not carry; ignored (logged once). Give the"
@@ -74,29 +80,53 @@ final class WorldHost implements SessionHost {
   }
 
   @Override
-  public void loadMapRequested(String path, String robotName) {
-    int status;
-    String name = path;
-    try {
-      WorldMap m = MapSupport.load(Path.of(path));
-      world.setMap(m);
-      status = 1;
-      log.info("{}: client loaded map {}", robotName, path);
-    } catch (IOException | RuntimeException e) {
-      status = -1;
+  public void loadMapRequested(String path, int robotIndex) {
+    RobotSlot asker = world.slots().get(robotIndex);
+    if (!world.mapLoader().submit(path, robotIndex, asker.body.name())) {
       log.warn(
-          "{}: client asked for map {} which cannot be loaded: {}",
-          robotName,
-          path,
-          e.getMessage());
+          "{}: client map '{}' refused: another map is still loading",
+          asker.body.name(),
+          ClientMapFolder.printable(path));
+      answer(asker, -1, path);
     }
-    ArRobotPacket p = new ArRobotPacket();
+  }
+
+  /**
+   * Applies a map a client asked for once it is loaded: every client hears of a new map; only the
+   * asking client hears of a failure.
+   */
+  void mapLoadFinished(ClientMapLoader.Result r) {
+    if (r.map() == null) {
+      answer(world.slots().get(r.robotIndex()), -1, r.requested());
+      return;
+    }
+    world.setMap(r.map());
     for (RobotSlot s : world.slots()) {
-      if (s.session != null) {
-        ServerPackets.mapChanged(p, false, status, name);
-        s.session.sendPacket(p);
-      }
+      answer(s, 1, r.requested());
     }
+  }
+
+  private static void answer(RobotSlot s, int status, String name) {
+    if (s.session != null) {
+      ArRobotPacket p = new ArRobotPacket();
+      ServerPackets.mapChanged(p, false, status, name);
+      s.session.sendPacket(p);
+    }
+  }
+
+  @Override
+  public CommandPolicy commandPolicy() {
+    return world.commandPolicy();
+  }
+
+  @Override
+  public int handshakeTimeoutMillis() {
+    return world.getOptions().server().handshakeTimeoutMillis();
+  }
+
+  @Override
+  public int clientTimeoutMillis() {
+    return world.getOptions().server().clientTimeoutMillis();
   }
 
   @Override

@@ -34,10 +34,16 @@ final class WorldServing {
     }
   }
 
-  /** Gives clients that connected since the last tick to their robots. */
-  void acceptPending(VirtualClock clock, SessionHost host) {
+  /**
+   * Gives clients that connected since the last tick to their robots, and waiting clients to robots
+   * that became free.
+   */
+  void acceptPending(VirtualClock clock, SessionHost host, List<RobotSlot> slots) {
     if (servers != null) {
       servers.acceptPending((slot, c) -> TcpServers.attach(slot, c, clock, host));
+      for (RobotSlot s : slots) {
+        TcpServers.serveWaiting(s, clock, host);
+      }
     }
   }
 

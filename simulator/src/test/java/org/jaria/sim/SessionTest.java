@@ -323,26 +323,35 @@ class SessionTest {
         0 10000 0 0
         DATA
         """);
-    try (SimWorld w = SimWorld.empty(opts(0))) {
+    SimOptions o =
+        SimOptions.builder()
+            .watchdogMillis(0)
+            .server(ServerOptions.DEFAULTS.withMapFolder(dir, 1 << 20))
+            .build();
+    try (SimWorld w = SimWorld.empty(o)) {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      byte[] name = file.toString().getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
+      byte[] name = "box.map".getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
       ByteBuffer b = ByteBuffer.allocate(5 + name.length).order(ByteOrder.LITTLE_ENDIAN);
       b.put((byte) 0x3B).putShort((short) 1).putShort((short) name.length).put(name);
       c.comPayload(ArCommands.SIM_CTRL, b.array());
+      w.step();
+      w.awaitClientMapLoad();
       ArRobotPacket changed = c.awaitId(PacketIds.SIM_MAP_CHANGED);
       changed.resetRead();
       assertEquals(0, changed.bufToUByte(), "loaded by a client, not the user");
       assertEquals(1, changed.bufToByte(), "a new map was loaded");
-      assertEquals(file.toString(), changed.bufToString());
+      assertEquals("box.map", changed.bufToString());
       assertEquals(new ArPose(5000, 5000, 90), r.getTruePose());
       assertEquals(4000, w.castRay(5000, 6000, 90, 9000), 1e-6, "the new walls are solid");
 
-      byte[] missing = "/no/such/file.map".getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
+      byte[] missing = "no/such/file.map".getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
       ByteBuffer m = ByteBuffer.allocate(5 + missing.length).order(ByteOrder.LITTLE_ENDIAN);
       m.put((byte) 0x3B).putShort((short) 1).putShort((short) missing.length).put(missing);
       c.clear();
       c.comPayload(ArCommands.SIM_CTRL, m.array());
+      w.step();
+      w.awaitClientMapLoad();
       ArRobotPacket failed = c.awaitId(PacketIds.SIM_MAP_CHANGED);
       failed.resetRead();
       failed.bufToUByte();

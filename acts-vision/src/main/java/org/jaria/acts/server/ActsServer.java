@@ -8,6 +8,7 @@ import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketException;
+import java.net.SocketTimeoutException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
@@ -32,16 +33,34 @@ import org.slf4j.LoggerFactory;
  *   <li>{@code pipeline}: reads a frame, tracks it, encodes the reply and publishes it, at most
  *       {@link ServerSettings#maxFps()} times a second (a still image is simply re-tracked, which
  *       also picks up channel changes made meanwhile);
- *   <li>{@code accept}: accepts clients, refusing those beyond {@link ServerSettings#maxClients()};
+ *   <li>{@code accept}: accepts clients and, at least once a second, disconnects clients idle for
+ *       {@link ServerSettings#idleTimeoutMillis()} (they neither sent a byte nor took a reply:
+ *       clients that only connect, stop reading, or vanished without closing). When the server is
+ *       full ({@link ServerSettings#maxClients()}) a newcomer replaces the client idle longest
+ *       among those that never sent a byte or have been idle half the idle timeout (at most 5 s;
+ *       see {@link IdleClients}); if every client is busy, the newcomer is refused (closed at once,
+ *       counted, logged at most once every 10 s).
  *   <li>{@code client-N}: one per client; answers each {@code '0'} with the latest reply, ignores
  *       (and counts) any other byte except {@code '1'} (quit). A client that vanishes, sends
- *       garbage or stops reading only ever blocks its own thread.
+ *       garbage or stops reading only ever blocks its own thread, until it is dropped as idle.
  * </ul>
+ *
+ * <p>The server listens on {@link ServerSettings#bindHost()}: every interface by default, as ACTS
+ * does; {@code 127.0.0.1} keeps it to this machine.
  */
 public final class ActsServer implements AutoCloseable {
 
   private static final Logger LOG = LoggerFactory.getLogger(ActsServer.class);
   private static final long JOIN_MS = 5000;
+
+  /**
+   * A full server may replace a client idle this long (half the idle timeout, at most this), or one
+   * that never sent a byte.
+   */
+  private static final long EVICT_IDLE_MAX_NANOS = TimeUnit.SECONDS.toNanos(5);
+
+  /** At most one line about refused clients this often. */
+  private static final long REFUSAL_LOG_NANOS = TimeUnit.SECONDS.toNanos(10);
 
   private final VisionPipeline pipeline;
   private final ServerSettings settings;
@@ -68,6 +87,11 @@ public final class ActsServer implements AutoCloseable {
   private final AtomicLong garbage = new AtomicLong();
   private final AtomicLong accepted = new AtomicLong();
   private final AtomicLong refused = new AtomicLong();
+  private final AtomicLong droppedIdle = new AtomicLong();
+  private final AtomicLong replaced = new AtomicLong();
+  private long lastRefusalLogNanos;
+  private long refusalsNotLogged;
+  private boolean refusalLogged;
   private final AtomicLong sourceErrors = new AtomicLong();
 
   /** A server (not yet started) for a pipeline. */
@@ -116,6 +140,8 @@ public final class ActsServer implements AutoCloseable {
                 + "): another ACTS server may be running; stop it or choose another port with -p",
             e);
       }
+      // accept() wakes up at least once a second to drop idle clients
+      ss.setSoTimeout(Math.max(10, Math.min(1000, settings.idleTimeoutMillis() / 4)));
       serverSocket = ss;
       port = ss.getLocalPort();
       running = true;
@@ -199,24 +225,26 @@ public final class ActsServer implements AutoCloseable {
       Socket s;
       try {
         s = serverSocket.accept();
+      } catch (SocketTimeoutException e) {
+        dropIdleClients();
+        continue;
       } catch (IOException e) {
         if (running) {
           LOG.warn("ACTS: accept failed: {}", e.getMessage());
         }
         return;
       }
+      dropIdleClients();
       lock.lock();
       try {
+        if (running && clients.size() >= settings.maxClients()) {
+          makeRoom();
+        }
         if (!running || clients.size() >= settings.maxClients()) {
-          refused.incrementAndGet();
-          LOG.warn(
-              "ACTS: refusing client {}: already {} clients (the maximum)",
-              s.getRemoteSocketAddress(),
-              clients.size());
-          closeQuietly(s);
+          refuse(s);
           continue;
         }
-        Client c = new Client(s);
+        Client c = new Client(s, clock.nanoTime());
         clients.add(c);
         accepted.incrementAndGet();
         clientCounter++;
@@ -230,18 +258,86 @@ public final class ActsServer implements AutoCloseable {
     }
   }
 
+  /** Disconnects clients idle past the idle timeout (their threads then end). */
+  private void dropIdleClients() {
+    List<Client> list = new ArrayList<>(clients);
+    List<IdleClients.View> views = new ArrayList<>(list.size());
+    for (Client c : list) {
+      views.add(c.view());
+    }
+    long timeout = TimeUnit.MILLISECONDS.toNanos(settings.idleTimeoutMillis());
+    for (int i : IdleClients.expired(views, clock.nanoTime(), timeout)) {
+      Client c = list.get(i);
+      if (clients.remove(c)) {
+        droppedIdle.incrementAndGet();
+        LOG.info("ACTS: client {} idle too long; disconnected", c.socket.getRemoteSocketAddress());
+        closeQuietly(c.socket);
+      }
+    }
+  }
+
+  /** A full server: disconnects the client {@link IdleClients#toEvict} names, if any. */
+  private void makeRoom() {
+    List<Client> list = new ArrayList<>(clients);
+    List<IdleClients.View> views = new ArrayList<>(list.size());
+    for (Client c : list) {
+      views.add(c.view());
+    }
+    long evictIdle =
+        Math.min(
+            EVICT_IDLE_MAX_NANOS, TimeUnit.MILLISECONDS.toNanos(settings.idleTimeoutMillis()) / 2);
+    int i = IdleClients.toEvict(views, clock.nanoTime(), evictIdle);
+    if (i >= 0 && clients.remove(list.get(i))) {
+      replaced.incrementAndGet();
+      LOG.debug( // a flood replaces clients by the hundred: counted, not logged one by one
+          "ACTS: server full; idle client {} makes room for a new one",
+          list.get(i).socket.getRemoteSocketAddress());
+      closeQuietly(list.get(i).socket);
+    }
+  }
+
+  /** Closes a client the full server cannot take; logged at most once every 10 s. */
+  private void refuse(Socket s) {
+    refused.incrementAndGet();
+    long now = clock.nanoTime();
+    if (refusalLogged && now - lastRefusalLogNanos < REFUSAL_LOG_NANOS) {
+      refusalsNotLogged++;
+    } else {
+      LOG.warn(
+          "ACTS: refusing client {}: already {} busy clients (the maximum){}",
+          s.getRemoteSocketAddress(),
+          clients.size(),
+          refusalsNotLogged > 0
+              ? "; " + refusalsNotLogged + " more refused since the last line"
+              : "");
+      refusalLogged = true;
+      lastRefusalLogNanos = now;
+      refusalsNotLogged = 0;
+    }
+    closeQuietly(s);
+  }
+
   /** One connected client. */
   private final class Client implements Runnable {
     final Socket socket;
+    private volatile long lastActivityNanos;
+    private volatile boolean spoke;
 
-    Client(Socket socket) {
+    Client(Socket socket, long now) {
       this.socket = socket;
+      this.lastActivityNanos = now;
+    }
+
+    IdleClients.View view() {
+      return new IdleClients.View(lastActivityNanos, spoke);
     }
 
     @Override
     public void run() {
       try {
         socket.setTcpNoDelay(true);
+        // a read that waits this long means the client is idle (or gone without a word)
+        socket.setSoTimeout(settings.idleTimeoutMillis());
         InputStream in = socket.getInputStream();
         OutputStream out = socket.getOutputStream();
         byte[] buf = new byte[64];
@@ -250,10 +346,13 @@ public final class ActsServer implements AutoCloseable {
           if (n < 0) {
             return;
           }
+          spoke = true;
+          lastActivityNanos = clock.nanoTime();
           for (int i = 0; i < n; i++) {
             if (buf[i] == ActsProtocol.REQUEST_PACKET) {
               byte[] r = reply;
               out.write(r, 0, r.length);
+              lastActivityNanos = clock.nanoTime();
               requests.incrementAndGet();
             } else if (buf[i] == ActsProtocol.REQUEST_QUIT) {
               LOG.info("ACTS: client {} asked to quit", socket.getRemoteSocketAddress());
@@ -266,6 +365,11 @@ public final class ActsServer implements AutoCloseable {
             }
           }
         }
+      } catch (SocketTimeoutException e) {
+        if (clients.remove(this)) {
+          droppedIdle.incrementAndGet();
+        }
+        LOG.info("ACTS: client {} idle too long; disconnected", socket.getRemoteSocketAddress());
       } catch (SocketException e) {
         LOG.debug("ACTS: client {} gone: {}", socket.getRemoteSocketAddress(), e.getMessage());
       } catch (IOException e) {
@@ -350,6 +454,16 @@ public final class ActsServer implements AutoCloseable {
   /** Clients refused because the server was full. */
   public long clientsRefused() {
     return refused.get();
+  }
+
+  /** Clients disconnected because they were idle past the idle timeout. */
+  public long clientsDroppedIdle() {
+    return droppedIdle.get();
+  }
+
+  /** Idle clients disconnected to make room for a newcomer in a full server. */
+  public long clientsReplaced() {
+    return replaced.get();
   }
 
   /** Clients connected now. */

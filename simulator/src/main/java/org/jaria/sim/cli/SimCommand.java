@@ -6,11 +6,13 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.jaria.sim.OdometryError;
 import org.jaria.sim.RobotOptions;
+import org.jaria.sim.ServerOptions;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
@@ -110,6 +112,24 @@ public final class SimCommand implements Callable<Integer> {
               + " clients), not ADSEL/GRIPPERVAL/GRIPREQUEST/GYROCALCW")
   boolean legacyLaserCommands;
 
+  @Option(
+      names = "--cwd",
+      paramLabel = "DIR",
+      description =
+          "folder client programs may load maps from (SIM_CTRL), from any machine; paths are"
+              + " relative to it, and absolute paths, '..' outside it, links out of it and files"
+              + " that are not regular files are refused (default: the working directory, for"
+              + " clients on this machine only)")
+  Path cwd;
+
+  @Option(
+      names = "--ignore-command",
+      paramLabel = "N",
+      description =
+          "ignore client command number N (repeatable), as MobileSim: e.g. 239 SIM_EXIT, 236"
+              + " SIM_CTRL (map loading), 224 SIM_SET_POSE (teleport)")
+  List<Integer> ignoreCommands = new ArrayList<>();
+
   private final CountDownLatch stop = new CountDownLatch(1);
   private final AtomicInteger exitCode = new AtomicInteger();
 
@@ -185,6 +205,7 @@ public final class SimCommand implements Callable<Integer> {
     }
     try {
       return SimOptions.builder()
+          .server(serverOptions())
           .seed(seed)
           .basePort(port)
           .sipCycleMillis(sipCycle)
@@ -195,6 +216,19 @@ public final class SimCommand implements Callable<Integer> {
     } catch (IllegalArgumentException e) {
       throw new ParameterException(spec.commandLine(), e.getMessage());
     }
+  }
+
+  /** What --cwd and --ignore-command ask of the robots' ports. */
+  private ServerOptions serverOptions() {
+    ServerOptions so = ServerOptions.DEFAULTS.withIgnoredCommands(Set.copyOf(ignoreCommands));
+    if (cwd != null) {
+      if (!Files.isDirectory(cwd)) {
+        throw new ParameterException(
+            spec.commandLine(), "--cwd " + cwd + " is not a folder; give an existing folder");
+      }
+      so = so.withMapFolder(cwd, so.maxMapBytes());
+    }
+    return so;
   }
 
   private boolean isUnthrottled() {

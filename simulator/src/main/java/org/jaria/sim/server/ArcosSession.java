@@ -3,6 +3,7 @@ package org.jaria.sim.server;
 import java.io.IOException;
 import java.util.concurrent.TimeUnit;
 import org.jaria.connection.ArDeviceConnection;
+import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
 import org.jaria.protocol.ArRobotPacketReceiver;
 import org.jaria.protocol.DropCounters;
@@ -52,8 +53,11 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
   private final ArRobotPacket out = new ArRobotPacket();
   private final StandardSip sip = new StandardSip();
 
+  private final ClientKind kind;
   private State state = State.SYNC;
   private int expectedSync;
+  private long handshakeSinceNanos;
+  private boolean timedOut;
   private long lastCommandNanos;
   private boolean watchdogTripped;
   private long nextSipNanos;
@@ -71,17 +75,45 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
   int gyroCcw;
 
   /**
-   * A session on a freshly connected client.
+   * A session on a freshly connected in-memory client (never timed out, trusted as local).
    *
    * @param drops the robot's drop counters (kept across sessions)
    */
   public ArcosSession(
       RobotBody body, ArDeviceConnection conn, SessionHost host, DropCounters drops) {
+    this(body, conn, host, drops, ClientKind.IN_MEMORY);
+  }
+
+  /**
+   * A session on a freshly connected client of kind {@code kind}: network clients must complete the
+   * handshake within the host's handshake timeout and are disconnected when silent for the client
+   * timeout.
+   *
+   * @param drops the robot's drop counters (kept across sessions)
+   */
+  public ArcosSession(
+      RobotBody body,
+      ArDeviceConnection conn,
+      SessionHost host,
+      DropCounters drops,
+      ClientKind kind) {
     this.body = body;
     this.conn = conn;
     this.host = host;
+    this.kind = kind;
     this.receiver = new ArRobotPacketReceiver(drops);
     this.commands = new CommandHandler(this);
+    this.handshakeSinceNanos = host.clock().nanoTime();
+  }
+
+  /** Where the client is. */
+  public ClientKind kind() {
+    return kind;
+  }
+
+  /** Whether the session ended because the client was too slow or silent. */
+  public boolean timedOut() {
+    return timedOut;
   }
 
   /** The session's state. */
@@ -154,10 +186,31 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
         } else if (watchdogTripped && host.watchdogWarnOnly()) {
           watchdogTripped = false;
         }
+        IgnoredCommand.Reason refused = host.commandPolicy().refusal(id, simCtrlOp(p), kind);
+        if (refused != null) {
+          host.ignoredCommand(id, refused, body.name());
+          if (CommandPolicy.isMapLoad(simCtrlOp(p))) {
+            // a refused map load still gets its answer, so the client does not wait for ever
+            send(ServerPackets.mapChanged(out, false, -1, ""));
+          }
+          return;
+        }
         commands.handle(p);
       }
       case ENDED -> {}
     }
+  }
+
+  /** The operation code of a SIM_CTRL packet (-1 for other packets or without one). */
+  private static int simCtrlOp(ArRobotPacket p) {
+    if (p.getID() != ArCommands.SIM_CTRL.getNumber() || p.getDataLength() < 3) {
+      return -1;
+    }
+    p.resetRead();
+    p.bufToUByte();
+    int op = p.bufToByte2();
+    p.resetRead();
+    return op;
   }
 
   private void handleSync(int id) {
@@ -195,6 +248,7 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
     body.closeSession();
     state = State.SYNC;
     expectedSync = 0;
+    handshakeSinceNanos = host.clock().nanoTime();
     log.info("{}: session closed ({}); waiting for SYNC0", body.name(), why);
   }
 
@@ -238,6 +292,9 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
 
   /** Runs the watchdog and sends everything due after the physics of a tick. */
   public void afterPhysics(long now) {
+    if (kind.isNetwork() && checkTimeouts(now)) {
+      return;
+    }
     if (state != State.OPEN) {
       flush();
       return;
@@ -261,6 +318,29 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
       sendCycle();
     }
     flush();
+  }
+
+  /**
+   * Ends the session of a network client that has not finished the handshake in time or has been
+   * silent too long (the watchdog stopped the robot long before); returns whether it did.
+   */
+  private boolean checkTimeouts(long now) {
+    if (state == State.SYNC || state == State.CONNECTED) {
+      long limit = TimeUnit.MILLISECONDS.toNanos(host.handshakeTimeoutMillis());
+      if (now - handshakeSinceNanos > limit) {
+        timedOut = true;
+        end("no handshake within " + host.handshakeTimeoutMillis() + " ms");
+        return true;
+      }
+    } else if (state == State.OPEN && host.clientTimeoutMillis() > 0) {
+      long limit = TimeUnit.MILLISECONDS.toNanos(host.clientTimeoutMillis());
+      if (now - lastCommandNanos > limit) {
+        timedOut = true;
+        end("silent for " + host.clientTimeoutMillis() + " ms; robot freed for other clients");
+        return true;
+      }
+    }
+    return false;
   }
 
   private void sendCycle() {

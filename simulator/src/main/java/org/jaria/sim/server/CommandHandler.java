@@ -302,7 +302,7 @@ final class CommandHandler {
         while (end < len && raw[end] != 0) {
           end++;
         }
-        s.host.loadMapRequested(new String(raw, 0, end, StandardCharsets.ISO_8859_1), body.name());
+        s.host.loadMapRequested(new String(raw, 0, end, StandardCharsets.ISO_8859_1), body.index());
       }
       case 3, 4, 5 -> {} // map master mode off, log rotation, state log: nothing to do here
       case 6 -> s.send(ServerPackets.simInfo(s.out(), body));

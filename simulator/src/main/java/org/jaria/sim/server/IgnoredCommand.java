@@ -19,6 +19,13 @@ public record IgnoredCommand(int command, String name, Reason reason, long count
     /** A real ARCOS command that this simulator does not simulate (arm, pan-tilt, ...). */
     NOT_SIMULATED,
     /** The command is for a device this simulated robot does not carry (laser, gyro ...). */
-    NO_DEVICE
+    NO_DEVICE,
+    /** The user told the simulator to ignore this command ({@code --ignore-command}). */
+    BY_OPTION,
+    /**
+     * Only clients on the simulator's own machine may send it (SIM_EXIT, map loads without a map
+     * folder); this client is on another machine.
+     */
+    REMOTE_CLIENT
   }
 }

@@ -31,8 +31,21 @@ public interface SessionHost {
    */
   void ignoredCommand(int command, IgnoredCommand.Reason reason, String robotName);
 
-  /** SIM_CTRL load map: loads {@code path} and tells every client (SIM_MAP_CHANGED). */
-  void loadMapRequested(String path, String robotName);
+  /**
+   * SIM_CTRL load map: loads {@code path} (relative to the map folder, off the world thread) and,
+   * once loaded, tells every client (SIM_MAP_CHANGED); a map that cannot be loaded is answered to
+   * the asking robot's client only, with status -1.
+   */
+  void loadMapRequested(String path, int robotIndex);
+
+  /** Which commands are carried out for which clients. */
+  CommandPolicy commandPolicy();
+
+  /** A network client has this long from connecting (or CLOSE) to OPEN, ms. */
+  int handshakeTimeoutMillis();
+
+  /** A network client of an open robot silent this long is disconnected, ms (0 never). */
+  int clientTimeoutMillis();
 
   /** SIM_EXIT: a client asks the simulator to exit with {@code code}. */
   void exitRequested(int code, String robotName);

@@ -19,7 +19,8 @@ import picocli.CommandLine.Spec;
       BenchCommand.Arnl.class,
       BenchCommand.Actions.class,
       BenchCommand.Net.class,
-      BenchCommand.Mapper.class
+      BenchCommand.Mapper.class,
+      BenchCommand.Hostile.class
     })
 final class BenchCommand implements Runnable {
 
@@ -141,6 +142,19 @@ final class BenchCommand implements Runnable {
     @Override
     String table() throws Exception {
       return org.jaria.tools.mapper.MapperBenchmark.run(map, quick ? 40 : 200);
+    }
+  }
+
+  /** {@code jaria bench hostile}. */
+  @Command(
+      name = "hostile",
+      description =
+          "Hostile clients on the simulator and ACTS ports: connections refused and dropped,"
+              + " memory and threads before and after; reconnects right after a disconnect.")
+  static final class Hostile extends QuickBench {
+    @Override
+    String table() throws Exception {
+      return org.jaria.tools.bench.HostileBenchmark.run(quick);
     }
   }
 }

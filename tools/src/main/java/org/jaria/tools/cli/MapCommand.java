@@ -68,6 +68,9 @@ final class MapCommand implements Runnable {
       for (ArMapObject o : m.getMapObjects()) {
         out.printf(Locale.ROOT, "  %-16s %-24s %s%n", o.type(), '"' + o.name() + '"', o.pose());
       }
+      for (String w : m.getWarnings()) {
+        out.println("  warning  " + w);
+      }
       StringWriter rewritten = new StringWriter();
       m.write(rewritten);
       boolean reloadsEqual;

@@ -1,0 +1,114 @@
+package org.jaria.sim;
+
+import java.nio.file.Path;
+import java.util.Set;
+
+/**
+ * How a world's robot ports treat their clients: how long a client may take for the handshake and
+ * stay silent, which commands are ignored, and where client map loads may come from. The defaults
+ * are safe when the ports are reachable from other machines; see "Hostile clients and safe
+ * defaults" in docs/simulator.md.
+ *
+ * @param handshakeTimeoutMillis a network client that has not sent OPEN this long after connecting
+ *     (or after a CLOSE) is disconnected, ms (default 5000)
+ * @param clientTimeoutMillis a network client of an open robot that sends no packet for this long
+ *     is disconnected and the robot freed, ms (default 10000; 0 never). The watchdog stops the
+ *     robot long before.
+ * @param ignoredCommands command numbers every robot ignores (MobileSim's {@code --ignore-command})
+ * @param mapFolder the folder client map loads (SIM_CTRL 1 and 2) are confined to; {@code null}
+ *     means the working directory, for clients on this machine only
+ * @param maxMapBytes the largest map file a client may load (default 64 MiB)
+ * @param remoteExit whether SIM_EXIT from a client on another machine ends the simulator (default
+ *     false: only clients on the loopback may end it)
+ * @param refusalLogMillis at most one log line per robot this often about refused connections, ms
+ *     (default 10000); the rest are counted
+ */
+public record ServerOptions(
+    int handshakeTimeoutMillis,
+    int clientTimeoutMillis,
+    Set<Integer> ignoredCommands,
+    Path mapFolder,
+    long maxMapBytes,
+    boolean remoteExit,
+    int refusalLogMillis) {
+
+  /** The defaults. */
+  public static final ServerOptions DEFAULTS =
+      new ServerOptions(5000, 10_000, Set.of(), null, 64L << 20, false, 10_000);
+
+  /** Checks the values. */
+  public ServerOptions {
+    if (handshakeTimeoutMillis < 1) {
+      throw new IllegalArgumentException(
+          "the handshake timeout must be at least 1 ms, was " + handshakeTimeoutMillis);
+    }
+    if (clientTimeoutMillis < 0) {
+      throw new IllegalArgumentException(
+          "the client timeout must be 0 (never) or more ms, was " + clientTimeoutMillis);
+    }
+    for (int c : ignoredCommands) {
+      if (c < 0 || c > 255) {
+        throw new IllegalArgumentException("command numbers are 0..255, got " + c);
+      }
+    }
+    ignoredCommands = Set.copyOf(ignoredCommands);
+    if (maxMapBytes < 1) {
+      throw new IllegalArgumentException("the map size limit must be positive, was " + maxMapBytes);
+    }
+    if (refusalLogMillis < 0) {
+      throw new IllegalArgumentException(
+          "the refusal log interval must be 0 or more ms, was " + refusalLogMillis);
+    }
+  }
+
+  /** These options with other timeouts, ms. */
+  public ServerOptions withTimeouts(int handshakeMillis, int clientMillis) {
+    return new ServerOptions(
+        handshakeMillis,
+        clientMillis,
+        ignoredCommands,
+        mapFolder,
+        maxMapBytes,
+        remoteExit,
+        refusalLogMillis);
+  }
+
+  /** These options ignoring {@code commands} (numbers 0..255). */
+  public ServerOptions withIgnoredCommands(Set<Integer> commands) {
+    return new ServerOptions(
+        handshakeTimeoutMillis,
+        clientTimeoutMillis,
+        commands,
+        mapFolder,
+        maxMapBytes,
+        remoteExit,
+        refusalLogMillis);
+  }
+
+  /**
+   * These options with client map loads confined to {@code folder} (for clients anywhere), files of
+   * at most {@code maxBytes}.
+   */
+  public ServerOptions withMapFolder(Path folder, long maxBytes) {
+    return new ServerOptions(
+        handshakeTimeoutMillis,
+        clientTimeoutMillis,
+        ignoredCommands,
+        folder,
+        maxBytes,
+        remoteExit,
+        refusalLogMillis);
+  }
+
+  /** These options letting clients on other machines end the simulator with SIM_EXIT. */
+  public ServerOptions withRemoteExit(boolean allowed) {
+    return new ServerOptions(
+        handshakeTimeoutMillis,
+        clientTimeoutMillis,
+        ignoredCommands,
+        mapFolder,
+        maxMapBytes,
+        allowed,
+        refusalLogMillis);
+  }
+}
