@@ -39,7 +39,10 @@ public final class ArServerInfoSensor {
           for (ArRangeDevice d : robot.getRangeDeviceList()) {
             names.add(d.getName());
           }
-          reply.valueToBuf(names);
+          reply.byte2ToBuf(names.size());
+          for (String s : names) {
+            reply.strToBuf(s);
+          }
         });
     server.addPublishedData(
         "getSensorCurrent",
