@@ -24,10 +24,10 @@ import java.util.Locale;
  * {@code -INF}). Nothing carries its type: both sides must agree on the order of the values, which
  * the data's argument and return descriptions state.
  *
- * <p>Reading is strict where ARIA is lenient: a read past the end, a string without its ending
- * zero or a number that is not a number throws {@link ArNetPacketException} instead of returning
- * zero, so a handler never acts on garbage. A packet is not thread-safe; it belongs to the code
- * that received or built it. See {@code aria-net/PROTOCOL.md}.
+ * <p>Reading is strict where ARIA is lenient: a read past the end, a string without its ending zero
+ * or a number that is not a number throws {@link ArNetPacketException} instead of returning zero,
+ * so a handler never acts on garbage. A packet is not thread-safe; it belongs to the code that
+ * received or built it. See {@code aria-net/PROTOCOL.md}.
  */
 public final class ArNetPacket {
 
@@ -79,7 +79,9 @@ public final class ArNetPacket {
     return wrap(0, body, 0, body.length);
   }
 
-  /** A packet of {@code command} that reads {@code len} body bytes of {@code a} from {@code off}. */
+  /**
+   * A packet of {@code command} that reads {@code len} body bytes of {@code a} from {@code off}.
+   */
   public static ArNetPacket wrap(int command, byte[] a, int off, int len) {
     if (off < 0 || len < 0 || off + len > a.length) {
       throw new IndexOutOfBoundsException(
@@ -338,7 +340,13 @@ public final class ArNetPacket {
     long n = bufToUByte4();
     if (n > getRemaining()) {
       throw new ArNetPacketException(
-          "packet " + command + " announces " + n + " elements but has " + getRemaining() + " bytes");
+          "packet "
+              + command
+              + " announces "
+              + n
+              + " elements but has "
+              + getRemaining()
+              + " bytes");
     }
     return (int) n;
   }

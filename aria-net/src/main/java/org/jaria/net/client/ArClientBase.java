@@ -4,7 +4,6 @@ import java.io.BufferedInputStream;
 import java.io.DataInputStream;
 import java.io.EOFException;
 import java.io.IOException;
-import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.InetSocketAddress;
 import java.net.Socket;
@@ -132,12 +131,24 @@ public final class ArClientBase implements AutoCloseable {
       t.start();
     } catch (SocketTimeoutException e) {
       closeQuietly(s);
-      throw fail("no login answer from " + host + ":" + port + " within "
-          + options.connectTimeout().toMillis() + " ms: is it an ArNetworking server?");
+      throw fail(
+          "no login answer from "
+              + host
+              + ":"
+              + port
+              + " within "
+              + options.connectTimeout().toMillis()
+              + " ms: is it an ArNetworking server?");
     } catch (IOException e) {
       closeQuietly(s);
-      throw fail("cannot connect to " + host + ":" + port + " (" + e.getMessage()
-          + "): is the server running there?");
+      throw fail(
+          "cannot connect to "
+              + host
+              + ":"
+              + port
+              + " ("
+              + e.getMessage()
+              + "): is the server running there?");
     } catch (ArNetPacketException e) {
       closeQuietly(s);
       throw fail(host + ":" + port + " sent something that is not ArNetworking: " + e.getMessage());
@@ -206,8 +217,8 @@ public final class ArClientBase implements AutoCloseable {
     String why =
         switch (reason) {
           case Protocol.REJECTED_BAD_LOGIN -> "login refused: wrong user name or password";
-          case Protocol.REJECTED_CENTRAL_SERVER -> "the robot is served by a central server at "
-              + text;
+          case Protocol.REJECTED_CENTRAL_SERVER ->
+              "the robot is served by a central server at " + text;
           case Protocol.REJECTED_SERVER_PROTOCOL -> "the server wants another protocol version";
           case Protocol.REJECTED_TOO_MANY_CLIENTS -> "the server has its maximum of clients";
           case Protocol.REJECTED_WRONG_TYPE -> "the server wants another type of client";
@@ -538,8 +549,8 @@ public final class ArClientBase implements AutoCloseable {
   }
 
   /**
-   * Asks for data {@code name} every {@code intervalMs} milliseconds (-1: whenever it changes or
-   * is broadcast), as ArNetworking's {@code request}; the packets go to the handlers. Remembered and
+   * Asks for data {@code name} every {@code intervalMs} milliseconds (-1: whenever it changes or is
+   * broadcast), as ArNetworking's {@code request}; the packets go to the handlers. Remembered and
    * sent again after a reconnect. ArNetworking does not acknowledge a request: the future completes
    * as soon as it is sent.
    */

@@ -23,12 +23,7 @@ public record DataInfo(
 
   /** Whether the flags contain {@code flag}. */
   public boolean hasDataFlag(String flag) {
-    for (String f : dataFlags.split("\\|")) {
-      if (f.equals(flag)) {
-        return true;
-      }
-    }
-    return false;
+    return ("|" + dataFlags + "|").contains("|" + flag + "|");
   }
 
   /**
@@ -55,6 +50,7 @@ public record DataInfo(
 
   /** A copy with another command group and flags. */
   public DataInfo withGroupAndFlags(String group, String flags) {
-    return new DataInfo(id, name, description, argumentDescription, returnDescription, group, flags);
+    return new DataInfo(
+        id, name, description, argumentDescription, returnDescription, group, flags);
   }
 }

@@ -45,8 +45,8 @@ public record PhysicalInfo(
   }
 
   /**
-   * Reads ArNetworking's "physicalInfo" layout. What it does not carry gets neutral values: name
-   * = type, radius = half the width, no sonar count (0) and no speed limits (0).
+   * Reads ArNetworking's "physicalInfo" layout. What it does not carry gets neutral values: name =
+   * type, radius = half the width, no sonar count (0) and no speed limits (0).
    */
   public static PhysicalInfo read(ArNetPacket in) {
     String type = in.bufToStr();

@@ -45,8 +45,6 @@ public record RobotUpdate(
     long counter)
     implements NetEncodable {
 
-  private static final int FIELDS = 16;
-
   /** The pose. */
   public ArPose getPose() {
     return new ArPose(x, y, th);

@@ -8,9 +8,9 @@ import java.security.SecureRandom;
 /**
  * ArNetworking's login proof: the client sends MD5(server key + password key + password), where the
  * server key is a secret both sides were configured with (often empty) and the password key is a
- * random text the server makes for each connection. The password itself never crosses the wire,
- * but MD5 over a plain connection is weak: anyone who sees the exchange can try passwords offline.
- * See {@code aria-net/PROTOCOL.md} §4.
+ * random text the server makes for each connection. The password itself never crosses the wire, but
+ * MD5 over a plain connection is weak: anyone who sees the exchange can try passwords offline. See
+ * {@code aria-net/PROTOCOL.md} §4.
  */
 public final class LoginDigest {
 
@@ -38,8 +38,8 @@ public final class LoginDigest {
   }
 
   /**
-   * A fresh password key: like ARIA's, 0 to 99 characters between '0' and 'z'; unlike ARIA's, from a
-   * cryptographic random source and at least 16 characters long.
+   * A fresh password key: like ARIA's, 0 to 99 characters between '0' and 'z'; unlike ARIA's, from
+   * a cryptographic random source and at least 16 characters long.
    */
   public static String newPasswordKey(SecureRandom random) {
     int n = 16 + random.nextInt(84);

@@ -1,7 +1,6 @@
 package org.jaria.net.server;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
 import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.List;
@@ -614,9 +613,9 @@ public class ArServerBase implements AutoCloseable {
   }
 
   /**
-   * Runs a request of {@code e} where its data says (cycle or worker). {@code r} is the
-   * interval request it runs for, or null for a request once. The caller has counted it in the
-   * client's pending calls.
+   * Runs a request of {@code e} where its data says (cycle or worker). {@code r} is the interval
+   * request it runs for, or null for a request once. The caller has counted it in the client's
+   * pending calls.
    */
   void execute(ArServerClient c, DataEntry e, byte[] args, ArServerClient.Request r) {
     Runnable task = () -> runCall(c, e, args, r);

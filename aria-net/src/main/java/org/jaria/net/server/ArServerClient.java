@@ -15,8 +15,8 @@ import org.jaria.net.protocol.PacketSplitter;
 
 /**
  * One connected client, as the server sees it (ArNetworking's {@code ArServerClient}): who it is,
- * what it requested and how much is waiting to be sent to it. Handlers receive it with each request,
- * for example to check {@link #hasGroupAccess}. Getters may be called from any thread.
+ * what it requested and how much is waiting to be sent to it. Handlers receive it with each
+ * request, for example to check {@link #hasGroupAccess}. Getters may be called from any thread.
  */
 public final class ArServerClient {
 
@@ -30,8 +30,8 @@ public final class ArServerClient {
   }
 
   /**
-   * A request (ArNetworking's REQUEST): which data, how often (negative: only when it changes or
-   * is broadcast), its arguments, and what the client has been sent.
+   * A request (ArNetworking's REQUEST): which data, how often (negative: only when it changes or is
+   * broadcast), its arguments, and what the client has been sent.
    */
   static final class Request {
     final DataEntry entry;
@@ -208,8 +208,7 @@ public final class ArServerClient {
   }
 
   /**
-   * The client's requests: data name → interval (negative: only when it changes or is
-   * broadcast).
+   * The client's requests: data name → interval (negative: only when it changes or is broadcast).
    */
   public Map<String, Duration> getSubscriptions() {
     Map<String, Duration> m = new LinkedHashMap<>();

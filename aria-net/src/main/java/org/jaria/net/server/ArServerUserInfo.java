@@ -14,8 +14,8 @@ import java.util.Set;
 import java.util.TreeMap;
 
 /**
- * ArNetworking's user file ({@code ArServerUserInfo}), the format ARIA's {@code serverDemo.userInfo}
- * uses:
+ * ArNetworking's user file ({@code ArServerUserInfo}), the format ARIA's {@code
+ * serverDemo.userInfo} uses:
  *
  * <pre>
  * UserInfoVersion1
@@ -63,8 +63,7 @@ public final class ArServerUserInfo implements Authenticator {
     } catch (UnsupportedOperationException e) {
       return; // Not a POSIX file system: nothing to check.
     }
-    if (p.contains(PosixFilePermission.GROUP_READ)
-        || p.contains(PosixFilePermission.OTHERS_READ)) {
+    if (p.contains(PosixFilePermission.GROUP_READ) || p.contains(PosixFilePermission.OTHERS_READ)) {
       throw new IOException(
           file
               + " holds passwords but other users may read it; run 'chmod 600 "
@@ -100,8 +99,7 @@ public final class ArServerUserInfo implements Authenticator {
         continue;
       }
       if (w.length < 3 || !w[0].equalsIgnoreCase("user")) {
-        throw new IllegalArgumentException(
-            where + "expected 'user <name> <password> [groups...]'");
+        throw new IllegalArgumentException(where + "expected 'user <name> <password> [groups...]'");
       }
       if (!alnum(w[1]) || !alnum(w[2])) {
         throw new IllegalArgumentException(

@@ -5,8 +5,8 @@ import java.util.Set;
 
 /**
  * Who may log in: finds a user's {@link Credentials}. {@link #open()} lets anybody in (the server
- * then ignores the login digest, as an ArNetworking server without a user file does);
- * {@link ArServerUserInfo} reads ArNetworking's user file.
+ * then ignores the login digest, as an ArNetworking server without a user file does); {@link
+ * ArServerUserInfo} reads ArNetworking's user file.
  */
 public interface Authenticator {
 

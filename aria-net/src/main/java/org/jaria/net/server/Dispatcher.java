@@ -17,9 +17,9 @@ import org.slf4j.LoggerFactory;
 /**
  * Understands the packets a client sends, on the I/O thread: the introduction and login, then
  * requests (once, at an interval, stop) and the fixed commands. Decoding is strict — a login packet
- * that is not what ArNetworking sends closes that client — while a request for something missing
- * or not allowed is only logged and counted, as ArNetworking does. Requests are handed to workers
- * or to the robot's cycle; nothing slow happens here.
+ * that is not what ArNetworking sends closes that client — while a request for something missing or
+ * not allowed is only logged and counted, as ArNetworking does. Requests are handed to workers or
+ * to the robot's cycle; nothing slow happens here.
  */
 final class Dispatcher {
 
@@ -112,7 +112,8 @@ final class Dispatcher {
     byte[] digest = p.bufToData(LoginDigest.DIGEST_BYTES);
     String protocolVersion = p.bufToStr();
     // The client's type byte (real/simulated) follows; JAria enforces no type.
-    if (!options.protocolVersion().isEmpty() && !options.protocolVersion().equals(protocolVersion)) {
+    if (!options.protocolVersion().isEmpty()
+        && !options.protocolVersion().equals(protocolVersion)) {
       reject(
           c,
           Protocol.REJECTED_SERVER_PROTOCOL,

@@ -3,9 +3,11 @@ package org.jaria.net.server;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.net.SocketAddress;
 import java.net.StandardSocketOptions;
 import java.nio.ByteBuffer;
 import java.nio.channels.ClosedSelectorException;
+import java.nio.channels.DatagramChannel;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.nio.channels.ServerSocketChannel;
@@ -14,8 +16,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.TimeUnit;
-import java.net.SocketAddress;
-import java.nio.channels.DatagramChannel;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.ArNetPacketException;
 import org.jaria.net.protocol.LoginDigest;
@@ -277,7 +277,7 @@ final class IoLoop implements Runnable {
               options.maxQueuedBytes(),
               LoginDigest.newPasswordKey(server.random),
               authKey,
-              server.random.nextInt());
+              server.random.nextInt() & 0x7FFFFFFF);
       long now = options.timeoutClock().nanoTime();
       c.connectedNanos = now;
       c.lastHeardNanos = now;

@@ -10,10 +10,11 @@ import org.slf4j.LoggerFactory;
 
 /**
  * The thread that serves requests at an interval (ArNetworking's REQUEST): every few milliseconds
- * it looks for requests that are due, takes each published value once (encoded once per version, shared by every client), and
- * queues an update for every due subscription whose client has not seen that version. Queuing
- * coalesces, so a client that reads slowly simply gets fewer, newer updates. Subscription rates are
- * timed by the real clock: the network is real even when the robot runs on virtual time.
+ * it looks for requests that are due, takes each published value once (encoded once per version,
+ * shared by every client), and queues an update for every due subscription whose client has not
+ * seen that version. Queuing coalesces, so a client that reads slowly simply gets fewer, newer
+ * updates. Subscription rates are timed by the real clock: the network is real even when the robot
+ * runs on virtual time.
  */
 final class Publisher implements Runnable {
 

@@ -83,7 +83,8 @@ public record ServerOptions(
       throw new IllegalArgumentException("maxQueuedBytes must be at least 4096");
     }
     if (serverKey == null || protocolVersion == null) {
-      throw new IllegalArgumentException("server key and protocol version must be set (\"\" for none)");
+      throw new IllegalArgumentException(
+          "server key and protocol version must be set (\"\" for none)");
     }
     positive(maxPendingLogins, "maxPendingLogins");
     positive(maxLoginFailures, "maxLoginFailures");
@@ -260,8 +261,8 @@ public record ServerOptions(
     }
 
     /**
-     * Failed logins from one address within {@link #loginFailureWindow} after which its logins
-     * are refused unchecked until the window has passed.
+     * Failed logins from one address within {@link #loginFailureWindow} after which its logins are
+     * refused unchecked until the window has passed.
      */
     public Builder maxLoginFailures(int v) {
       maxLoginFailures = v;
@@ -274,7 +275,9 @@ public record ServerOptions(
       return this;
     }
 
-    /** Whether to open ArNetworking's UDP port (same number as TCP); data is sent over TCP anyway. */
+    /**
+     * Whether to open ArNetworking's UDP port (same number as TCP); data is sent over TCP anyway.
+     */
     public Builder udp(boolean v) {
       udp = v;
       return this;

@@ -99,6 +99,25 @@ final class GuiRig implements AutoCloseable {
     }
   }
 
+  /** Reads a ubyte4 count and that many strings (JAria's list layout). */
+  static java.util.List<String> strings(ArNetPacket p) {
+    int n = p.bufToArray();
+    java.util.List<String> l = new java.util.ArrayList<>();
+    for (int i = 0; i < n; i++) {
+      l.add(p.bufToStr());
+    }
+    return l;
+  }
+
+  /** Reads strings to the end of the packet (ArNetworking's layout of getGoals). */
+  static java.util.List<String> stringsToEnd(ArNetPacket p) {
+    java.util.List<String> l = new java.util.ArrayList<>();
+    while (p.hasMore()) {
+      l.add(p.bufToStr());
+    }
+    return l;
+  }
+
   /** Sends a request and waits for its reply (see {@link #await}). */
   ArNetPacket call(String name, Object... args) throws Exception {
     return await(client.requestOnce(name, args));

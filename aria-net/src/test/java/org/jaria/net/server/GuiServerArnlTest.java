@@ -116,16 +116,14 @@ class GuiServerArnlTest {
       List<ConfigSection> sections = ConfigSection.readAll(rig.call("getConfigBySections"));
       List<String> names = sections.stream().map(ConfigSection::name).toList();
       assertTrue(names.contains("Localization"), names.toString());
-      assertTrue(
-          rig.call("setConfig", List.of(List.of("Localization", "NumSamples", "500")))
-              .bufToValue()
-              .equals(List.of()));
+      assertEquals(
+          List.of(),
+          GuiRig.strings(
+              rig.call("setConfig", List.of(List.of("Localization", "NumSamples", "500")))));
       assertEquals(500, rig.nav.getLocalizationTask().getParams().getNumSamples());
-      @SuppressWarnings("unchecked")
       List<String> refused =
-          (List<String>)
-              rig.call("setConfig", List.of(List.of("Localization", "NumSamples", "5")))
-                  .bufToValue();
+          GuiRig.strings(
+              rig.call("setConfig", List.of(List.of("Localization", "NumSamples", "5"))));
       assertEquals(1, refused.size());
       assertTrue(refused.get(0).contains("NumSamples"), refused.get(0));
     }

@@ -85,8 +85,7 @@ class GuiServerModesTest {
       assertTrue(
           rig.runUntil(() -> status(rig).startsWith("Arrived"), 30_000), "arrived: " + status(rig));
       assertTrue(rig.sim.sim().getTruePose().findDistanceTo(new ArPose(4000, 9500)) < 300);
-      @SuppressWarnings("unchecked")
-      List<String> goals = (List<String>) rig.call("getGoals").bufToValue();
+      List<String> goals = GuiRig.stringsToEnd(rig.call("getGoals"));
       assertTrue(goals.contains("Corridor West"), goals.toString());
       rig.call("gotoGoal", "corridor west");
       assertEquals("Going to goal corridor west", status(rig));

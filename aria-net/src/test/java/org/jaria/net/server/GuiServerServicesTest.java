@@ -73,7 +73,9 @@ class GuiServerServicesTest {
   void rangeReadingsCurrentAndCumulative() throws Exception {
     try (GuiRig rig = GuiRig.plain(b -> b)) {
       AtomicReference<SensorReadings> s = watch(rig, "getSensorCurrent", SensorReadings::read);
-      assertEquals(List.of("sonar"), rig.call("getSensorList").bufToValue());
+      ArNetPacket sensors = rig.call("getSensorList");
+      assertEquals(1, sensors.bufToByte2());
+      assertEquals("sonar", sensors.bufToStr());
       rig.run(1500);
       long counter = rig.robot.getCounter();
       Eventually.until(
@@ -171,7 +173,7 @@ class GuiServerServicesTest {
       ConfigParam p = sections.get(0).params().get(0);
       assertEquals(new ConfigParam("MaxSpeed", "DOUBLE", "500", "500", "0.0", "2000.0", "mm/s"), p);
       ArNetPacket ok = rig.call("setConfig", List.of(List.of("Teleop", "MaxSpeed", "750")));
-      assertEquals(List.of(), ok.bufToValue());
+      assertEquals(List.of(), GuiRig.strings(ok));
       assertEquals(750, speed.getDouble());
       ArNetPacket refused =
           rig.call(
@@ -180,8 +182,7 @@ class GuiServerServicesTest {
                   List.of("Teleop", "MaxSpeed", "5000"),
                   List.of("Teleop", "Name", "r2"),
                   List.of("Nope", "X", "1")));
-      @SuppressWarnings("unchecked")
-      List<String> errors = (List<String>) refused.bufToValue();
+      List<String> errors = GuiRig.strings(refused);
       assertEquals(2, errors.size(), errors.toString());
       assertTrue(errors.get(0).contains("MaxSpeed"), errors.get(0));
       assertEquals("no configuration section 'Nope'", errors.get(1));

@@ -1,7 +1,6 @@
 package org.jaria.net.server.info;
 
 import org.jaria.net.ArNetPacket;
-
 import org.jaria.net.data.PhysicalInfo;
 import org.jaria.net.data.RobotUpdate;
 import org.jaria.net.server.ArServerBase;
