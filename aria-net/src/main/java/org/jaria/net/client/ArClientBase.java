@@ -26,7 +26,9 @@ import org.jaria.net.ArNetPacket;
 import org.jaria.net.ArNetPacketException;
 import org.jaria.net.data.DataInfo;
 import org.jaria.net.protocol.LoginDigest;
+import org.jaria.net.protocol.NetError;
 import org.jaria.net.protocol.Protocol;
+import org.jaria.net.server.ArServerBase;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -61,6 +63,7 @@ public final class ArClientBase implements AutoCloseable {
   private final ClientOptions options;
   private final Map<String, List<Consumer<ArNetPacket>>> handlers = new ConcurrentHashMap<>();
   private final Map<String, Long> requests = new ConcurrentHashMap<>();
+  private final Map<String, byte[]> requestArgs = new ConcurrentHashMap<>();
   private final List<ConnectionListener> listeners = new CopyOnWriteArrayList<>();
   private final AtomicLong updates = new AtomicLong();
   private final AtomicLong handlerFailures = new AtomicLong();
@@ -70,6 +73,10 @@ public final class ArClientBase implements AutoCloseable {
   private final Map<Integer, DataInfo> byCommand = new LinkedHashMap<>();
   private final Map<String, DataInfo> byName = new LinkedHashMap<>();
   private final Map<Integer, Deque<CompletableFuture<ArNetPacket>>> waiting = new LinkedHashMap<>();
+  private final Map<Integer, java.io.ByteArrayOutputStream> partial = new LinkedHashMap<>();
+
+  /** Largest reply of several packets gathered for a {@link #requestOnce}. */
+  private static final int MAX_GATHERED = 64 << 20;
 
   private volatile Socket socket;
   private volatile OutputStream out;
@@ -155,7 +162,7 @@ public final class ArClientBase implements AutoCloseable {
     }
     for (Map.Entry<String, Long> r : requests.entrySet()) {
       if (byName.containsKey(r.getKey())) {
-        sendRequest(r.getKey(), r.getValue(), null);
+        sendRequest(r.getKey(), r.getValue(), requestArgs.get(r.getKey()));
       }
     }
     log.info("connected to {} as '{}' ({} data)", serverName, user, byName.size());
@@ -185,7 +192,7 @@ public final class ArClientBase implements AutoCloseable {
         .uByte2ToBuf(0)
         .strToBuf(user)
         .dataToBuf(LoginDigest.digest(options.serverKey(), passwordKey, password))
-        .strToBuf("")
+        .strToBuf(Protocol.JARIA_ACK_VERSION)
         .byteToBuf(0);
     o.write(reply.toWire());
     o.write(new ArNetPacket(Protocol.CLIENT_TCP_ONLY).toWire());
@@ -314,6 +321,7 @@ public final class ArClientBase implements AutoCloseable {
     }
     DataInfo d;
     CompletableFuture<ArNetPacket> f = null;
+    ArNetPacket gathered = null;
     synchronized (this) {
       d = byCommand.get(cmd);
       if (d != null && d.name().equals("requestFailed")) {
@@ -321,13 +329,34 @@ public final class ArClientBase implements AutoCloseable {
         return true;
       }
       Deque<CompletableFuture<ArNetPacket>> q = waiting.get(cmd);
-      if (q != null) {
-        f = q.poll();
+      if (q != null && !q.isEmpty()) {
+        if (d != null && d.hasDataFlag("RETURN_UNTIL_EMPTY")) {
+          // A reply of several packets, ended by an empty one: gathered into one reader.
+          java.io.ByteArrayOutputStream b =
+              partial.computeIfAbsent(cmd, k -> new java.io.ByteArrayOutputStream());
+          if (p.getDataLength() > 0) {
+            if (b.size() + p.getDataLength() > MAX_GATHERED) {
+              partial.remove(cmd);
+              q.poll()
+                  .completeExceptionally(
+                      new ArClientException("the reply of " + d.name() + " is over 64 MiB"));
+            } else {
+              b.writeBytes(p.toByteArray());
+            }
+          } else {
+            partial.remove(cmd);
+            byte[] all = b.toByteArray();
+            f = q.poll();
+            gathered = ArNetPacket.wrap(cmd, all, 0, all.length);
+          }
+        } else {
+          f = q.poll();
+        }
       }
     }
     updates.incrementAndGet();
     if (f != null) {
-      f.complete(p.toReader());
+      f.complete(gathered != null ? gathered : p.toReader());
     }
     if (d != null) {
       for (Consumer<ArNetPacket> h : handlers.getOrDefault(d.name(), List.of())) {
@@ -345,12 +374,13 @@ public final class ArClientBase implements AutoCloseable {
   private void failRequest(ArNetPacket p) {
     String name = p.bufToStr();
     String why = p.bufToStr();
+    NetError code = p.hasMore() ? NetError.fromCode(p.bufToByte2()) : null;
     DataInfo d = byName.get(name);
     if (d != null) {
       Deque<CompletableFuture<ArNetPacket>> q = waiting.get(d.id());
       CompletableFuture<ArNetPacket> f = q == null ? null : q.poll();
       if (f != null) {
-        f.completeExceptionally(new ArClientException(why));
+        f.completeExceptionally(new ArClientException(code, why));
         return;
       }
     }
@@ -367,6 +397,7 @@ public final class ArClientBase implements AutoCloseable {
         pending.addAll(q);
       }
       waiting.clear();
+      partial.clear();
     }
     closeQuietly(socket);
     for (CompletableFuture<ArNetPacket> f : pending) {
@@ -517,7 +548,8 @@ public final class ArClientBase implements AutoCloseable {
       ArNetPacket send = new ArNetPacket(d.id());
       byte[] body = p.toByteArray();
       send.dataToBuf(body);
-      boolean none = d.returnsNothing();
+      // A JAria server (it lists requestFailed) acknowledges commands that return nothing.
+      boolean none = d.returnsNothing() && !dataExists(ArServerBase.REQUEST_FAILED);
       if (!none) {
         synchronized (this) {
           waiting.computeIfAbsent(d.id(), k -> new ArrayDeque<>()).add(f);
@@ -555,22 +587,34 @@ public final class ArClientBase implements AutoCloseable {
    * as soon as it is sent.
    */
   public CompletableFuture<Duration> request(String name, long intervalMs) {
+    return request(name, intervalMs, null);
+  }
+
+  /**
+   * As {@link #request(String, long)} with arguments (for example the sensor name of
+   * getSensorCurrent). A new request of the same data replaces the old one, as in ArNetworking.
+   */
+  public CompletableFuture<Duration> request(String name, long intervalMs, ArNetPacket args) {
     requests.put(name, intervalMs);
+    if (args == null) {
+      requestArgs.remove(name);
+    } else {
+      requestArgs.put(name, args.toByteArray());
+    }
     try {
-      sendRequest(name, intervalMs, null);
+      sendRequest(name, intervalMs, args == null ? null : args.toByteArray());
       return CompletableFuture.completedFuture(Duration.ofMillis(intervalMs));
     } catch (ArClientException e) {
       return CompletableFuture.failedFuture(e);
     }
   }
 
-  private void sendRequest(String name, long intervalMs, ArNetPacket args)
-      throws ArClientException {
+  private void sendRequest(String name, long intervalMs, byte[] args) throws ArClientException {
     DataInfo d = need(name);
     ArNetPacket p = new ArNetPacket(Protocol.CLIENT_REQUEST);
     p.uByte2ToBuf(d.id()).byte4ToBuf((int) Math.max(-1, Math.min(Integer.MAX_VALUE, intervalMs)));
     if (args != null) {
-      p.dataToBuf(args.toByteArray());
+      p.dataToBuf(args);
     }
     send(p);
   }
@@ -578,6 +622,7 @@ public final class ArClientBase implements AutoCloseable {
   /** Stops a request made with {@link #request} (ArNetworking's {@code requestStop}). */
   public void requestStop(String name) {
     requests.remove(name);
+    requestArgs.remove(name);
     try {
       DataInfo d = need(name);
       ArNetPacket p = new ArNetPacket(Protocol.CLIENT_REQUEST_STOP);

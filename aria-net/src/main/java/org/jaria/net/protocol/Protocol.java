@@ -14,6 +14,13 @@ public final class Protocol {
   /** The version text a server sends in its introduction (ARIA sends "alpha"). */
   public static final String SERVER_VERSION = "alpha";
 
+  /**
+   * The protocol version a JAria client announces: it asks a JAria server to answer commands that
+   * return nothing with an empty packet, so the client learns they were carried out (an ARIA server
+   * ignores the text unless it enforces a version).
+   */
+  public static final String JARIA_ACK_VERSION = "JAria-ack";
+
   /** The first number of the data list: lower numbers are the fixed commands below. */
   public static final int FIRST_DATA_COMMAND = 256;
 

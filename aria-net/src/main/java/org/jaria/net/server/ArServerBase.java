@@ -110,7 +110,7 @@ public class ArServerBase implements AutoCloseable {
         "JAria: sent to a client whose request could not be carried out (bad arguments, busy,"
             + " failed); ArNetworking clients that do not know it ignore it",
         "none",
-        "string: data name; string: why",
+        "string: data name; string: why; byte2: JAria's error code",
         "",
         "RETURN_SINGLE",
         Where.WORKER,
@@ -552,7 +552,7 @@ public class ArServerBase implements AutoCloseable {
     stats.requestErrors.increment();
     log.debug("{}: {} failed ({}): {}", c, e.name(), code, message);
     ArNetPacket p = new ArNetPacket(Protocol.FIRST_DATA_COMMAND);
-    p.strToBuf(e.name()).strToBuf(message);
+    p.strToBuf(e.name()).strToBuf(message).byte2ToBuf(code.code());
     sendPacket(c, p);
   }
 
@@ -656,7 +656,7 @@ public class ArServerBase implements AutoCloseable {
       }
       ArNetPacket reply = new ArNetPacket(e.id());
       e.handler.handle(c, ArNetPacket.wrap(e.id(), args, 0, args.length), reply);
-      if (reply.getDataLength() > 0 || !e.info.returnsNothing()) {
+      if (reply.getDataLength() > 0 || !e.info.returnsNothing() || (c.wantsAcks && r == null)) {
         reply.setCommand(e.id());
         sendPacket(c, reply);
       }

@@ -11,6 +11,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
+import org.jaria.net.ArNetPacket;
 import org.jaria.net.protocol.PacketSplitter;
 
 /**
@@ -54,6 +55,7 @@ public final class ArServerClient {
     }
   }
 
+  private final ArServerBase server;
   private final int id;
   private final String ip;
   final SocketChannel channel;
@@ -82,12 +84,16 @@ public final class ArServerClient {
   volatile InetSocketAddress udpAddress;
   volatile boolean tcpOnly = true;
 
+  /** The client wants an empty packet for commands that return nothing (a JAria client). */
+  volatile boolean wantsAcks;
+
   private volatile State state = State.SENT_INTRO;
   private volatile String user = "";
   private volatile Credentials credentials;
   private volatile String closeReason;
 
   ArServerClient(
+      ArServerBase server,
       int id,
       SocketChannel channel,
       String ip,
@@ -95,6 +101,7 @@ public final class ArServerClient {
       String passwordKey,
       long authKey,
       int introKey) {
+    this.server = server;
     this.id = id;
     this.channel = channel;
     this.ip = ip;
@@ -134,6 +141,20 @@ public final class ArServerClient {
 
   void countReceived(long n) {
     bytesReceived.addAndGet(n);
+  }
+
+  /**
+   * Sends {@code packet} to this client (ArNetworking's {@code sendPacketTcp}): for handlers that
+   * answer with several packets, such as {@code getMap}. Set the packet's command to the data's
+   * number ({@link ArServerBase#findCommandFromName}).
+   *
+   * @throws IllegalArgumentException if the packet has no command
+   */
+  public void sendPacketTcp(ArNetPacket packet) {
+    if (packet.getCommand() == 0) {
+      throw new IllegalArgumentException("set the packet's command before sending it");
+    }
+    server.sendPacket(this, packet);
   }
 
   /** The server's number for this client (1, 2, ... in connection order). */

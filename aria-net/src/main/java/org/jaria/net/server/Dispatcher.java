@@ -113,7 +113,8 @@ final class Dispatcher {
     String protocolVersion = p.bufToStr();
     // The client's type byte (real/simulated) follows; JAria enforces no type.
     if (!options.protocolVersion().isEmpty()
-        && !options.protocolVersion().equals(protocolVersion)) {
+        && !options.protocolVersion().equals(protocolVersion)
+        && !Protocol.JARIA_ACK_VERSION.equals(protocolVersion)) {
       reject(
           c,
           Protocol.REJECTED_SERVER_PROTOCOL,
@@ -157,6 +158,7 @@ final class Dispatcher {
       }
       creds = found.get();
     }
+    c.wantsAcks = Protocol.JARIA_ACK_VERSION.equals(protocolVersion);
     c.loggedIn(creds);
     c.tcpOnly = clientUdpPort == 0 || server.udpPort() == 0 || c.tcpOnly;
     server.sendPacket(c, new ArNetPacket(Protocol.SERVER_CONNECTED));

@@ -271,6 +271,7 @@ final class IoLoop implements Runnable {
       } while (authKey == 0 || hasAuthKey(authKey));
       ArServerClient c =
           new ArServerClient(
+              server,
               nextId++,
               ch,
               ip,

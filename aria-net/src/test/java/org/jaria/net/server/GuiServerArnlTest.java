@@ -85,7 +85,7 @@ class GuiServerArnlTest {
   @Test
   void stopCancelsTheGoal() throws Exception {
     try (GuiRig rig = GuiRig.arnl()) {
-      rig.call("gotoPose", 27000.0, 9500.0);
+      rig.call("gotoPose", 27000, 9500);
       rig.run(3000);
       assertTrue(Math.abs(rig.robot.getVel()) > 50, "on its way");
       rig.call("stop");

@@ -79,7 +79,14 @@ class GuiServerModesTest {
   @Test
   void gotoPoseAndGoalInAStraightLine() throws Exception {
     try (GuiRig rig = GuiRig.plain(b -> b)) {
-      rig.call("gotoPose", 4000.0, 9500.0);
+      rig.call("gotoPose", 4000, 9500); // ArNetworking's layout: byte4 x, byte4 y
+      ArClientException nan =
+          assertThrows(
+              ArClientException.class, () -> rig.call("ratioDrive", Double.NaN, 0.0, 50.0));
+      assertEquals(NetError.BAD_ARGUMENTS, nan.getCode());
+      ArClientException off =
+          assertThrows(ArClientException.class, () -> rig.call("gotoPose", 900_000, 9500));
+      assertTrue(off.getMessage().contains("outside the map"), off.getMessage());
       assertEquals("Goto", mode(rig));
       assertEquals("Going to pose (4000, 9500)", status(rig));
       assertTrue(
