@@ -118,6 +118,8 @@ class GuiServerServicesTest {
           new java.util.concurrent.atomic.AtomicInteger();
       rig.client.addHandler("mapUpdated", p -> updated.incrementAndGet());
       Futures.get(rig.client.request("mapUpdated", -1));
+      // ArNetworking does not acknowledge a request: a reply to a later packet shows it arrived.
+      rig.call("getMapName");
       rig.gui.getMapHandler().setMap(org.jaria.map.ArMap.loadBundled("hall"), "hall.map");
       Eventually.until("mapUpdated", () -> updated.get() == 1);
       assertEquals("hall.map", rig.call("getMapName").bufToStr());
