@@ -655,10 +655,16 @@ public class ArServerBase implements AutoCloseable {
         return;
       }
       ArNetPacket reply = new ArNetPacket(e.id());
-      e.handler.handle(c, ArNetPacket.wrap(e.id(), args, 0, args.length), reply);
-      if (reply.getDataLength() > 0 || !e.info.returnsNothing() || (c.wantsAcks && r == null)) {
-        reply.setCommand(e.id());
-        sendPacket(c, reply);
+      if (e.where == Where.WORKER) {
+        // One client's handlers run one at a time, as in ArNetworking's single server loop, so
+        // the packets of a multi-packet answer (getMap) never interleave with another's.
+        synchronized (c.handlerLock) {
+          e.handler.handle(c, ArNetPacket.wrap(e.id(), args, 0, args.length), reply);
+          sendReply(c, e, r, reply);
+        }
+      } else {
+        e.handler.handle(c, ArNetPacket.wrap(e.id(), args, 0, args.length), reply);
+        sendReply(c, e, r, reply);
       }
     } catch (ArNetPacketException ex) {
       requestFailed(c, e, NetError.BAD_ARGUMENTS, e.name() + ": " + ex.getMessage());
@@ -675,6 +681,20 @@ public class ArServerBase implements AutoCloseable {
       if (r != null) {
         r.running.set(false);
       }
+    }
+  }
+
+  /**
+   * Sends a handler's reply: always when it holds something; an empty one to a request once unless
+   * the data returns nothing (then only to a JAria client, as its acknowledgement); never an empty
+   * one for a request at an interval (an ArNetworking handler that sends nothing sends nothing).
+   */
+  private void sendReply(ArServerClient c, DataEntry e, ArServerClient.Request r, ArNetPacket p) {
+    boolean send =
+        p.getDataLength() > 0 || (r == null && (!e.info.returnsNothing() || c.wantsAcks));
+    if (send) {
+      p.setCommand(e.id());
+      sendPacket(c, p);
     }
   }
 

@@ -63,6 +63,10 @@ public final class ArServerClient {
   final OutboundQueue out;
   final Map<Integer, Request> requests = new ConcurrentHashMap<>();
   final AtomicInteger pendingCalls = new AtomicInteger();
+
+  /** Held while one of this client's worker handlers runs (see ArServerBase.runCall). */
+  final Object handlerLock = new Object();
+
   final AtomicBoolean writeScheduled = new AtomicBoolean();
   final AtomicBoolean dropRequested = new AtomicBoolean();
   private final AtomicLong bytesSent = new AtomicLong();
