@@ -1,0 +1,84 @@
+package org.jaria.net.server;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.jaria.net.ArNetPacket;
+import org.jaria.net.PeerRecording;
+import org.jaria.net.RawClient;
+import org.jaria.net.data.RobotUpdate;
+import org.jaria.net.protocol.Protocol;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Replays the bytes ARIA 2.9.1's own clients sent to {@code jaria demo guiserver} (recorded by
+ * hand, see docs/networking.md) to a JAria guiServer, and checks what it answers.
+ */
+class AriaClientReplayTest {
+
+  @Test
+  void robotUpdateExampleLogsInAndGetsUpdateNumbersAndStrings() throws Exception {
+    byte[] sent = PeerRecording.bytes("robotUpdateExample.c2s.bin");
+    List<ArNetPacket> asSent = PeerRecording.packets(sent);
+    // What ARIA's client sent: introduction, UDP confirmation, then two requests.
+    assertEquals(
+        List.of(Protocol.CLIENT_INTRODUCTION, Protocol.CLIENT_UDP_CONFIRMATION, 129, 129),
+        asSent.stream().map(ArNetPacket::getCommand).toList());
+    try (GuiRig rig = GuiRig.plain(b -> b);
+        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
+      ArServerBase s = rig.gui.getServer();
+      assertEquals(258, s.findCommandFromName("updateNumbers"), "the number it requested");
+      assertEquals(259, s.findCommandFromName("updateStrings"));
+      aria.readIntroduction();
+      aria.send(sent);
+      assertEquals(
+          Protocol.SERVER_CONNECTED, aria.readUntil(Protocol.SERVER_CONNECTED).getCommand());
+      rig.run(500);
+      ArNetPacket strings = aria.readUntil(259);
+      assertEquals("Stopped", strings.bufToStr());
+      assertEquals("Stop", strings.bufToStr());
+      ArNetPacket numbers = aria.readUntil(258);
+      RobotUpdate u = RobotUpdate.readNumbers(numbers, "Stop", "Stopped");
+      assertEquals((int) rig.robot.getX(), (int) u.x(), 50);
+      assertEquals((int) rig.robot.getY(), (int) u.y(), 50);
+    }
+  }
+
+  @Test
+  void clientCommandListerSeesTheServicesItListed() throws Exception {
+    byte[] sent = PeerRecording.bytes("clientCommandLister.c2s.bin");
+    List<String> listedThen =
+        PeerRecording.listedNames(
+            PeerRecording.packets(PeerRecording.bytes("clientCommandLister.s2c.bin")));
+    assertTrue(
+        listedThen.contains("update") && listedThen.contains("ratioDrive"), listedThen.toString());
+    try (GuiRig rig = GuiRig.plain(b -> b);
+        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
+      aria.readIntroduction();
+      aria.send(PeerRecording.packets(sent).get(0).toWire());
+      aria.readUntil(Protocol.SERVER_CONNECTED);
+      ArNetPacket list = aria.readUntil(Protocol.SERVER_LIST);
+      List<String> now = PeerRecording.listedNames(List.of(list));
+      for (String name :
+          List.of(
+              "update",
+              "updateNumbers",
+              "updateStrings",
+              "physicalInfo",
+              "batteryInfo",
+              "ratioDrive",
+              "stop",
+              "getGoals",
+              "getMapName",
+              "getMap")) {
+        assertTrue(now.contains(name), name + " is listed: " + now);
+      }
+      // The recording came from the full demo (camera, localization, config): a plain guiServer
+      // lists a part of it, with the same names.
+      assertTrue(listedThen.containsAll(now), "listed by hand: " + listedThen + ", now: " + now);
+      assertTrue(aria.readUntil(Protocol.SERVER_LIST_ARGRET).bufToUByte2() > 0);
+      assertTrue(aria.readUntil(Protocol.SERVER_LIST_GROUP_AND_FLAGS).bufToUByte2() > 0);
+    }
+  }
+}
