@@ -8,8 +8,8 @@ import org.jaria.net.ArNetPacket;
 
 /**
  * The robot's map ({@code "getMap"}): its name and its {@code .map} text, byte for byte as ArMap
- * writes it, so a client gets exactly the server's map. Large maps travel in several frames; the
- * client library puts them back together.
+ * writes it, so a client gets exactly the server's map. The map travels one line per packet
+ * (ArNetworking's getMap); ArClientBase gathers them.
  *
  * @param name the map's name (its file name)
  * @param version changes whenever the server's map changes

@@ -47,10 +47,10 @@ import org.slf4j.LoggerFactory;
  * #close()} stops and joins every thread.
  *
  * <p><b>Protection.</b> At most {@link ServerOptions#maxClients()} connections; a connection must
- * log in within the login timeout; a frame that is too long or not well-formed closes that
- * connection only; a client that reads too slowly has its subscription updates coalesced (newest
- * wins) and is dropped when its replies exceed {@link ServerOptions#maxQueuedBytes()} or its socket
- * takes nothing for the stall timeout. See {@code aria-net/PROTOCOL.md}.
+ * log in within the login timeout; a packet that is not well-formed closes that connection only; a
+ * client that reads too slowly has its subscription updates coalesced (newest wins) and is dropped
+ * when its replies exceed {@link ServerOptions#maxQueuedBytes()} or its socket takes nothing for
+ * the stall timeout. See {@code aria-net/PROTOCOL.md}.
  */
 public class ArServerBase implements AutoCloseable {
 

@@ -26,9 +26,9 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The server's single I/O thread: accepts connections, reads and splits frames (handing each to the
- * {@link Dispatcher}), writes what the clients' queues hold without ever blocking, and enforces the
- * login, idle and stall timeouts. A client that breaks the protocol is closed here; nothing a
+ * The server's single I/O thread: accepts connections, reads and splits packets (handing each to
+ * the {@link Dispatcher}), writes what the clients' queues hold without ever blocking, and enforces
+ * the login, idle and stall timeouts. A client that breaks the protocol is closed here; nothing a
  * client does can block this thread or touch another client.
  */
 final class IoLoop implements Runnable {
@@ -38,7 +38,7 @@ final class IoLoop implements Runnable {
   /** Longest wait in select, so timeouts are checked at least this often. */
   private static final long SELECT_MS = 50;
 
-  /** Time given at shutdown to send the last CLOSING frames. */
+  /** Time given at shutdown to send the last SHUTDOWN packets. */
   private static final long SHUTDOWN_GRACE_MS = 200;
 
   private final ArServerBase server;
@@ -218,7 +218,7 @@ final class IoLoop implements Runnable {
     } catch (RuntimeException e) {
       // Whatever a client's bytes make the decoder do, only that client pays for it.
       server.stats.malformed.increment();
-      log.info("{}: its frame could not be handled ({}); closing it", c, e.toString());
+      log.info("{}: its packet could not be handled ({}); closing it", c, e.toString());
       close(c, NetError.MALFORMED, "a frame the server could not decode", true);
     }
   }
@@ -470,8 +470,8 @@ final class IoLoop implements Runnable {
   }
 
   /**
-   * Closes {@code c}: optionally tries to send a CLOSING frame first (without waiting), then closes
-   * the socket, forgets its queue and subscriptions, and tells the listeners.
+   * Closes {@code c}: optionally tries to send a SHUTDOWN packet first (logged-in clients) (without
+   * waiting), then closes the socket, forgets its queue and subscriptions, and tells the listeners.
    */
   void close(ArServerClient c, NetError code, String reason, boolean sayWhy) {
     if (c.isClosed()) {

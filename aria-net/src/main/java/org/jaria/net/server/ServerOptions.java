@@ -149,9 +149,10 @@ public record ServerOptions(
 
   /**
    * Builds {@link ServerOptions}. Defaults: name "jaria", port 7272, open authenticator, 32
-   * clients, 5 s login, 30 s idle, 10 s stall, 1 MiB queued replies, 64 KiB inbound frames, 50 ms
-   * minimum interval (20 Hz), 64 subscriptions and 16 pending requests per client, 2 workers with
-   * 256 queued requests, 256 queued cycle commands with 64 applied per cycle.
+   * logged-in clients, 8 not yet logged in, 5 s login, no idle timeout, 10 s stall, 1 MiB queued
+   * replies, 5 failed logins per address per minute, UDP on, 50 ms minimum interval (20 Hz), 64
+   * subscriptions and 16 pending requests per client, 2 workers with 256 queued requests, 256
+   * queued cycle commands with 64 applied per cycle.
    */
   public static final class Builder {
     private String serverName = "jaria";
@@ -235,7 +236,6 @@ public record ServerOptions(
       return this;
     }
 
-    /** Largest inbound frame. */
     /**
      * ArNetworking's server key: a secret mixed into every login digest, which clients must be
      * given too ("" by default, as in ARIA).

@@ -81,4 +81,53 @@ class AriaClientReplayTest {
       assertTrue(aria.readUntil(Protocol.SERVER_LIST_GROUP_AND_FLAGS).bufToUByte2() > 0);
     }
   }
+
+  @Test
+  void clientDemoGetsItsTableAndDrives() throws Exception {
+    byte[] sent = PeerRecording.bytes("clientDemo.c2s.bin");
+    List<ArNetPacket> asSent = PeerRecording.packets(sent);
+    // Its introduction, UDP confirmation, setSafeDrive 1, batteryInfo and physicalInfo once,
+    // then updateNumbers every 100 ms and updateStrings and mapUpdated when they change.
+    assertEquals(
+        List.of(2, 4, 282, 261, 260, 129, 129, 129),
+        asSent.stream().map(ArNetPacket::getCommand).toList());
+    // The demo guiServer it talked to: localization, planning and a camera.
+    org.jaria.net.provider.VideoSource camera =
+        new org.jaria.net.provider.VideoSource() {
+          @Override
+          public String getName() {
+            return "Camera";
+          }
+
+          @Override
+          public org.jaria.net.data.VideoFrame getLatestFrame() {
+            return null;
+          }
+        };
+    try (GuiRig rig = GuiRig.arnl(b -> b.video(camera));
+        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
+      ArServerBase s = rig.gui.getServer();
+      for (var e :
+          java.util.Map.of(
+                  258, "updateNumbers",
+                  259, "updateStrings",
+                  260, "batteryInfo",
+                  261, "physicalInfo",
+                  267, "mapUpdated",
+                  282, "setSafeDrive")
+              .entrySet()) {
+        assertEquals(e.getKey(), s.findCommandFromName(e.getValue()), e.getValue());
+      }
+      aria.readIntroduction();
+      aria.send(sent);
+      ArNetPacket physical = aria.readUntil(261);
+      assertEquals(rig.robot.getRobotType(), physical.bufToStr());
+      ArNetPacket battery = aria.readUntil(260);
+      assertEquals(11.5, battery.bufToDouble());
+      assertEquals(11, battery.bufToDouble());
+      rig.run(300);
+      RobotUpdate u = RobotUpdate.readNumbers(aria.readUntil(258), "", "");
+      assertEquals((int) rig.robot.getX(), (int) u.x(), 50);
+    }
+  }
 }

@@ -77,6 +77,11 @@ final class GuiRig implements AutoCloseable {
     return new GuiRig(true, b -> b);
   }
 
+  /** As {@link #arnl()}, configured further (a camera, say). */
+  static GuiRig arnl(UnaryOperator<GuiServer.Builder> configure) throws Exception {
+    return new GuiRig(true, configure);
+  }
+
   /**
    * The future's value: waits for it, advancing the world only while the robot's cycle has a
    * command to apply.
