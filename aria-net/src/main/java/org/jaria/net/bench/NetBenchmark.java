@@ -8,7 +8,6 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
-import java.nio.ByteBuffer;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -22,6 +21,7 @@ import org.jaria.net.ArNetPacket;
 import org.jaria.net.arnl.ArnlNavigation;
 import org.jaria.net.client.ArClientBase;
 import org.jaria.net.client.ArClientException;
+import org.jaria.net.client.ArNetPacketArgs;
 import org.jaria.net.protocol.Protocol;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ArServerClient;
@@ -132,8 +132,13 @@ public final class NetBenchmark {
           while (!stop) {
             rnd.nextBytes(chunk);
             if (first && rnd.nextBoolean()) {
-              // A plausible length, so the garbage reaches the message decoder.
-              ByteBuffer.wrap(chunk).putInt(0, 200 + rnd.nextInt(300));
+              // ArNetworking's sync bytes and a plausible length, so the garbage reaches the
+              // checksum.
+              int len = 200 + rnd.nextInt(300);
+              chunk[0] = 0x0f;
+              chunk[1] = 0x0c;
+              chunk[2] = (byte) len;
+              chunk[3] = (byte) (len >> 8);
             }
             first = false;
             out.write(chunk);
@@ -238,7 +243,11 @@ public final class NetBenchmark {
           c.addHandler("update", p -> u.incrementAndGet());
           for (String d : MONITOR_DATA) {
             c.addHandler(d, p -> totalUpdates.incrementAndGet());
-            var unused = c.request(d, rateMs);
+            // ArNetworking sends one named sensor's readings per request.
+            var unused =
+                d.equals("getSensorCurrent")
+                    ? c.request(d, rateMs, ArNetPacketArgs.of("sonar"))
+                    : c.request(d, rateMs);
           }
           c.connect("127.0.0.1", s.port(), "", "");
           clients.add(c);
