@@ -89,7 +89,7 @@ class AriaClientReplayTest {
     // Its introduction, UDP confirmation, setSafeDrive 1, batteryInfo and physicalInfo once,
     // then updateNumbers every 100 ms and updateStrings and mapUpdated when they change.
     assertEquals(
-        List.of(2, 4, 282, 261, 260, 129, 129, 129),
+        List.of(2, 4, 284, 261, 260, 129, 129, 129),
         asSent.stream().map(ArNetPacket::getCommand).toList());
     // The demo guiServer it talked to: localization, planning and a camera.
     org.jaria.net.provider.VideoSource camera =
@@ -114,7 +114,7 @@ class AriaClientReplayTest {
                   260, "batteryInfo",
                   261, "physicalInfo",
                   267, "mapUpdated",
-                  282, "setSafeDrive")
+                  284, "setSafeDrive")
               .entrySet()) {
         assertEquals(e.getKey(), s.findCommandFromName(e.getValue()), e.getValue());
       }
@@ -128,6 +128,51 @@ class AriaClientReplayTest {
       rig.run(300);
       RobotUpdate u = RobotUpdate.readNumbers(aria.readUntil(258), "", "");
       assertEquals((int) rig.robot.getX(), (int) u.x(), 50);
+    }
+  }
+
+  @Test
+  void getVideoExampleSavesAJpegFromSendVideo() throws Exception {
+    byte[] sent = PeerRecording.bytes("getVideoExample.c2s.bin");
+    List<ArNetPacket> asSent = PeerRecording.packets(sent);
+    // Introduction, UDP confirmation, then sendVideo once (it has no getPictureCam1 to use).
+    assertEquals(List.of(2, 4, 277), asSent.stream().map(ArNetPacket::getCommand).toList());
+    byte[] rgb = new byte[160 * 120 * 3];
+    java.util.Arrays.fill(rgb, (byte) 120);
+    org.jaria.net.data.VideoFrame frame =
+        new org.jaria.net.data.VideoFrame(
+            1, org.jaria.net.data.VideoFrame.Format.RGB, 160, 120, rgb);
+    org.jaria.net.provider.VideoSource camera =
+        new org.jaria.net.provider.VideoSource() {
+          @Override
+          public String getName() {
+            return "Camera";
+          }
+
+          @Override
+          public org.jaria.net.data.VideoFrame getLatestFrame() {
+            return frame;
+          }
+        };
+    try (GuiRig rig = GuiRig.arnl(b -> b.video(camera));
+        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
+      assertEquals(277, rig.gui.getServer().findCommandFromName("sendVideo"));
+      aria.readIntroduction();
+      aria.send(sent);
+      ArNetPacket video = aria.readUntil(277);
+      assertEquals(160, video.bufToUByte2());
+      assertEquals(120, video.bufToUByte2());
+      byte[] jpeg = video.bufToData(video.getRemaining());
+      java.awt.image.BufferedImage img =
+          javax.imageio.ImageIO.read(new java.io.ByteArrayInputStream(jpeg));
+      assertEquals(160, img.getWidth(), "a JPEG the example can save");
+      // What it saved by hand: a 160x120 JPEG of about 2 kB from the simulated camera.
+      List<ArNetPacket> answered =
+          PeerRecording.packets(PeerRecording.bytes("getVideoExample.s2c.bin"));
+      ArNetPacket then =
+          answered.stream().filter(p -> p.getCommand() == 277).findFirst().orElseThrow();
+      assertEquals(160, then.bufToUByte2());
+      assertEquals(120, then.bufToUByte2());
     }
   }
 }
