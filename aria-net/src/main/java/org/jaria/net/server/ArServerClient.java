@@ -39,7 +39,7 @@ public final class ArServerClient {
     final long intervalNanos;
     final byte[] args;
     long nextDueNanos;
-    long lastVersion = Long.MIN_VALUE;
+    volatile long lastVersion = Long.MIN_VALUE;
 
     /** A handler run for this request has not finished yet (so runs never pile up). */
     final AtomicBoolean running = new AtomicBoolean();
