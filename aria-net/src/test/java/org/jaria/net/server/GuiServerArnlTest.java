@@ -103,7 +103,7 @@ class GuiServerArnlTest {
       rig.sim.sim().setTruePose(elsewhere);
       rig.run(1000);
       assertTrue(rig.robot.getPose().findDistanceTo(elsewhere) > 5000, "it believes it is home");
-      assertTrue(rig.call("localizeToPose", 15000.0, 9500.0, 180.0).bufToBool());
+      rig.call("localizeToPose", 15000, 9500, 180); // byte4 x, y, th; acknowledged when done
       rig.run(500);
       LocalizationSnapshot s = LocalizationSnapshot.read(rig.call("getLocState"));
       assertTrue(s.pose().findDistanceTo(elsewhere) < 300, "localized there: " + s.pose());

@@ -106,7 +106,11 @@ class GuiServerModesTest {
   @Test
   void relocalizingWithoutALocalizerDeclaresThePose() throws Exception {
     try (GuiRig rig = GuiRig.plain(b -> b)) {
-      assertTrue(rig.call("localizeToPose", 2000.0, 9000.0, 90.0).bufToBool());
+      rig.call("localizeToPose", 2000, 9000, 90);
+      ArClientException off =
+          assertThrows(
+              ArClientException.class, () -> rig.call("localizeToPose", 2000, -900_000, 0));
+      assertEquals(NetError.BAD_ARGUMENTS, off.getCode());
       rig.run(200);
       ArPose p = rig.robot.getPose();
       assertEquals(2000, p.x(), 1);
