@@ -1,640 +1,572 @@
 package org.jaria.net;
 
-import java.io.IOException;
-import java.util.ArrayList;
+import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
-import java.util.Collection;
-import java.util.LinkedHashMap;
-import java.util.List;
-import java.util.Map;
-import org.msgpack.core.MessageBufferPacker;
-import org.msgpack.core.MessageFormat;
-import org.msgpack.core.MessagePack;
-import org.msgpack.core.MessagePackException;
-import org.msgpack.core.MessageUnpacker;
-import org.msgpack.value.ValueType;
+import java.util.Locale;
 
 /**
- * The body of a network message: a sequence of typed values (ARIA's {@code ArNetPacket}). A handler
- * reads the request's arguments in order with the {@code bufTo...} methods and writes its reply
- * with the {@code ...ToBuf} methods, exactly as in ArNetworking:
+ * One ArNetworking message (ARIA's {@code ArNetPacket}): a command number and a body of values in
+ * ARIA's byte layout. A handler reads the request's arguments in order with the {@code bufTo...}
+ * methods and writes its reply with the {@code ...ToBuf} methods, exactly as in ArNetworking:
  *
  * <pre>{@code
- * server.addData("gotoPose", "drives to a pose", "double x, double y, double th", "none",
+ * server.addData("gotoPose", "drives to a pose", "double: x; double: y; double: th", "none",
  *     "Movement", Where.CYCLE,
  *     (client, request, reply) -> {
  *       double x = request.bufToDouble();
- *       double y = request.bufToDouble();
  *       ...
- *       reply.strToBuf("going");
  *     });
  * }</pre>
  *
- * <p>Unlike ARIA's fixed-width packets, every value carries its type (the encoding is <a
- * href="https://msgpack.org">MessagePack</a>, see {@code PROTOCOL.md}): a reader that asks for a
- * string where the sender put a number gets a clear {@link ArNetPacketException} instead of
- * garbage, integers take as few bytes as their value needs, and programs in other languages can
- * read the packets with any MessagePack library.
+ * <p>The layout is ArNetworking's, so ARIA's C++ programs (and MobileEyes) read what we write:
+ * integers are little-endian and fixed-width (1, 2, 4 or 8 bytes), strings end with a zero byte,
+ * and a {@code double} travels as its text ({@code %g}, six significant digits, or {@code INF} /
+ * {@code -INF}). Nothing carries its type: both sides must agree on the order of the values, which
+ * the data's argument and return descriptions state.
  *
- * <p>Reading is defensive: lengths and counts are checked against the bytes actually present before
- * anything is allocated, and nesting is limited, so a hostile packet cannot make the reader
- * allocate or recurse without bound. A packet is not thread-safe; it belongs to the code that
- * received or built it.
+ * <p>Reading is strict where ARIA is lenient: a read past the end, a string without its ending zero
+ * or a number that is not a number throws {@link ArNetPacketException} instead of returning zero,
+ * so a handler never acts on garbage. A packet is not thread-safe; it belongs to the code that
+ * received or built it. See {@code aria-net/PROTOCOL.md}.
  */
 public final class ArNetPacket {
 
-  /** Deepest nesting of arrays and maps {@link #bufToValue()} accepts. */
-  public static final int MAX_DEPTH = 16;
+  /** Largest packet on the wire, header and checksum included (ArNetworking's limit). */
+  public static final int MAX_LENGTH = 32000;
 
-  private static final MessagePack.UnpackerConfig UNPACKER = new MessagePack.UnpackerConfig();
+  /** Bytes before the body: two sync bytes, the length and the command. */
+  public static final int HEADER_LENGTH = 6;
 
-  /** Most packets are small: start with a small buffer (it grows as needed). */
-  private static final MessagePack.PackerConfig PACKER =
-      new MessagePack.PackerConfig().withBufferSize(512);
+  /** Bytes after the body: the checksum. */
+  public static final int FOOTER_LENGTH = 2;
 
-  private final MessageBufferPacker packer;
+  /** Largest body a packet may carry. */
+  public static final int MAX_DATA_LENGTH = MAX_LENGTH - HEADER_LENGTH - FOOTER_LENGTH;
+
+  /** The first sync byte of every packet. */
+  public static final int SYNC1 = 0x0F;
+
+  /** The second sync byte of every packet. */
+  public static final int SYNC2 = 0x0C;
+
+  private int command;
   private byte[] data;
-  private int offset;
   private int length;
-  private MessageUnpacker unpacker;
-  private int valuesRead;
+  private int readPos;
+  private final boolean writable;
 
-  /** An empty packet to write values into. */
+  /** An empty packet (command 0) to write values into. */
   public ArNetPacket() {
-    packer = PACKER.newBufferPacker();
+    this.data = new byte[64];
+    this.writable = true;
   }
 
-  private ArNetPacket(byte[] data, int offset, int length) {
-    this.packer = null;
+  /** An empty packet for {@code command}. */
+  public ArNetPacket(int command) {
+    this();
+    setCommand(command);
+  }
+
+  private ArNetPacket(int command, byte[] data, int length) {
+    this.command = command;
     this.data = data;
-    this.offset = offset;
     this.length = length;
-    resetRead();
+    this.writable = false;
   }
 
-  /** A packet that reads the encoded values in {@code data} (not copied: do not change it). */
-  public static ArNetPacket wrap(byte[] data) {
-    return wrap(data, 0, data.length);
-  }
-
-  /** A packet that reads {@code length} encoded bytes of {@code data} from {@code offset}. */
-  public static ArNetPacket wrap(byte[] data, int offset, int length) {
-    if (offset < 0 || length < 0 || offset + length > data.length) {
-      throw new IndexOutOfBoundsException(
-          "slice " + offset + "+" + length + " outside an array of " + data.length);
-    }
-    return new ArNetPacket(data, offset, length);
+  /** A packet that reads the body bytes {@code body} (copied), with command 0. */
+  public static ArNetPacket wrap(byte[] body) {
+    return wrap(0, body, 0, body.length);
   }
 
   /**
-   * A packet holding {@code values}, each written with {@link #valueToBuf(Object)}: a quick way to
-   * build arguments, {@code ArNetPacket.of(1000.0, 0.0, 90.0)}.
+   * A packet of {@code command} that reads {@code len} body bytes of {@code a} from {@code off}.
    */
-  public static ArNetPacket of(Object... values) {
-    ArNetPacket p = new ArNetPacket();
-    for (Object v : values) {
-      p.valueToBuf(v);
+  public static ArNetPacket wrap(int command, byte[] a, int off, int len) {
+    if (off < 0 || len < 0 || off + len > a.length) {
+      throw new IndexOutOfBoundsException(
+          "slice " + off + "+" + len + " outside an array of " + a.length);
     }
-    return p;
+    return new ArNetPacket(command, Arrays.copyOfRange(a, off, off + len), len);
+  }
+
+  // ------------------------------------------------------------------ command
+
+  /** The command number (which data this packet is for). */
+  public int getCommand() {
+    return command;
+  }
+
+  /** Sets the command number (0 to 65535). */
+  public void setCommand(int command) {
+    if (command < 0 || command > 0xFFFF) {
+      throw new IllegalArgumentException("a command number is 0..65535, not " + command);
+    }
+    this.command = command;
   }
 
   // ------------------------------------------------------------------ writing
 
-  private MessageBufferPacker out() {
-    if (packer == null) {
+  private void ensure(int n) {
+    if (!writable) {
       throw new IllegalStateException(
           "this packet was received (or wrapped) for reading; build a new ArNetPacket to write");
     }
-    return packer;
+    if (length + n > MAX_DATA_LENGTH) {
+      throw new ArNetPacketException(
+          "a packet holds at most "
+              + MAX_DATA_LENGTH
+              + " bytes of data; send the rest in another packet");
+    }
+    if (length + n > data.length) {
+      data = Arrays.copyOf(data, Math.min(MAX_DATA_LENGTH, Math.max(data.length * 2, length + n)));
+    }
   }
 
-  /** Appends an integer. */
-  public ArNetPacket intToBuf(long value) {
-    try {
-      out().packLong(value);
-    } catch (IOException e) {
-      throw new IllegalStateException(e);
+  private ArNetPacket putLE(long v, int bytes) {
+    ensure(bytes);
+    for (int i = 0; i < bytes; i++) {
+      data[length++] = (byte) (v >>> (8 * i));
     }
     return this;
   }
 
-  /** Appends a floating-point number. */
-  public ArNetPacket doubleToBuf(double value) {
-    try {
-      out().packDouble(value);
-    } catch (IOException e) {
-      throw new IllegalStateException(e);
-    }
-    return this;
+  /** Appends a signed byte. */
+  public ArNetPacket byteToBuf(int v) {
+    return putLE(v, 1);
   }
 
-  /** Appends a string (null is written as nil). */
-  public ArNetPacket strToBuf(String value) {
-    try {
-      if (value == null) {
-        out().packNil();
-      } else {
-        out().packString(value);
+  /** Appends an unsigned byte (0..255). */
+  public ArNetPacket uByteToBuf(int v) {
+    return putLE(v, 1);
+  }
+
+  /** Appends a signed 2-byte integer. */
+  public ArNetPacket byte2ToBuf(int v) {
+    return putLE(v, 2);
+  }
+
+  /** Appends an unsigned 2-byte integer. */
+  public ArNetPacket uByte2ToBuf(int v) {
+    return putLE(v, 2);
+  }
+
+  /** Appends a signed 4-byte integer. */
+  public ArNetPacket byte4ToBuf(int v) {
+    return putLE(v, 4);
+  }
+
+  /** Appends an unsigned 4-byte integer. */
+  public ArNetPacket uByte4ToBuf(long v) {
+    return putLE(v, 4);
+  }
+
+  /** Appends a signed 8-byte integer. */
+  public ArNetPacket byte8ToBuf(long v) {
+    return putLE(v, 8);
+  }
+
+  /** Appends a boolean as an unsigned byte, 1 or 0 (ArNetworking's convention). */
+  public ArNetPacket boolToBuf(boolean v) {
+    return uByteToBuf(v ? 1 : 0);
+  }
+
+  /** Appends a string and its ending zero byte (null is written as the empty string). */
+  public ArNetPacket strToBuf(String s) {
+    byte[] b = s == null ? new byte[0] : s.getBytes(StandardCharsets.UTF_8);
+    int n = b.length;
+    for (int i = 0; i < b.length; i++) {
+      if (b[i] == 0) {
+        n = i; // A C string ends at its first zero: so does what we send.
+        break;
       }
-    } catch (IOException e) {
-      throw new IllegalStateException(e);
     }
+    ensure(n + 1);
+    System.arraycopy(b, 0, data, length, n);
+    length += n;
+    data[length++] = 0;
     return this;
   }
 
-  /** Appends a boolean. */
-  public ArNetPacket boolToBuf(boolean value) {
-    try {
-      out().packBoolean(value);
-    } catch (IOException e) {
-      throw new IllegalStateException(e);
-    }
-    return this;
+  /** Appends a double as ArNetworking does: as text, {@code %g} (see {@link #formatDouble}). */
+  public ArNetPacket doubleToBuf(double v) {
+    return strToBuf(formatDouble(v));
   }
 
-  /** Appends nil (an absent value). */
-  public ArNetPacket nilToBuf() {
-    try {
-      out().packNil();
-    } catch (IOException e) {
-      throw new IllegalStateException(e);
-    }
-    return this;
-  }
-
-  /** Appends a block of bytes (an image, a file). */
+  /** Appends raw bytes (an image, a file); the reader must know how many. */
   public ArNetPacket dataToBuf(byte[] bytes) {
     return dataToBuf(bytes, 0, bytes.length);
   }
 
-  /** Appends {@code len} bytes of {@code bytes} from {@code off}. */
+  /** Appends {@code len} raw bytes of {@code bytes} from {@code off}. */
   public ArNetPacket dataToBuf(byte[] bytes, int off, int len) {
-    try {
-      out().packBinaryHeader(len);
-      out().writePayload(bytes, off, len);
-    } catch (IOException e) {
-      throw new IllegalStateException(e);
-    }
+    ensure(len);
+    System.arraycopy(bytes, off, data, length, len);
+    length += len;
     return this;
   }
 
-  /**
-   * Starts an array of {@code count} values: the next {@code count} values written are its elements
-   * (each may itself be an array).
-   */
+  // JAria's helpers for data ArNetworking has no layout for (see PROTOCOL.md §6): fixed widths,
+  // so a reader in any language can follow the data's return description.
+
+  /** Appends a count of the elements that follow (a ubyte4). */
   public ArNetPacket arrayToBuf(int count) {
-    try {
-      out().packArrayHeader(count);
-    } catch (IOException e) {
-      throw new IllegalStateException(e);
-    }
-    return this;
+    return uByte4ToBuf(count);
   }
 
-  /** Starts a map of {@code count} entries: then write key, value, key, value ... */
-  public ArNetPacket mapToBuf(int count) {
-    try {
-      out().packMapHeader(count);
-    } catch (IOException e) {
-      throw new IllegalStateException(e);
-    }
-    return this;
+  /** Appends an integer as a byte8 (JAria's layouts use it where ARIA has no layout). */
+  public ArNetPacket intToBuf(long v) {
+    return byte8ToBuf(v);
   }
 
-  /** Appends the first {@code n} numbers of {@code values} as one array of integers. */
-  public ArNetPacket intsToBuf(int[] values, int n) {
-    arrayToBuf(n);
-    try {
-      for (int i = 0; i < n; i++) {
-        out().packInt(values[i]);
-      }
-    } catch (IOException e) {
-      throw new IllegalStateException(e);
-    }
-    return this;
+  /** Appends a block of bytes preceded by its length (a ubyte4). */
+  public ArNetPacket blobToBuf(byte[] bytes) {
+    ensure(4 + bytes.length);
+    uByte4ToBuf(bytes.length);
+    return dataToBuf(bytes);
   }
 
-  /**
-   * Appends a value of a simple type: null, Boolean, any integer type, Float or Double, String,
-   * byte[], or a List/Collection or Map of those.
-   *
-   * @throws IllegalArgumentException for any other type
-   */
-  public ArNetPacket valueToBuf(Object v) {
-    if (v == null) {
-      return nilToBuf();
-    } else if (v instanceof Boolean b) {
-      return boolToBuf(b);
-    } else if (v instanceof Byte
-        || v instanceof Short
-        || v instanceof Integer
-        || v instanceof Long) {
-      return intToBuf(((Number) v).longValue());
-    } else if (v instanceof Float || v instanceof Double) {
-      return doubleToBuf(((Number) v).doubleValue());
-    } else if (v instanceof String s) {
-      return strToBuf(s);
-    } else if (v instanceof byte[] b) {
-      return dataToBuf(b);
-    } else if (v instanceof Collection<?> c) {
-      arrayToBuf(c.size());
-      for (Object e : c) {
-        valueToBuf(e);
-      }
-      return this;
-    } else if (v instanceof Map<?, ?> m) {
-      mapToBuf(m.size());
-      for (Map.Entry<?, ?> e : m.entrySet()) {
-        valueToBuf(e.getKey());
-        valueToBuf(e.getValue());
-      }
-      return this;
-    }
-    throw new IllegalArgumentException(
-        "cannot put a "
-            + v.getClass().getName()
-            + " in a packet: use numbers, strings, booleans,"
-            + " byte arrays, lists or maps of them");
-  }
-
-  /** Appends encoded values taken verbatim from another packet's {@link #toByteArray()}. */
-  public ArNetPacket encodedToBuf(byte[] encoded) {
-    try {
-      out().writePayload(encoded);
-    } catch (IOException e) {
-      throw new IllegalStateException(e);
-    }
-    return this;
-  }
-
-  /** The encoded values: what was written, or what is being read (a copy). */
-  public byte[] toByteArray() {
-    if (packer != null) {
-      return packer.toByteArray();
-    }
-    return Arrays.copyOfRange(data, offset, offset + length);
-  }
-
-  /** Number of encoded bytes. */
-  public int getLength() {
-    return packer != null ? (int) packer.getTotalWrittenBytes() : length;
-  }
-
-  /** A new packet that reads what has been written into this one. */
-  public ArNetPacket toReader() {
-    byte[] b = toByteArray();
-    return new ArNetPacket(b, 0, b.length);
+  /** Bytes that can still be appended before the packet is full. */
+  public int getWriteCapacity() {
+    return MAX_DATA_LENGTH - length;
   }
 
   // ------------------------------------------------------------------ reading
 
-  private MessageUnpacker in() {
-    if (unpacker == null) {
-      throw new IllegalStateException(
-          "this packet is being built; call toReader() to read what was written");
-    }
-    return unpacker;
-  }
-
-  /** Starts reading again from the first value. */
-  public void resetRead() {
-    if (data == null) {
-      throw new IllegalStateException("a packet being built has nothing to read yet");
-    }
-    unpacker = UNPACKER.newUnpacker(data, offset, length);
-    valuesRead = 0;
-  }
-
-  /** Bytes not read yet. */
-  public int getRemaining() {
-    return length - (int) in().getTotalReadBytes();
-  }
-
-  /** Bytes read so far. */
-  public int getReadLength() {
-    return (int) in().getTotalReadBytes();
-  }
-
-  /** Whether another value follows. */
-  public boolean hasMore() {
-    return getRemaining() > 0;
-  }
-
-  private ValueType next(String wanted) {
-    if (!hasMore()) {
+  private long getLE(int bytes, String what) {
+    if (readPos + bytes > length) {
       throw new ArNetPacketException(
-          "expected " + wanted + " as value " + (valuesRead + 1) + " but the packet ended");
+          "packet "
+              + command
+              + " ended before its "
+              + what
+              + " at byte "
+              + readPos
+              + " of "
+              + length);
     }
-    try {
-      MessageFormat f = in().getNextFormat();
-      if (f == MessageFormat.NEVER_USED) {
-        throw new ArNetPacketException(
-            "value " + (valuesRead + 1) + " starts with a reserved byte (0xc1): not MessagePack");
+    long v = 0;
+    for (int i = 0; i < bytes; i++) {
+      v |= (data[readPos + i] & 0xFFL) << (8 * i);
+    }
+    readPos += bytes;
+    return v;
+  }
+
+  /** Reads a signed byte. */
+  public int bufToByte() {
+    return (byte) getLE(1, "byte");
+  }
+
+  /** Reads an unsigned byte. */
+  public int bufToUByte() {
+    return (int) getLE(1, "ubyte");
+  }
+
+  /** Reads a signed 2-byte integer. */
+  public int bufToByte2() {
+    return (short) getLE(2, "byte2");
+  }
+
+  /** Reads an unsigned 2-byte integer. */
+  public int bufToUByte2() {
+    return (int) getLE(2, "ubyte2");
+  }
+
+  /** Reads a signed 4-byte integer. */
+  public int bufToByte4() {
+    return (int) getLE(4, "byte4");
+  }
+
+  /** Reads an unsigned 4-byte integer. */
+  public long bufToUByte4() {
+    return getLE(4, "ubyte4");
+  }
+
+  /** Reads a signed 8-byte integer. */
+  public long bufToByte8() {
+    return getLE(8, "byte8");
+  }
+
+  /** Reads an unsigned byte as a boolean (anything but 0 is true). */
+  public boolean bufToBool() {
+    return bufToUByte() != 0;
+  }
+
+  /**
+   * Reads a string up to its ending zero byte.
+   *
+   * @throws ArNetPacketException if the packet ends before the zero byte
+   */
+  public String bufToStr() {
+    for (int i = readPos; i < length; i++) {
+      if (data[i] == 0) {
+        String s = new String(data, readPos, i - readPos, StandardCharsets.UTF_8);
+        readPos = i + 1;
+        return s;
       }
-      return f.getValueType();
-    } catch (IOException | MessagePackException e) {
-      throw new ArNetPacketException("value " + (valuesRead + 1) + " is cut short", e);
     }
+    throw new ArNetPacketException(
+        "packet " + command + ": a string at byte " + readPos + " has no ending zero byte");
   }
 
-  private ArNetPacketException wrongType(String wanted, ValueType got) {
-    return new ArNetPacketException(
-        "expected "
-            + wanted
-            + " as value "
-            + (valuesRead + 1)
-            + " but found "
-            + got.name().toLowerCase(java.util.Locale.ROOT));
+  /**
+   * Reads a double written as text by {@link #doubleToBuf}. "INF" and "-INF" give infinities; a
+   * handler that needs a finite number must check (see {@code NumericArgs}).
+   *
+   * @throws ArNetPacketException if the text is not a number
+   */
+  public double bufToDouble() {
+    String s = bufToStr().trim();
+    return parseDouble(s, command);
   }
 
-  private ArNetPacketException broken(Exception e) {
-    return new ArNetPacketException(
-        "value " + (valuesRead + 1) + " is malformed: " + e.getMessage(), e);
-  }
-
-  /** Reads an integer that fits an int. */
-  public int bufToInt() {
-    long v = bufToLong();
-    if (v < Integer.MIN_VALUE || v > Integer.MAX_VALUE) {
+  /** Reads {@code n} raw bytes. */
+  public byte[] bufToData(int n) {
+    if (n < 0 || readPos + n > length) {
       throw new ArNetPacketException(
-          "value " + valuesRead + " is " + v + ", too large for a 32-bit integer");
+          "packet " + command + " has " + (length - readPos) + " bytes left, not " + n);
+    }
+    byte[] b = Arrays.copyOfRange(data, readPos, readPos + n);
+    readPos += n;
+    return b;
+  }
+
+  /**
+   * Reads a count written by {@link #arrayToBuf}; a count larger than the bytes left (each element
+   * takes at least one) is refused before anything is allocated.
+   */
+  public int bufToArray() {
+    long n = bufToUByte4();
+    if (n > getRemaining()) {
+      throw new ArNetPacketException(
+          "packet "
+              + command
+              + " announces "
+              + n
+              + " elements but has "
+              + getRemaining()
+              + " bytes");
+    }
+    return (int) n;
+  }
+
+  /** Reads an integer written by {@link #intToBuf}. */
+  public long bufToLong() {
+    return bufToByte8();
+  }
+
+  /** Reads an integer written by {@link #intToBuf} that must fit an int. */
+  public int bufToInt() {
+    long v = bufToByte8();
+    if (v < Integer.MIN_VALUE || v > Integer.MAX_VALUE) {
+      throw new ArNetPacketException("packet " + command + ": " + v + " does not fit an int");
     }
     return (int) v;
   }
 
-  /** Reads an integer. */
-  public long bufToLong() {
-    ValueType t = next("an integer");
-    if (t != ValueType.INTEGER) {
-      throw wrongType("an integer", t);
-    }
-    try {
-      long v = in().unpackLong();
-      valuesRead++;
-      return v;
-    } catch (IOException | MessagePackException e) {
-      throw broken(e);
-    }
-  }
-
-  /** Reads a number (an integer is accepted too). */
-  public double bufToDouble() {
-    ValueType t = next("a number");
-    try {
-      double v;
-      if (t == ValueType.FLOAT) {
-        v = in().unpackDouble();
-      } else if (t == ValueType.INTEGER) {
-        v = in().unpackLong();
-      } else {
-        throw wrongType("a number", t);
-      }
-      valuesRead++;
-      return v;
-    } catch (IOException | MessagePackException e) {
-      throw broken(e);
-    }
-  }
-
-  /** Reads a string (nil reads as null). */
-  public String bufToStr() {
-    ValueType t = next("a string");
-    try {
-      if (t == ValueType.NIL) {
-        in().unpackNil();
-        valuesRead++;
-        return null;
-      }
-      if (t != ValueType.STRING) {
-        throw wrongType("a string", t);
-      }
-      int len = in().unpackRawStringHeader();
-      checkLength(len, "string");
-      byte[] b = in().readPayload(len);
-      valuesRead++;
-      return new String(b, java.nio.charset.StandardCharsets.UTF_8);
-    } catch (IOException | MessagePackException e) {
-      throw broken(e);
-    }
-  }
-
-  /** Reads a boolean. */
-  public boolean bufToBool() {
-    ValueType t = next("a boolean");
-    if (t != ValueType.BOOLEAN) {
-      throw wrongType("a boolean", t);
-    }
-    try {
-      boolean v = in().unpackBoolean();
-      valuesRead++;
-      return v;
-    } catch (IOException | MessagePackException e) {
-      throw broken(e);
-    }
-  }
-
-  /** Whether the next value is nil; if so it is consumed. */
-  public boolean bufToNil() {
-    if (!hasMore()) {
-      return false;
-    }
-    try {
-      if (in().tryUnpackNil()) {
-        valuesRead++;
-        return true;
-      }
-      return false;
-    } catch (IOException | MessagePackException e) {
-      throw broken(e);
-    }
-  }
-
-  /** Reads a block of bytes. */
-  public byte[] bufToData() {
-    ValueType t = next("bytes");
-    if (t != ValueType.BINARY) {
-      throw wrongType("bytes", t);
-    }
-    try {
-      int len = in().unpackBinaryHeader();
-      checkLength(len, "byte block");
-      byte[] b = in().readPayload(len);
-      valuesRead++;
-      return b;
-    } catch (IOException | MessagePackException e) {
-      throw broken(e);
-    }
-  }
-
-  /**
-   * Reads the start of an array and returns its element count; the elements are the next values.
-   */
-  public int bufToArray() {
-    ValueType t = next("an array");
-    if (t != ValueType.ARRAY) {
-      throw wrongType("an array", t);
-    }
-    try {
-      int n = in().unpackArrayHeader();
-      // Every element takes at least one byte: a larger count is a lie.
-      checkLength(n, "array");
-      valuesRead++;
-      return n;
-    } catch (IOException | MessagePackException e) {
-      throw broken(e);
-    }
-  }
-
-  /** Reads the start of a map and returns its entry count; then read key, value, key, value ... */
-  public int bufToMap() {
-    ValueType t = next("a map");
-    if (t != ValueType.MAP) {
-      throw wrongType("a map", t);
-    }
-    try {
-      int n = in().unpackMapHeader();
-      checkLength(n, "map");
-      valuesRead++;
-      return n;
-    } catch (IOException | MessagePackException e) {
-      throw broken(e);
-    }
-  }
-
-  /** Reads an array of integers (as written by {@link #intsToBuf}). */
-  public int[] bufToInts() {
-    int n = bufToArray();
-    int[] v = new int[n];
-    for (int i = 0; i < n; i++) {
-      v[i] = bufToInt();
-    }
-    return v;
-  }
-
-  /** Skips the next value (with everything nested in it). */
-  public void skip() {
-    next("a value");
-    try {
-      in().skipValue();
-      valuesRead++;
-    } catch (IOException | MessagePackException e) {
-      throw broken(e);
-    }
-  }
-
-  /**
-   * Reads the next value as a plain Java object: null, Boolean, Long, Double, String, byte[], List
-   * or Map (nesting at most {@link #MAX_DEPTH} deep).
-   */
-  public Object bufToValue() {
-    return readValue(0);
-  }
-
-  private Object readValue(int depth) {
-    if (depth > MAX_DEPTH) {
-      throw new ArNetPacketException("values nested more than " + MAX_DEPTH + " deep");
-    }
-    ValueType t = next("a value");
-    switch (t) {
-      case NIL -> {
-        bufToNil();
-        return null;
-      }
-      case BOOLEAN -> {
-        return bufToBool();
-      }
-      case INTEGER -> {
-        return bufToLong();
-      }
-      case FLOAT -> {
-        return bufToDouble();
-      }
-      case STRING -> {
-        return bufToStr();
-      }
-      case BINARY -> {
-        return bufToData();
-      }
-      case ARRAY -> {
-        int n = bufToArray();
-        List<Object> list = new ArrayList<>(n);
-        for (int i = 0; i < n; i++) {
-          list.add(readValue(depth + 1));
-        }
-        return list;
-      }
-      case MAP -> {
-        int n = bufToMap();
-        Map<Object, Object> map = new LinkedHashMap<>();
-        for (int i = 0; i < n; i++) {
-          Object k = readValue(depth + 1);
-          map.put(k, readValue(depth + 1));
-        }
-        return map;
-      }
-      case EXTENSION -> {
-        skip();
-        return null;
-      }
-    }
-    throw new ArNetPacketException("unknown value type " + t);
-  }
-
-  private void checkLength(long len, String what) {
-    if (len < 0 || len > getRemaining()) {
+  /** Reads a block written by {@link #blobToBuf}. */
+  public byte[] bufToBlob() {
+    long n = bufToUByte4();
+    if (n > getRemaining()) {
       throw new ArNetPacketException(
-          "a "
-              + what
-              + " of "
-              + len
-              + " claimed as value "
-              + (valuesRead + 1)
-              + " but only "
-              + getRemaining()
-              + " bytes are left");
+          "packet " + command + " announces " + n + " bytes but has " + getRemaining());
     }
+    return bufToData((int) n);
+  }
+
+  /** Starts reading from the beginning of the body again. */
+  public void resetRead() {
+    readPos = 0;
+  }
+
+  /** Body bytes (values written, or received). */
+  public int getDataLength() {
+    return length;
+  }
+
+  /** Body bytes read so far. */
+  public int getDataReadLength() {
+    return readPos;
+  }
+
+  /** Body bytes not read yet. */
+  public int getRemaining() {
+    return length - readPos;
+  }
+
+  /** Whether unread bytes remain. */
+  public boolean hasMore() {
+    return readPos < length;
+  }
+
+  /** A copy of the body bytes. */
+  public byte[] toByteArray() {
+    return Arrays.copyOf(data, length);
+  }
+
+  /** A copy of the body bytes not read yet. */
+  public byte[] remainingBytes() {
+    return Arrays.copyOfRange(data, readPos, length);
+  }
+
+  /** A new packet that reads this packet's body (same command), from the start. */
+  public ArNetPacket toReader() {
+    return new ArNetPacket(command, Arrays.copyOf(data, length), length);
+  }
+
+  // ------------------------------------------------------------------ the wire
+
+  /**
+   * The packet as it goes on the wire: sync bytes, total length (little-endian), command
+   * (little-endian), the body, and the checksum (big-endian, see {@link #checksum}).
+   */
+  public byte[] toWire() {
+    int total = HEADER_LENGTH + length + FOOTER_LENGTH;
+    byte[] w = new byte[total];
+    w[0] = (byte) SYNC1;
+    w[1] = (byte) SYNC2;
+    w[2] = (byte) total;
+    w[3] = (byte) (total >>> 8);
+    w[4] = (byte) command;
+    w[5] = (byte) (command >>> 8);
+    System.arraycopy(data, 0, w, HEADER_LENGTH, length);
+    int c = checksum(w, total - FOOTER_LENGTH);
+    w[total - 2] = (byte) (c >>> 8);
+    w[total - 1] = (byte) c;
+    return w;
   }
 
   /**
-   * Checks that the rest of the packet is a well-formed sequence of values, without building them;
-   * the read position is restored afterwards.
+   * Reads one whole wire packet (as {@link #toWire} makes it) from {@code w}.
    *
-   * @throws ArNetPacketException naming the first bad value
+   * @throws ArNetPacketException if the sync bytes, length or checksum are wrong
    */
-  public void validate() {
-    MessageUnpacker saved = unpacker;
-    int savedCount = valuesRead;
-    long start = in().getTotalReadBytes();
-    unpacker = UNPACKER.newUnpacker(data, offset + (int) start, length - (int) start);
-    int savedOffset = offset;
-    int savedLength = length;
-    offset += (int) start;
-    length -= (int) start;
+  public static ArNetPacket fromWire(byte[] w, int off, int len) {
+    if (len < HEADER_LENGTH + FOOTER_LENGTH || len > MAX_LENGTH) {
+      throw new ArNetPacketException("a packet is 8.." + MAX_LENGTH + " bytes, not " + len);
+    }
+    if ((w[off] & 0xFF) != SYNC1 || (w[off + 1] & 0xFF) != SYNC2) {
+      throw new ArNetPacketException("not an ArNetworking packet (bad sync bytes)");
+    }
+    int total = (w[off + 2] & 0xFF) | (w[off + 3] & 0xFF) << 8;
+    if (total != len) {
+      throw new ArNetPacketException("the packet says " + total + " bytes but has " + len);
+    }
+    byte[] whole = off == 0 && w.length == len ? w : Arrays.copyOfRange(w, off, off + len);
+    int want = checksum(whole, len - FOOTER_LENGTH);
+    int got = (whole[len - 2] & 0xFF) << 8 | (whole[len - 1] & 0xFF);
+    if (want != got) {
+      throw new ArNetPacketException(
+          "bad checksum: the packet says " + got + ", its bytes give " + want);
+    }
+    int cmd = (whole[4] & 0xFF) | (whole[5] & 0xFF) << 8;
+    return wrap(cmd, whole, HEADER_LENGTH, len - HEADER_LENGTH - FOOTER_LENGTH);
+  }
+
+  /**
+   * ArNetworking's checksum over the first {@code n} bytes of a packet (header and body, not the
+   * checksum itself): from the fourth byte (the length's high byte) on, 16-bit big-endian words are
+   * summed modulo 65536, and a last odd byte is XORed in. ARIA drops a packet whose checksum
+   * differs, so this must match it bit for bit.
+   */
+  public static int checksum(byte[] b, int n) {
+    int c = 0;
+    int i = 3;
+    int left = n - 2;
+    while (left > 3) {
+      c += ((b[i] & 0xFF) << 8) | (b[i + 1] & 0xFF);
+      c &= 0xFFFF;
+      left -= 2;
+      i += 2;
+    }
+    if (left > 0) {
+      c ^= b[i] & 0xFF;
+    }
+    return c;
+  }
+
+  // ------------------------------------------------------------------ doubles as text
+
+  /**
+   * Formats {@code v} as C's {@code printf("%g")} does (six significant digits, trailing zeros
+   * removed, exponent form for very large or small numbers), "INF" or "-INF" for infinities and
+   * "nan" for NaN — the text ArNetworking puts on the wire for a double.
+   */
+  public static String formatDouble(double v) {
+    if (Double.isNaN(v)) {
+      return "nan";
+    }
+    if (v == Double.POSITIVE_INFINITY) {
+      return "INF";
+    }
+    if (v == Double.NEGATIVE_INFINITY) {
+      return "-INF";
+    }
+    if (v == 0) {
+      return (1 / v < 0) ? "-0" : "0";
+    }
+    String e = String.format(Locale.ROOT, "%.5e", v);
+    int exp = Integer.parseInt(e.substring(e.indexOf('e') + 1));
+    String out;
+    if (exp < -4 || exp >= 6) {
+      String mant = stripZeros(e.substring(0, e.indexOf('e')));
+      String sign = exp < 0 ? "-" : "+";
+      int a = Math.abs(exp);
+      out = mant + "e" + sign + (a < 10 ? "0" : "") + a;
+    } else {
+      out = stripZeros(String.format(Locale.ROOT, "%." + (5 - exp) + "f", v));
+    }
+    return out;
+  }
+
+  private static String stripZeros(String s) {
+    if (s.indexOf('.') < 0) {
+      return s;
+    }
+    int end = s.length();
+    while (s.charAt(end - 1) == '0') {
+      end--;
+    }
+    if (s.charAt(end - 1) == '.') {
+      end--;
+    }
+    return s.substring(0, end);
+  }
+
+  /** Parses a double's text as {@link #bufToDouble} does. */
+  static double parseDouble(String s, int command) {
+    if (s.equals("INF") || s.equals("inf")) {
+      return Double.POSITIVE_INFINITY;
+    }
+    if (s.equals("-INF") || s.equals("-inf")) {
+      return Double.NEGATIVE_INFINITY;
+    }
+    if (s.equalsIgnoreCase("nan") || s.equalsIgnoreCase("-nan")) {
+      return Double.NaN;
+    }
+    if (s.isEmpty() || s.length() > 64 || !s.matches("[-+0-9.eE]+")) {
+      throw new ArNetPacketException(
+          "packet " + command + ": '" + abbreviate(s) + "' is not a number");
+    }
     try {
-      while (hasMore()) {
-        skip();
-      }
-    } finally {
-      offset = savedOffset;
-      length = savedLength;
-      unpacker = saved;
-      valuesRead = savedCount;
+      return Double.parseDouble(s);
+    } catch (NumberFormatException e) {
+      throw new ArNetPacketException(
+          "packet " + command + ": '" + abbreviate(s) + "' is not a number", e);
     }
   }
 
-  /** The values, decoded, for logs and test messages. */
+  private static String abbreviate(String s) {
+    return s.length() > 32 ? s.substring(0, 32) + "..." : s;
+  }
+
   @Override
   public String toString() {
-    ArNetPacket r = packer != null ? toReader() : wrap(data, offset, length);
-    List<Object> values = new ArrayList<>();
-    try {
-      while (r.hasMore()) {
-        Object v = r.bufToValue();
-        values.add(v instanceof byte[] b ? "<" + b.length + " bytes>" : v);
-      }
-    } catch (ArNetPacketException e) {
-      values.add("<malformed: " + e.getMessage() + ">");
+    StringBuilder sb = new StringBuilder("ArNetPacket[command " + command + ", " + length + " B:");
+    for (int i = 0; i < Math.min(length, 32); i++) {
+      sb.append(String.format(Locale.ROOT, " %02x", data[i]));
     }
-    return "ArNetPacket" + values;
+    return sb.append(length > 32 ? " ...]" : "]").toString();
   }
 }

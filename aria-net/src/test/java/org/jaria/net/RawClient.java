@@ -1,6 +1,5 @@
 package org.jaria.net;
 
-import java.io.BufferedInputStream;
 import java.io.DataInputStream;
 import java.io.EOFException;
 import java.io.IOException;
@@ -9,44 +8,34 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.net.SocketException;
-import java.net.SocketTimeoutException;
-import org.jaria.net.protocol.Frames;
-import org.jaria.net.protocol.Kind;
-import org.jaria.net.protocol.PasswordHash;
+import org.jaria.net.protocol.LoginDigest;
 import org.jaria.net.protocol.Protocol;
 
 /**
- * A client that speaks the protocol by hand, frame by frame, for tests that send what a good client
- * never would (garbage, wrong order, nothing at all) or read what the server sends exactly. Every
- * read times out after 10 s, so a test never hangs on a server that stays silent.
+ * A bare ArNetworking socket for tests: sends exactly the bytes a test wants (including garbage)
+ * and reads packets one by one, as ARIA's C++ client would see them.
  */
 public final class RawClient implements AutoCloseable {
-
-  /** A frame received: its kind and the packet positioned after the kind. */
-  public record Frame(Kind kind, ArNetPacket body) {}
 
   private final Socket socket;
   private final DataInputStream in;
   private final OutputStream out;
+  private String passwordKey = "";
 
-  /** Connects to {@code port} on this machine. */
+  /** Connects to the server on the loopback address. */
   public RawClient(int port) throws IOException {
     this(port, 0);
   }
 
-  /**
-   * Connects to {@code port} with a receive buffer of {@code receiveBuffer} bytes (0: the
-   * system's), before connecting so the window is small from the start.
-   */
+  /** Connects with a small receive buffer (a client that reads slowly), 0 for the default. */
   public RawClient(int port, int receiveBuffer) throws IOException {
     socket = new Socket();
     if (receiveBuffer > 0) {
       socket.setReceiveBufferSize(receiveBuffer);
     }
-    socket.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), 10_000);
-    socket.setSoTimeout(10_000);
-    socket.setTcpNoDelay(true);
-    in = new DataInputStream(new BufferedInputStream(socket.getInputStream()));
+    socket.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), 5000);
+    socket.setSoTimeout(20_000);
+    in = new DataInputStream(socket.getInputStream());
     out = socket.getOutputStream();
   }
 
@@ -56,79 +45,103 @@ public final class RawClient implements AutoCloseable {
     out.flush();
   }
 
-  /** Sends a frame of {@code kind} with {@code values}. */
-  public void send(Kind kind, Object... values) throws IOException {
-    send(Frames.frame(kind, values));
+  /** Sends a packet. */
+  public void send(ArNetPacket p) throws IOException {
+    send(p.toWire());
   }
 
-  /** Reads one frame (fails the read after 10 s of silence). */
-  public Frame read() throws IOException {
-    int len = in.readInt();
-    if (len <= 0 || len > (64 << 20)) {
-      throw new IOException("bad frame length " + len);
+  /** Sends a request once: command {@code command} with {@code body}. */
+  public void requestOnce(int command, ArNetPacket body) throws IOException {
+    ArNetPacket p = new ArNetPacket(command);
+    p.dataToBuf(body.toByteArray());
+    send(p);
+  }
+
+  /** Sends ArNetworking's REQUEST for {@code command} every {@code ms}. */
+  public void request(int command, int ms) throws IOException {
+    ArNetPacket p = new ArNetPacket(Protocol.CLIENT_REQUEST);
+    p.uByte2ToBuf(command).byte4ToBuf(ms);
+    send(p);
+  }
+
+  /** Reads one packet. */
+  public ArNetPacket read() throws IOException {
+    byte[] h = new byte[4];
+    in.readFully(h);
+    int len = (h[2] & 0xff) | (h[3] & 0xff) << 8;
+    if (len < 8 || len > ArNetPacket.MAX_LENGTH) {
+      throw new IOException("a packet of " + len + " bytes");
     }
-    byte[] b = new byte[len];
-    in.readFully(b);
-    ArNetPacket p = ArNetPacket.wrap(b);
-    return new Frame(Kind.fromCode(p.bufToLong()), p);
+    byte[] w = new byte[len];
+    System.arraycopy(h, 0, w, 0, 4);
+    in.readFully(w, 4, len - 4);
+    return ArNetPacket.fromWire(w, 0, len);
   }
 
-  /** Reads frames until one of {@code kind}, skipping updates and others. */
-  public Frame readUntil(Kind kind) throws IOException {
+  /** Reads until a packet of {@code command}. */
+  public ArNetPacket readUntil(int command) throws IOException {
     while (true) {
-      Frame f = read();
-      if (f.kind() == kind) {
-        return f;
+      ArNetPacket p = read();
+      if (p.getCommand() == command) {
+        return p;
+      }
+    }
+  }
+
+  /** Reads the server's introduction (keeping its password key). */
+  public ArNetPacket readIntroduction() throws IOException {
+    ArNetPacket p = readUntil(Protocol.SERVER_INTRODUCTION);
+    p.bufToStr();
+    p.bufToUByte2();
+    p.bufToUByte4();
+    p.bufToUByte4();
+    passwordKey = p.bufToStr();
+    p.resetRead();
+    return p;
+  }
+
+  /**
+   * Logs in as ARIA's client does (introduction with the MD5 digest, TCP only) and returns the
+   * server's answer: CONNECTED or REJECTED.
+   */
+  public ArNetPacket login(String user, String password) throws IOException {
+    readIntroduction();
+    ArNetPacket p = new ArNetPacket(Protocol.CLIENT_INTRODUCTION);
+    p.uByte2ToBuf(0)
+        .strToBuf(user)
+        .dataToBuf(LoginDigest.digest("", passwordKey, password == null ? "" : password))
+        .strToBuf("")
+        .byteToBuf(0);
+    send(p);
+    send(new ArNetPacket(Protocol.CLIENT_TCP_ONLY));
+    while (true) {
+      ArNetPacket a = read();
+      if (a.getCommand() == Protocol.SERVER_CONNECTED
+          || a.getCommand() == Protocol.SERVER_REJECTED) {
+        return a;
       }
     }
   }
 
   /**
-   * Logs in: HELLO, CHALLENGE, LOGIN, then returns the server's answer (WELCOME or REFUSED).
-   *
-   * @param password null for a server that needs none
-   */
-  public Frame login(String user, String password) throws IOException {
-    send(Kind.HELLO, Protocol.MAGIC, Protocol.VERSION, "raw", user);
-    Frame ch = read();
-    if (ch.kind() != Kind.CHALLENGE) {
-      return ch;
-    }
-    ArNetPacket p = ch.body();
-    p.bufToStr();
-    p.bufToLong();
-    p.bufToStr();
-    byte[] nonce = p.bufToData();
-    byte[] salt = p.bufToData();
-    int iterations = p.bufToInt();
-    byte[] proof = new byte[0];
-    if (iterations > 0) {
-      proof =
-          PasswordHash.proof(
-              PasswordHash.derive(password == null ? "" : password, salt, iterations), nonce);
-    }
-    send(Kind.LOGIN, (Object) proof);
-    return read();
-  }
-
-  /**
-   * Reads until the server closes the connection.
-   *
-   * @return the code of the last CLOSING or REFUSED frame, or -1 if none came
+   * Reads until the server closes the connection: returns the REJECTED reason or SHUTDOWN's command
+   * (1) if one came last, else -1.
    */
   public long readUntilClosed() throws IOException {
-    long code = -1;
+    long last = -1;
     try {
       while (true) {
-        Frame f = read();
-        if (f.kind() == Kind.CLOSING || f.kind() == Kind.REFUSED) {
-          code = f.body().bufToLong();
+        ArNetPacket p = read();
+        if (p.getCommand() == Protocol.SERVER_SHUTDOWN) {
+          last = Protocol.SERVER_SHUTDOWN;
+        } else if (p.getCommand() == Protocol.SERVER_REJECTED) {
+          last = p.bufToByte2();
         }
       }
     } catch (EOFException | SocketException e) {
-      return code;
-    } catch (SocketTimeoutException e) {
-      throw new IOException("the server did not close the connection within 10 s", e);
+      return last;
+    } catch (ArNetPacketException e) {
+      return -1;
     }
   }
 

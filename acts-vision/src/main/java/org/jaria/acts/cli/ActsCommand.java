@@ -18,6 +18,7 @@ import org.jaria.acts.image.CameraSource;
 import org.jaria.acts.image.ImageSequenceSource;
 import org.jaria.acts.image.ImageSource;
 import org.jaria.acts.image.StillImageSource;
+import org.jaria.acts.sav.SavServer;
 import org.jaria.acts.server.ActsServer;
 import org.jaria.acts.server.ServerSettings;
 import org.jaria.acts.server.VisionPipeline;
@@ -103,8 +104,18 @@ public final class ActsCommand implements Callable<Integer> {
       description = "Set a camera parameter, e.g. -s brightness 0.3 (repeatable; see -P).")
   List<String> cameraSettings = new ArrayList<>();
 
-  @Option(names = "-S", description = "No audio/video server (JAria has none; accepted).")
+  @Option(
+      names = "-S",
+      description =
+          "Do not start the SAV video server (ArNetworking on port 7070, or any free port with -p"
+              + " 0).")
   boolean noAvServer;
+
+  @Option(
+      names = "--sav-port",
+      paramLabel = "PORT",
+      description = "Port of the SAV video server (default 7070; any free one with -p 0).")
+  Integer savPort;
 
   @Option(
       names = "-t",
@@ -273,11 +284,30 @@ public final class ActsCommand implements Callable<Integer> {
               + "; max "
               + (fps == 0 ? "unlimited" : fps)
               + " frames/s");
+      SavServer sav = null;
+      if (!noAvServer) {
+        try {
+          sav =
+              SavServer.open(
+                  pipeline::lastFrame,
+                  s::framesProcessed,
+                  w,
+                  h,
+                  bindHost == null || bindHost.isEmpty() ? null : bindHost,
+                  savPort != null ? savPort : p == 0 ? 0 : SavServer.DEFAULT_PORT);
+          out.println("SAV video server (ArNetworking) on port " + sav.getPort());
+        } catch (IOException e) {
+          err.println("acts: no SAV video server (" + e.getMessage() + "); -S turns it off");
+        }
+      }
       out.flush();
       started.countDown();
       try {
         s.awaitStopRequest();
       } finally {
+        if (sav != null) {
+          sav.close();
+        }
         s.stop();
         try {
           Runtime.getRuntime().removeShutdownHook(hook);
@@ -309,9 +339,6 @@ public final class ActsCommand implements Callable<Integer> {
       } else {
         err.println("acts: note: -V " + v + " ignored; OpenCV negotiates the video format");
       }
-    }
-    if (noAvServer) {
-      err.println("acts: note: -S accepted; JAria has no audio/video server to disable");
     }
     if (headlessConfig != null) {
       err.println("acts: note: -t: this server never shows graphics");

@@ -8,7 +8,6 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
-import java.nio.ByteBuffer;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -18,11 +17,11 @@ import java.util.Random;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import org.jaria.map.ArMap;
+import org.jaria.net.ArNetPacket;
 import org.jaria.net.arnl.ArnlNavigation;
 import org.jaria.net.client.ArClientBase;
 import org.jaria.net.client.ArClientException;
-import org.jaria.net.protocol.Frames;
-import org.jaria.net.protocol.Kind;
+import org.jaria.net.client.ArNetPacketArgs;
 import org.jaria.net.protocol.Protocol;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ArServerClient;
@@ -133,8 +132,13 @@ public final class NetBenchmark {
           while (!stop) {
             rnd.nextBytes(chunk);
             if (first && rnd.nextBoolean()) {
-              // A plausible length, so the garbage reaches the message decoder.
-              ByteBuffer.wrap(chunk).putInt(0, 200 + rnd.nextInt(300));
+              // ArNetworking's sync bytes and a plausible length, so the garbage reaches the
+              // checksum.
+              int len = 200 + rnd.nextInt(300);
+              chunk[0] = 0x0f;
+              chunk[1] = 0x0c;
+              chunk[2] = (byte) len;
+              chunk[3] = (byte) (len >> 8);
             }
             first = false;
             out.write(chunk);
@@ -239,7 +243,11 @@ public final class NetBenchmark {
           c.addHandler("update", p -> u.incrementAndGet());
           for (String d : MONITOR_DATA) {
             c.addHandler(d, p -> totalUpdates.incrementAndGet());
-            var unused = c.request(d, rateMs);
+            // ArNetworking sends one named sensor's readings per request.
+            var unused =
+                d.equals("getSensorCurrent")
+                    ? c.request(d, rateMs, ArNetPacketArgs.of("sonar"))
+                    : c.request(d, rateMs);
           }
           c.connect("127.0.0.1", s.port(), "", "");
           clients.add(c);
@@ -327,14 +335,16 @@ public final class NetBenchmark {
     ServerOptions o = server.getOptions();
     long heapBefore = usedHeap();
     // A client that stops reading (a small receive window, as a stuck program's socket fills)
-    // but keeps pinging, so only the server's stall detection can tell.
+    // and never sends again, so only the server's stall detection can tell.
     try (Socket raw = new Socket()) {
       raw.setReceiveBufferSize(4096);
       raw.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), s.port()), 2000);
       OutputStream out = raw.getOutputStream();
-      out.write(Frames.frame(Kind.HELLO, Protocol.MAGIC, Protocol.VERSION, "stuck", ""));
-      out.write(Frames.frame(Kind.LOGIN, (Object) new byte[0]));
-      int req = 1;
+      // ArNetworking's login by hand (the server is open, so the digest is not checked).
+      ArNetPacket intro = new ArNetPacket(Protocol.CLIENT_INTRODUCTION);
+      intro.uByte2ToBuf(0).strToBuf("stuck").dataToBuf(new byte[16]).strToBuf("").byteToBuf(0);
+      out.write(intro.toWire());
+      out.write(new ArNetPacket(Protocol.CLIENT_TCP_ONLY).toWire());
       for (String d : List.of("update", "getSensorCurrent", "getLocPoints", "getMap", "getPath")) {
         int id =
             server.dataList().stream()
@@ -342,7 +352,9 @@ public final class NetBenchmark {
                 .findFirst()
                 .orElseThrow()
                 .id();
-        out.write(Frames.frame(Kind.SUBSCRIBE, req++, id, 50));
+        ArNetPacket r = new ArNetPacket(Protocol.CLIENT_REQUEST);
+        r.uByte2ToBuf(id).byte4ToBuf(50);
+        out.write(r.toWire());
       }
       out.flush();
       ArServerClient c = waitForClient(server);
@@ -350,15 +362,9 @@ public final class NetBenchmark {
       long start = System.nanoTime();
       long end = start + phase.toNanos();
       long droppedAt = -1;
-      long nextPing = start;
       while (System.nanoTime() < end) {
         if (c.isClosed() && droppedAt < 0) {
           droppedAt = System.nanoTime() - start;
-        }
-        if (!c.isClosed() && System.nanoTime() >= nextPing) {
-          out.write(Frames.frame(Kind.PING, req++));
-          out.flush();
-          nextPing += TimeUnit.SECONDS.toNanos(5);
         }
         pause(Duration.ofMillis(20));
       }
@@ -419,7 +425,7 @@ public final class NetBenchmark {
     while (System.nanoTime() < end) {
       List<ArServerClient> l = server.getClients();
       for (ArServerClient c : l) {
-        if (c.getClientName().equals("stuck") && c.isLoggedIn()) {
+        if (c.getUser().equals("stuck") && c.isLoggedIn()) {
           return c;
         }
       }

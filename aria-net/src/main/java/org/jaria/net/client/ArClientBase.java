@@ -1,46 +1,60 @@
 package org.jaria.net.client;
 
+import java.io.BufferedInputStream;
+import java.io.DataInputStream;
+import java.io.EOFException;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
 import java.time.Duration;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Collections;
+import java.util.Deque;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 import org.jaria.net.ArNetPacket;
+import org.jaria.net.ArNetPacketException;
 import org.jaria.net.data.DataInfo;
-import org.jaria.net.protocol.Frames;
-import org.jaria.net.protocol.Kind;
+import org.jaria.net.protocol.LoginDigest;
 import org.jaria.net.protocol.NetError;
+import org.jaria.net.protocol.Protocol;
+import org.jaria.net.server.ArServerBase;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * A client of a robot's {@link org.jaria.net.server.ArServerBase} (ArNetworking's {@code
- * ArClientBase}): connect and log in, ask for data once, subscribe to published data at a rate with
- * a handler, send commands, disconnect.
+ * A client of an ArNetworking server (ARIA's {@code ArClientBase}): connects and logs in, learns
+ * the server's data list, and then asks for data by name — once ({@link #requestOnce}), at an
+ * interval ({@link #request}) — receiving the packets in handlers ({@link #addHandler}). It talks
+ * to ARIA's C++ servers (serverDemo, ARNL's guiServer) as well as to JAria's {@code ArServerBase}.
  *
  * <pre>{@code
  * try (ArClientBase client = new ArClientBase("monitor")) {
- *   client.connect("robot.local", 7272, "operator", "secret");
+ *   client.connect("localhost", 7272, "", "");
  *   client.addHandler("update", p -> System.out.println(RobotUpdate.read(p)));
- *   client.request("update", 100);                        // 10 Hz
- *   client.requestOnce("gotoPose", 2000.0, 0.0, 0.0).get(); // a command
+ *   client.request("update", 100);
+ *   client.requestOnce("ratioDrive", ArNetPacketArgs.of(50.0, 0.0, 100.0));
  * }
  * }</pre>
  *
- * <p><b>Threads.</b> Every method may be called from any thread and none blocks on the network
- * except {@link #connect} (requests are queued to a writer thread and return futures). Handlers and
- * listeners run on the client's reader thread, one at a time, in arrival order; a JavaFX program
- * hands their work to the application thread with {@code Platform.runLater}, and keeps them short.
+ * <p>The client asks for TCP only (it sends ArNetworking's TCP_ONLY), which every ArNetworking
+ * server honours. One reader thread ("jaria-net-client-NAME") receives packets and runs the
+ * handlers; handlers must be quick. Sending is thread-safe.
  *
- * <p><b>Reconnecting.</b> After a disconnect (asked for, or a lost connection) the same client can
- * {@link #connect} again: handlers, listeners and subscriptions are kept, and subscriptions are
- * sent again once logged in.
+ * <p><b>Replies.</b> ArNetworking replies carry the request's command number but no request id: a
+ * {@link #requestOnce} future completes with the next packet of that data, in order. Data whose
+ * flags say it returns nothing (RETURN_NONE) complete at once with an empty packet. A JAria server
+ * reports a failed request with its {@code requestFailed} packet, which fails the future.
  */
 public final class ArClientBase implements AutoCloseable {
 
@@ -48,16 +62,28 @@ public final class ArClientBase implements AutoCloseable {
 
   private final ClientOptions options;
   private final Map<String, List<Consumer<ArNetPacket>>> handlers = new ConcurrentHashMap<>();
-  private final Map<String, Long> subscriptions = new ConcurrentHashMap<>();
-  private final Map<String, CompletableFuture<Duration>> subscribeWaiters =
-      new ConcurrentHashMap<>();
+  private final Map<String, Long> requests = new ConcurrentHashMap<>();
+  private final Map<String, byte[]> requestArgs = new ConcurrentHashMap<>();
   private final List<ConnectionListener> listeners = new CopyOnWriteArrayList<>();
-  private final AtomicInteger nextReqId = new AtomicInteger();
   private final AtomicLong updates = new AtomicLong();
   private final AtomicLong handlerFailures = new AtomicLong();
-  private final ClientConnection.Events events = new Events();
-  private volatile ClientConnection conn;
+  private final Object sendLock = new Object();
+
+  // Guarded by "this".
+  private final Map<Integer, DataInfo> byCommand = new LinkedHashMap<>();
+  private final Map<String, DataInfo> byName = new LinkedHashMap<>();
+  private final Map<Integer, Deque<CompletableFuture<ArNetPacket>>> waiting = new LinkedHashMap<>();
+  private final Map<Integer, java.io.ByteArrayOutputStream> partial = new LinkedHashMap<>();
+
+  /** Largest reply of several packets gathered for a {@link #requestOnce}. */
+  private static final int MAX_GATHERED = 64 << 20;
+
+  private volatile Socket socket;
+  private volatile OutputStream out;
+  private volatile Thread reader;
+  private volatile boolean connected;
   private volatile String lastError;
+  private volatile String serverName = "";
 
   /** A client with the default options. */
   public ArClientBase(String name) {
@@ -72,41 +98,317 @@ public final class ArClientBase implements AutoCloseable {
   // ------------------------------------------------------------------ connecting
 
   /**
-   * Connects and logs in, waiting at most the connect timeout. Subscriptions made earlier are sent
-   * once logged in.
+   * Connects and logs in, waiting at most the connect timeout. Requests made at an interval before
+   * are sent again once logged in.
    *
    * @param user user name ("" for a server that needs no login)
    * @param password the password ("" or null for none)
-   * @throws ArClientException if the server cannot be reached or refuses the login: the message
-   *     says which (for example "login refused: wrong user name or password")
+   * @throws ArClientException if the server cannot be reached, is not an ArNetworking server, or
+   *     rejects the login: the message says which
    * @throws IllegalStateException if already connected
    */
-  public void connect(String host, int port, String user, String password)
+  public synchronized void connect(String host, int port, String user, String password)
       throws ArClientException {
-    ClientConnection c;
-    synchronized (this) {
-      ClientConnection old = conn;
-      if (old != null && !old.isClosed()) {
-        throw new IllegalStateException("already connected; disconnect() first");
-      }
-      if (old != null) {
-        joinQuietly(old);
-      }
-      try {
-        c = ClientConnection.open(options, events, host, port, user, password);
-      } catch (ArClientException e) {
-        lastError = e.getMessage();
-        throw e;
-      }
-      conn = c;
-      c.start("jaria-net-client-" + options.name() + "-" + c.clientId);
-      for (Map.Entry<String, Long> s : subscriptions.entrySet()) {
-        sendSubscribe(c, s.getKey(), s.getValue());
+    if (connected) {
+      throw new IllegalStateException("already connected; disconnect() first");
+    }
+    Thread old = reader;
+    if (old != null) {
+      joinQuietly(old);
+    }
+    byCommand.clear();
+    byName.clear();
+    Socket s = new Socket();
+    try {
+      int timeout = (int) options.connectTimeout().toMillis();
+      s.connect(new InetSocketAddress(host, port), timeout);
+      s.setTcpNoDelay(true);
+      s.setSoTimeout(timeout);
+      DataInputStream in = new DataInputStream(new BufferedInputStream(s.getInputStream()));
+      OutputStream o = s.getOutputStream();
+      login(in, o, user == null ? "" : user, password == null ? "" : password);
+      s.setSoTimeout(0);
+      socket = s;
+      out = o;
+      connected = true;
+      serverName = "ArNetworking server at " + host + ":" + port;
+      Thread t = new Thread(() -> readLoop(in), "jaria-net-client-" + options.name());
+      t.setDaemon(true);
+      reader = t;
+      t.start();
+    } catch (SocketTimeoutException e) {
+      closeQuietly(s);
+      throw fail(
+          "no login answer from "
+              + host
+              + ":"
+              + port
+              + " within "
+              + options.connectTimeout().toMillis()
+              + " ms: is it an ArNetworking server?");
+    } catch (IOException e) {
+      closeQuietly(s);
+      throw fail(
+          "cannot connect to "
+              + host
+              + ":"
+              + port
+              + " ("
+              + e.getMessage()
+              + "): is the server running there?");
+    } catch (ArNetPacketException e) {
+      closeQuietly(s);
+      throw fail(host + ":" + port + " sent something that is not ArNetworking: " + e.getMessage());
+    }
+    for (Map.Entry<String, Long> r : requests.entrySet()) {
+      if (byName.containsKey(r.getKey())) {
+        sendRequest(r.getKey(), r.getValue(), requestArgs.get(r.getKey()));
       }
     }
-    log.info("connected to {} at {}:{} as '{}'", c.serverName, host, port, user);
+    log.info("connected to {} as '{}' ({} data)", serverName, user, byName.size());
     for (ConnectionListener l : listeners) {
       l.connected(this);
+    }
+  }
+
+  private ArClientException fail(String why) {
+    lastError = why;
+    return new ArClientException(why);
+  }
+
+  private void login(DataInputStream in, OutputStream o, String user, String password)
+      throws IOException, ArClientException {
+    ArNetPacket intro = readPacket(in);
+    if (intro.getCommand() != Protocol.SERVER_INTRODUCTION) {
+      throw fail("the server did not introduce itself (got command " + intro.getCommand() + ")");
+    }
+    intro.bufToStr(); // version
+    intro.bufToUByte2(); // its UDP port: we use TCP only
+    intro.bufToUByte4(); // auth key, for UDP
+    intro.bufToUByte4(); // intro key, for UDP
+    String passwordKey = intro.bufToStr();
+    ArNetPacket reply = new ArNetPacket(Protocol.CLIENT_INTRODUCTION);
+    reply
+        .uByte2ToBuf(0)
+        .strToBuf(user)
+        .dataToBuf(LoginDigest.digest(options.serverKey(), passwordKey, password))
+        .strToBuf(Protocol.JARIA_ACK_VERSION)
+        .byteToBuf(0);
+    o.write(reply.toWire());
+    o.write(new ArNetPacket(Protocol.CLIENT_TCP_ONLY).toWire());
+    o.flush();
+    int listed = -1;
+    int argRet = 0;
+    int groups = 0;
+    while (listed < 0 || argRet < listed || groups < listed) {
+      ArNetPacket p = readPacket(in);
+      switch (p.getCommand()) {
+        case Protocol.SERVER_REJECTED -> {
+          int reason = p.bufToByte2();
+          String text = p.hasMore() ? p.bufToStr() : "";
+          throw fail(rejection(reason, text));
+        }
+        case Protocol.SERVER_SHUTDOWN -> throw fail("the server closed the connection at login");
+        case Protocol.SERVER_LIST -> listed = Math.max(listed, 0) + buildList(p);
+        case Protocol.SERVER_LIST_ARGRET -> argRet += buildList(p);
+        case Protocol.SERVER_LIST_GROUP_AND_FLAGS -> groups += buildList(p);
+        default -> {
+          // CONNECTED, TCP_ONLY, UDP_CONFIRMATION: nothing to do.
+        }
+      }
+    }
+  }
+
+  /** What a REJECTED reason means, for people. */
+  static String rejection(int reason, String text) {
+    String why =
+        switch (reason) {
+          case Protocol.REJECTED_BAD_LOGIN -> "login refused: wrong user name or password";
+          case Protocol.REJECTED_CENTRAL_SERVER ->
+              "the robot is served by a central server at " + text;
+          case Protocol.REJECTED_SERVER_PROTOCOL -> "the server wants another protocol version";
+          case Protocol.REJECTED_TOO_MANY_CLIENTS -> "the server has its maximum of clients";
+          case Protocol.REJECTED_WRONG_TYPE -> "the server wants another type of client";
+          default -> "rejected (reason " + reason + ")";
+        };
+    return text.isEmpty() || reason == Protocol.REJECTED_CENTRAL_SERVER ? why : why + ": " + text;
+  }
+
+  /** Adds one list packet to the data list; returns how many entries it had. */
+  private synchronized int buildList(ArNetPacket p) {
+    int n = p.bufToUByte2();
+    for (int i = 0; i < n; i++) {
+      int cmd = p.bufToUByte2();
+      String a = p.bufToStr();
+      String b = p.bufToStr();
+      DataInfo d = byCommand.get(cmd);
+      switch (p.getCommand()) {
+        case Protocol.SERVER_LIST, Protocol.SERVER_LIST_SINGLE ->
+            d = new DataInfo(cmd, a, b, "", "", "", "");
+        case Protocol.SERVER_LIST_ARGRET, Protocol.SERVER_LIST_ARGRET_SINGLE -> {
+          if (d != null) {
+            d = d.withArgRet(a, b);
+          }
+        }
+        default -> {
+          if (d != null) {
+            d = d.withGroupAndFlags(a, b);
+          }
+        }
+      }
+      if (d != null) {
+        byCommand.put(cmd, d);
+        byName.put(d.name(), d);
+      }
+    }
+    return n;
+  }
+
+  private static ArNetPacket readPacket(DataInputStream in) throws IOException {
+    int s1 = in.readUnsignedByte();
+    int s2 = in.readUnsignedByte();
+    if (s1 != ArNetPacket.SYNC1 || s2 != ArNetPacket.SYNC2) {
+      throw new ArNetPacketException(
+          String.format("a packet starts with %02x %02x, not 0f 0c", s1, s2));
+    }
+    int lo = in.readUnsignedByte();
+    int hi = in.readUnsignedByte();
+    int len = lo | hi << 8;
+    if (len < ArNetPacket.HEADER_LENGTH + ArNetPacket.FOOTER_LENGTH
+        || len > ArNetPacket.MAX_LENGTH) {
+      throw new ArNetPacketException("a packet announced " + len + " bytes");
+    }
+    byte[] w = new byte[len];
+    w[0] = (byte) s1;
+    w[1] = (byte) s2;
+    w[2] = (byte) lo;
+    w[3] = (byte) hi;
+    in.readFully(w, 4, len - 4);
+    return ArNetPacket.fromWire(w, 0, len);
+  }
+
+  private void readLoop(DataInputStream in) {
+    String why = "the connection was closed";
+    try {
+      while (connected) {
+        ArNetPacket p = readPacket(in);
+        if (!dispatch(p)) {
+          why = "the server shut the connection down";
+          break;
+        }
+      }
+    } catch (EOFException e) {
+      why = "the server closed the connection";
+    } catch (IOException e) {
+      why = connected ? "connection lost: " + e.getMessage() : "disconnected";
+    } catch (ArNetPacketException e) {
+      why = "the server sent a broken packet: " + e.getMessage();
+    }
+    lost(why);
+  }
+
+  /** Handles one packet; false if the server shut down. */
+  private boolean dispatch(ArNetPacket p) {
+    int cmd = p.getCommand();
+    if (cmd == Protocol.SERVER_SHUTDOWN) {
+      return false;
+    }
+    if (cmd < Protocol.FIRST_DATA_COMMAND) {
+      if (cmd >= Protocol.SERVER_LIST && cmd <= Protocol.SERVER_LIST_GROUP_AND_FLAGS_SINGLE) {
+        buildList(p);
+      }
+      return true;
+    }
+    DataInfo d;
+    CompletableFuture<ArNetPacket> f = null;
+    ArNetPacket gathered = null;
+    synchronized (this) {
+      d = byCommand.get(cmd);
+      if (d != null && d.name().equals("requestFailed")) {
+        failRequest(p);
+        return true;
+      }
+      Deque<CompletableFuture<ArNetPacket>> q = waiting.get(cmd);
+      if (q != null && !q.isEmpty()) {
+        if (d != null && d.hasDataFlag("RETURN_UNTIL_EMPTY")) {
+          // A reply of several packets, ended by an empty one: gathered into one reader.
+          java.io.ByteArrayOutputStream b =
+              partial.computeIfAbsent(cmd, k -> new java.io.ByteArrayOutputStream());
+          if (p.getDataLength() > 0) {
+            if (b.size() + p.getDataLength() > MAX_GATHERED) {
+              partial.remove(cmd);
+              q.poll()
+                  .completeExceptionally(
+                      new ArClientException("the reply of " + d.name() + " is over 64 MiB"));
+            } else {
+              b.writeBytes(p.toByteArray());
+            }
+          } else {
+            partial.remove(cmd);
+            byte[] all = b.toByteArray();
+            f = q.poll();
+            gathered = ArNetPacket.wrap(cmd, all, 0, all.length);
+          }
+        } else {
+          f = q.poll();
+        }
+      }
+    }
+    updates.incrementAndGet();
+    if (f != null) {
+      f.complete(gathered != null ? gathered : p.toReader());
+    }
+    if (d != null) {
+      for (Consumer<ArNetPacket> h : handlers.getOrDefault(d.name(), List.of())) {
+        try {
+          h.accept(p.toReader());
+        } catch (RuntimeException e) {
+          handlerFailures.incrementAndGet();
+          log.warn("a handler of {} failed", d.name(), e);
+        }
+      }
+    }
+    return true;
+  }
+
+  private void failRequest(ArNetPacket p) {
+    String name = p.bufToStr();
+    String why = p.bufToStr();
+    NetError code = p.hasMore() ? NetError.fromCode(p.bufToByte2()) : null;
+    DataInfo d = byName.get(name);
+    if (d != null) {
+      Deque<CompletableFuture<ArNetPacket>> q = waiting.get(d.id());
+      CompletableFuture<ArNetPacket> f = q == null ? null : q.poll();
+      if (f != null) {
+        f.completeExceptionally(new ArClientException(code, why));
+        return;
+      }
+    }
+    log.info("the server says a request failed: {}", why);
+  }
+
+  private void lost(String why) {
+    boolean was;
+    List<CompletableFuture<ArNetPacket>> pending = new ArrayList<>();
+    synchronized (this) {
+      was = connected;
+      connected = false;
+      for (Deque<CompletableFuture<ArNetPacket>> q : waiting.values()) {
+        pending.addAll(q);
+      }
+      waiting.clear();
+      partial.clear();
+    }
+    closeQuietly(socket);
+    for (CompletableFuture<ArNetPacket> f : pending) {
+      f.completeExceptionally(new ArClientException("disconnected: " + why));
+    }
+    if (was) {
+      lastError = why;
+      log.info("disconnected from {}: {}", serverName, why);
+      for (ConnectionListener l : listeners) {
+        l.disconnected(this, why);
+      }
     }
   }
 
@@ -125,44 +427,56 @@ public final class ArClientBase implements AutoCloseable {
 
   /** Whether connected and logged in. */
   public boolean isConnected() {
-    ClientConnection c = conn;
-    return c != null && !c.isClosed();
+    return connected;
   }
 
-  /** Why the last connection attempt failed or the last connection ended, or null. */
+  /** Why the last connect failed or the connection was lost (null if it never was). */
   public String getLastError() {
     return lastError;
   }
 
-  /** The server's name, or null before the first connection. */
+  /** The server, for people ("ArNetworking server at host:port"). */
   public String getServerName() {
-    ClientConnection c = conn;
-    return c == null ? null : c.serverName;
+    return serverName;
   }
 
-  /**
-   * Says goodbye to the server and closes the connection, waiting for the client's threads to end.
-   * Handlers and subscriptions are kept for a later {@link #connect}.
-   */
+  /** Says goodbye (ArNetworking's SHUTDOWN) and closes the connection; safe to call again. */
   public void disconnect() {
-    ClientConnection c = conn;
-    if (c != null) {
-      c.closeGracefully("disconnected by the client");
-      joinQuietly(c);
+    if (connected) {
+      try {
+        send(new ArNetPacket(Protocol.CLIENT_SHUTDOWN));
+      } catch (ArClientException e) {
+        // Closing anyway.
+      }
+    }
+    lost("disconnected");
+    Thread t = reader;
+    if (t != null && t != Thread.currentThread()) {
+      joinQuietly(t);
     }
   }
 
-  /** {@link #disconnect()}. */
+  /** Disconnects. */
   @Override
   public void close() {
     disconnect();
   }
 
-  private static void joinQuietly(ClientConnection c) {
+  private static void joinQuietly(Thread t) {
     try {
-      c.join();
+      t.join(TimeUnit.SECONDS.toMillis(5));
     } catch (InterruptedException e) {
       Thread.currentThread().interrupt();
+    }
+  }
+
+  private static void closeQuietly(Socket s) {
+    if (s != null) {
+      try {
+        s.close();
+      } catch (IOException e) {
+        // Nothing more to do.
+      }
     }
   }
 
@@ -178,121 +492,153 @@ public final class ArClientBase implements AutoCloseable {
 
   // ------------------------------------------------------------------ data
 
-  /** The data the server offers this user (empty when not connected). */
-  public List<DataInfo> getDataList() {
-    ClientConnection c = conn;
-    return c == null ? List.of() : List.copyOf(c.byName.values());
+  /** The server's data list (what this user may use), in command order. */
+  public synchronized List<DataInfo> getDataList() {
+    return List.copyOf(byCommand.values());
   }
 
-  /** Whether the server offers data of this name (ArNetworking's {@code dataExists}). */
-  public boolean dataExists(String name) {
-    ClientConnection c = conn;
-    return c != null && c.byName.containsKey(name);
+  /** Whether the server offers data {@code name} (ArNetworking's {@code dataExists}). */
+  public synchronized boolean dataExists(String name) {
+    return byName.containsKey(name);
+  }
+
+  /** The command number of {@code name}, or 0 (ArNetworking's {@code findCommandFromName}). */
+  public synchronized int findCommandFromName(String name) {
+    DataInfo d = byName.get(name);
+    return d == null ? 0 : d.id();
+  }
+
+  private synchronized DataInfo need(String name) throws ArClientException {
+    if (!connected) {
+      throw new ArClientException("not connected; connect() first");
+    }
+    DataInfo d = byName.get(name);
+    if (d == null) {
+      throw new ArClientException("the server has no data '" + name + "'");
+    }
+    return d;
+  }
+
+  private void send(ArNetPacket p) throws ArClientException {
+    OutputStream o = out;
+    if (o == null || !connected) {
+      throw new ArClientException("not connected; connect() first");
+    }
+    synchronized (sendLock) {
+      try {
+        o.write(p.toWire());
+        o.flush();
+      } catch (IOException e) {
+        throw new ArClientException("sending failed: " + e.getMessage());
+      }
+    }
   }
 
   /**
-   * Asks for data once, or sends a command: the future completes with the reply (an empty packet
-   * for a command), or exceptionally with an {@link ArClientException}: a server error (with its
-   * {@link ArClientException#getCode() code}), a lost connection, or no reply within the request
-   * timeout.
+   * Asks for data {@code name} once, with {@code args} (null for none), as ArNetworking's {@code
+   * requestOnce}. The future completes with the reply (an empty packet at once for data that
+   * returns nothing), or fails with an {@link ArClientException} if the data does not exist, the
+   * server reports a failure, the request times out or the connection is lost.
    */
   public CompletableFuture<ArNetPacket> requestOnce(String name, ArNetPacket args) {
-    ClientConnection c = conn;
-    if (c == null || c.isClosed()) {
-      return CompletableFuture.failedFuture(notConnected());
-    }
-    DataInfo d = c.byName.get(name);
-    if (d == null) {
-      return CompletableFuture.failedFuture(
-          new ArClientException(
-              NetError.UNKNOWN_DATA,
-              "the server offers no '" + name + "' (or this user may not use it)"));
-    }
-    int reqId = nextReqId.incrementAndGet();
-    ArNetPacket body = new ArNetPacket().intToBuf(reqId).intToBuf(d.id());
-    if (args != null) {
-      body.encodedToBuf(args.toByteArray());
-    }
-    return c.call(reqId, name, Frames.frame(Kind.CALL, body));
-  }
-
-  /** {@link #requestOnce(String, ArNetPacket)} with simple arguments ({@link ArNetPacket#of}). */
-  public CompletableFuture<ArNetPacket> requestOnce(String name, Object... args) {
-    return requestOnce(name, ArNetPacket.of(args));
-  }
-
-  /**
-   * Subscribes to published data: the server sends it every {@code intervalMs} (or at its minimum
-   * interval, if shorter) whenever it has changed, to the handlers added with {@link #addHandler}.
-   * The subscription is kept over reconnections. The future completes with the interval the server
-   * granted.
-   */
-  public CompletableFuture<Duration> request(String name, long intervalMs) {
-    subscriptions.put(name, intervalMs);
-    CompletableFuture<Duration> f = new CompletableFuture<>();
-    CompletableFuture<Duration> old = subscribeWaiters.put(name, f);
-    if (old != null) {
-      // Someone still waits for an earlier request of the same subscription: answer both.
-      CompletableFuture<Duration> unused = f.whenComplete((r, e) -> complete(old, r, e));
-    }
-    ClientConnection c = conn;
-    if (c != null && !c.isClosed()) {
-      sendSubscribe(c, name, intervalMs);
+    CompletableFuture<ArNetPacket> f = new CompletableFuture<>();
+    try {
+      DataInfo d = need(name);
+      ArNetPacket p = args == null ? new ArNetPacket() : args.toReader();
+      ArNetPacket send = new ArNetPacket(d.id());
+      byte[] body = p.toByteArray();
+      send.dataToBuf(body);
+      // A JAria server (it lists requestFailed) acknowledges commands that return nothing.
+      boolean none = d.returnsNothing() && !dataExists(ArServerBase.REQUEST_FAILED);
+      if (!none) {
+        synchronized (this) {
+          waiting.computeIfAbsent(d.id(), k -> new ArrayDeque<>()).add(f);
+        }
+      }
+      send(send);
+      if (none) {
+        f.complete(new ArNetPacket(d.id()).toReader());
+      } else {
+        f.orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS);
+      }
+    } catch (ArClientException | ArNetPacketException e) {
+      f.completeExceptionally(e);
     }
     return f;
   }
 
-  private static void complete(CompletableFuture<Duration> f, Duration r, Throwable e) {
-    if (e != null) {
-      f.completeExceptionally(e);
-    } else {
-      f.complete(r);
+  /**
+   * As {@link #requestOnce(String, ArNetPacket)} with arguments written by type: a Double or Float
+   * as a double, an Integer as a byte4, a Short as a byte2, a Byte as a byte, a Long as a byte8, a
+   * Boolean as a ubyte 1/0, a String as a string, a byte[] as raw bytes.
+   */
+  public CompletableFuture<ArNetPacket> requestOnce(String name, Object... args) {
+    try {
+      return requestOnce(name, ArNetPacketArgs.of(args));
+    } catch (IllegalArgumentException e) {
+      return CompletableFuture.failedFuture(e);
     }
-  }
-
-  private void sendSubscribe(ClientConnection c, String name, long intervalMs) {
-    DataInfo d = c.byName.get(name);
-    CompletableFuture<Duration> waiter = subscribeWaiters.get(name);
-    if (d == null) {
-      if (waiter != null && subscribeWaiters.remove(name, waiter)) {
-        waiter.completeExceptionally(
-            new ArClientException(NetError.UNKNOWN_DATA, "the server offers no '" + name + "'"));
-      }
-      return;
-    }
-    int reqId = nextReqId.incrementAndGet();
-    CompletableFuture<Long> unused =
-        c.subscribe(reqId, Frames.frame(Kind.SUBSCRIBE, reqId, d.id(), intervalMs))
-            .whenComplete(
-                (granted, e) -> {
-                  CompletableFuture<Duration> w = subscribeWaiters.get(name);
-                  if (w != null && subscribeWaiters.remove(name, w)) {
-                    complete(w, granted == null ? null : Duration.ofMillis(granted), e);
-                  }
-                });
-  }
-
-  /** Stops a subscription (ArNetworking's {@code requestStop}). */
-  public void requestStop(String name) {
-    subscriptions.remove(name);
-    ClientConnection c = conn;
-    if (c != null && !c.isClosed()) {
-      DataInfo d = c.byName.get(name);
-      if (d != null) {
-        c.send(Frames.frame(Kind.UNSUBSCRIBE, d.id()));
-      }
-    }
-  }
-
-  /** The current subscriptions: name → interval asked for, ms. */
-  public Map<String, Long> getSubscriptions() {
-    return Map.copyOf(subscriptions);
   }
 
   /**
-   * Adds a handler for updates of {@code name} (ArNetworking's {@code addHandler}). Each handler
-   * gets its own packet to read, on the reader thread.
+   * Asks for data {@code name} every {@code intervalMs} milliseconds (-1: whenever it changes or is
+   * broadcast), as ArNetworking's {@code request}; the packets go to the handlers. Remembered and
+   * sent again after a reconnect. ArNetworking does not acknowledge a request: the future completes
+   * as soon as it is sent.
    */
+  public CompletableFuture<Duration> request(String name, long intervalMs) {
+    return request(name, intervalMs, null);
+  }
+
+  /**
+   * As {@link #request(String, long)} with arguments (for example the sensor name of
+   * getSensorCurrent). A new request of the same data replaces the old one, as in ArNetworking.
+   */
+  public CompletableFuture<Duration> request(String name, long intervalMs, ArNetPacket args) {
+    requests.put(name, intervalMs);
+    if (args == null) {
+      requestArgs.remove(name);
+    } else {
+      requestArgs.put(name, args.toByteArray());
+    }
+    try {
+      sendRequest(name, intervalMs, args == null ? null : args.toByteArray());
+      return CompletableFuture.completedFuture(Duration.ofMillis(intervalMs));
+    } catch (ArClientException e) {
+      return CompletableFuture.failedFuture(e);
+    }
+  }
+
+  private void sendRequest(String name, long intervalMs, byte[] args) throws ArClientException {
+    DataInfo d = need(name);
+    ArNetPacket p = new ArNetPacket(Protocol.CLIENT_REQUEST);
+    p.uByte2ToBuf(d.id()).byte4ToBuf((int) Math.max(-1, Math.min(Integer.MAX_VALUE, intervalMs)));
+    if (args != null) {
+      p.dataToBuf(args);
+    }
+    send(p);
+  }
+
+  /** Stops a request made with {@link #request} (ArNetworking's {@code requestStop}). */
+  public void requestStop(String name) {
+    requests.remove(name);
+    requestArgs.remove(name);
+    try {
+      DataInfo d = need(name);
+      ArNetPacket p = new ArNetPacket(Protocol.CLIENT_REQUEST_STOP);
+      p.uByte2ToBuf(d.id());
+      send(p);
+    } catch (ArClientException e) {
+      log.debug("requestStop {}: {}", name, e.getMessage());
+    }
+  }
+
+  /** The requests made at an interval: name → interval in ms. */
+  public Map<String, Long> getSubscriptions() {
+    return Collections.unmodifiableMap(new LinkedHashMap<>(requests));
+  }
+
+  /** Adds a handler for the packets of data {@code name} (ArNetworking's {@code addHandler}). */
   public void addHandler(String name, Consumer<ArNetPacket> handler) {
     handlers.computeIfAbsent(name, k -> new CopyOnWriteArrayList<>()).add(handler);
   }
@@ -305,23 +651,12 @@ public final class ArClientBase implements AutoCloseable {
     }
   }
 
-  /** Measures the round trip to the server; completes with it. */
-  public CompletableFuture<Duration> ping() {
-    ClientConnection c = conn;
-    if (c == null || c.isClosed()) {
-      return CompletableFuture.failedFuture(notConnected());
-    }
-    return c.ping()
-        .thenApply(Duration::ofNanos)
-        .orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS);
-  }
-
-  /** Handler calls that threw (they are logged and skipped). */
+  /** Handlers that threw. */
   public long getHandlerFailures() {
     return handlerFailures.get();
   }
 
-  /** Updates received so far (over all connections). */
+  /** Data packets received. */
   public long getUpdatesReceived() {
     return updates.get();
   }
@@ -329,49 +664,5 @@ public final class ArClientBase implements AutoCloseable {
   /** The options. */
   public ClientOptions getOptions() {
     return options;
-  }
-
-  private ArClientException notConnected() {
-    return new ArClientException(
-        null, "not connected" + (lastError == null ? "" : " (" + lastError + ")"));
-  }
-
-  private final class Events implements ClientConnection.Events {
-    @Override
-    public void update(ClientConnection c, int dataId, long version, byte[] payload) {
-      updates.incrementAndGet();
-      DataInfo d = c.byId.get(dataId);
-      if (d == null) {
-        return;
-      }
-      List<Consumer<ArNetPacket>> l = handlers.get(d.name());
-      if (l == null) {
-        return;
-      }
-      for (Consumer<ArNetPacket> h : l) {
-        try {
-          h.accept(ArNetPacket.wrap(payload));
-        } catch (RuntimeException e) {
-          // A bad handler (or an update it cannot decode) must not end the connection.
-          if (handlerFailures.incrementAndGet() % 100 == 1) {
-            log.warn("a handler for {} failed (#{})", d.name(), handlerFailures.get(), e);
-          }
-        }
-      }
-    }
-
-    @Override
-    public void closed(ClientConnection c, String reason) {
-      lastError = reason;
-      log.info("disconnected from {}: {}", c.serverName, reason);
-      List<ConnectionListener> ls = new ArrayList<>(listeners);
-      for (ConnectionListener l : ls) {
-        try {
-          l.disconnected(ArClientBase.this, reason);
-        } catch (RuntimeException e) {
-          log.warn("a connection listener failed", e);
-        }
-      }
-    }
   }
 }

@@ -20,6 +20,11 @@ public class ArClientException extends Exception {
   }
 
   /** A local failure caused by {@code cause}. */
+  public ArClientException(String message) {
+    super(message);
+    this.code = null;
+  }
+
   public ArClientException(String message, Throwable cause) {
     super(message, cause);
     this.code = null;

@@ -3,61 +3,36 @@ package org.jaria.net.client;
 import java.time.Duration;
 
 /**
- * Settings of an {@link ArClientBase}.
+ * How an {@link ArClientBase} connects.
  *
- * @param name the name the client gives the server (shown in its logs)
- * @param connectTimeout time to open the connection and to log in
- * @param requestTimeout time a request waits for its reply before failing
- * @param pingInterval a ping is sent when nothing was sent for this long (keeps the server's idle
- *     timeout away and measures latency)
- * @param readTimeout the connection is considered lost when nothing arrives for this long (must be
- *     longer than the ping interval)
- * @param maxFrame largest frame accepted from the server, bytes
- * @param maxPayload largest reassembled reply or update, bytes
- * @param sendQueue frames waiting to be written; beyond it requests fail at once
+ * @param name the client's name, for logs and thread names
+ * @param connectTimeout time to connect and log in
+ * @param requestTimeout time a {@link ArClientBase#requestOnce} waits for its reply
+ * @param serverKey ArNetworking's server key, if the server was given one ("" as in ARIA)
  */
 public record ClientOptions(
-    String name,
-    Duration connectTimeout,
-    Duration requestTimeout,
-    Duration pingInterval,
-    Duration readTimeout,
-    int maxFrame,
-    int maxPayload,
-    int sendQueue) {
+    String name, Duration connectTimeout, Duration requestTimeout, String serverKey) {
 
-  /** Checks the values. */
+  /** Checks the options. */
   public ClientOptions {
-    if (name == null) {
-      throw new IllegalArgumentException("the client needs a name");
+    if (name == null || serverKey == null) {
+      throw new IllegalArgumentException("the client needs a name and a server key (\"\")");
     }
-    if (readTimeout.compareTo(pingInterval) <= 0) {
-      throw new IllegalArgumentException("the read timeout must be longer than the ping interval");
-    }
-    if (maxFrame < 1024 || maxPayload < maxFrame || sendQueue < 1) {
-      throw new IllegalArgumentException("frame, payload and queue limits are too small");
+    if (connectTimeout.isNegative()
+        || connectTimeout.isZero()
+        || requestTimeout.isNegative()
+        || requestTimeout.isZero()) {
+      throw new IllegalArgumentException("timeouts must be positive");
     }
   }
 
-  /**
-   * Defaults: 5 s to connect, 10 s per request, a ping every 5 s, lost after 15 s of silence, 4 MiB
-   * frames, 64 MiB payloads, 1024 frames waiting to be sent.
-   */
+  /** 5 s to connect, 10 s per request, no server key. */
   public static ClientOptions defaults(String name) {
-    return new ClientOptions(
-        name,
-        Duration.ofSeconds(5),
-        Duration.ofSeconds(10),
-        Duration.ofSeconds(5),
-        Duration.ofSeconds(15),
-        4 << 20,
-        64 << 20,
-        1024);
+    return new ClientOptions(name, Duration.ofSeconds(5), Duration.ofSeconds(10), "");
   }
 
-  /** The same options with another request timeout. */
+  /** A copy with another request timeout. */
   public ClientOptions withRequestTimeout(Duration d) {
-    return new ClientOptions(
-        name, connectTimeout, d, pingInterval, readTimeout, maxFrame, maxPayload, sendQueue);
+    return new ClientOptions(name, connectTimeout, d, serverKey);
   }
 }

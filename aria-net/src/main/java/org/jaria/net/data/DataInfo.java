@@ -1,20 +1,16 @@
 package org.jaria.net.data;
 
-import org.jaria.net.ArNetPacket;
-import org.jaria.net.NetEncodable;
-import org.jaria.net.protocol.Protocol;
-
 /**
- * One entry of a server's data list, sent at login (ArNetworking's data list): what a client may
- * ask for and how.
+ * One entry of a server's data list, sent at login (ArNetworking's LIST, LISTARGRET and
+ * LISTGROUPANDFLAGS packets): what a client may ask for and how.
  *
- * @param id the number used on the wire
+ * @param id the command number used on the wire (256 and up, given in registration order)
  * @param name the name clients use ("update", "getMap", "ratioDrive" ...)
  * @param description what it is
  * @param argumentDescription the arguments, in order ("none" if none)
- * @param returnDescription the reply, in order
+ * @param returnDescription the reply, in order ("none" if none)
  * @param commandGroup the group a user needs ("" for anybody)
- * @param subscribable whether it can be subscribed to at a rate (published data)
+ * @param dataFlags ArNetworking's data flags joined by '|' ("RETURN_SINGLE", "RETURN_NONE" ...)
  */
 public record DataInfo(
     int id,
@@ -23,39 +19,38 @@ public record DataInfo(
     String argumentDescription,
     String returnDescription,
     String commandGroup,
-    boolean subscribable)
-    implements NetEncodable {
+    String dataFlags) {
 
-  @Override
-  public void write(ArNetPacket out) {
-    out.arrayToBuf(7)
-        .intToBuf(id)
-        .strToBuf(name)
-        .strToBuf(description)
-        .strToBuf(argumentDescription)
-        .strToBuf(returnDescription)
-        .strToBuf(commandGroup)
-        .intToBuf(subscribable ? Protocol.FLAG_SUBSCRIBABLE : 0);
+  /** Whether the flags contain {@code flag}. */
+  public boolean hasDataFlag(String flag) {
+    return ("|" + dataFlags + "|").contains("|" + flag + "|");
   }
 
-  /** Reads an entry written by {@link #write}; extra trailing fields are skipped. */
-  public static DataInfo read(ArNetPacket in) {
-    int n = in.bufToArray();
-    if (n < 7) {
-      throw new org.jaria.net.ArNetPacketException("a data list entry needs 7 fields, has " + n);
+  /**
+   * Whether a request gets no reply: the flags say RETURN_NONE, or (a server that sends no flags)
+   * the return description is "none".
+   */
+  public boolean returnsNothing() {
+    if (hasDataFlag("RETURN_NONE")) {
+      return true;
     }
-    DataInfo d =
-        new DataInfo(
-            in.bufToInt(),
-            in.bufToStr(),
-            in.bufToStr(),
-            in.bufToStr(),
-            in.bufToStr(),
-            in.bufToStr(),
-            (in.bufToLong() & Protocol.FLAG_SUBSCRIBABLE) != 0);
-    for (int i = 7; i < n; i++) {
-      in.skip();
+    if (hasDataFlag("RETURN_SINGLE")
+        || hasDataFlag("RETURN_VIDEO")
+        || hasDataFlag("RETURN_UNTIL_EMPTY")
+        || hasDataFlag("RETURN_COMPLEX")) {
+      return false;
     }
-    return d;
+    return returnDescription.isBlank() || returnDescription.equalsIgnoreCase("none");
+  }
+
+  /** A copy with another argument and return description. */
+  public DataInfo withArgRet(String arg, String ret) {
+    return new DataInfo(id, name, description, arg, ret, commandGroup, dataFlags);
+  }
+
+  /** A copy with another command group and flags. */
+  public DataInfo withGroupAndFlags(String group, String flags) {
+    return new DataInfo(
+        id, name, description, argumentDescription, returnDescription, group, flags);
   }
 }

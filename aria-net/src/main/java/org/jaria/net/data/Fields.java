@@ -24,26 +24,23 @@ final class Fields {
 
   /** Skips the fields after the {@code known} ones. */
   static void end(ArNetPacket in, int n, int known) {
-    for (int i = known; i < n; i++) {
-      in.skip();
+    if (n != known) {
+      throw new ArNetPacketException("expected " + known + " fields, got " + n);
     }
   }
 
   static void writePose(ArNetPacket out, ArPose p) {
     if (p == null) {
-      out.nilToBuf();
+      out.uByteToBuf(0);
     } else {
-      out.arrayToBuf(3).doubleToBuf(p.getX()).doubleToBuf(p.getY()).doubleToBuf(p.getTh());
+      out.uByteToBuf(1).doubleToBuf(p.getX()).doubleToBuf(p.getY()).doubleToBuf(p.getTh());
     }
   }
 
   static ArPose readPose(ArNetPacket in) {
-    if (in.bufToNil()) {
+    if (in.bufToUByte() == 0) {
       return null;
     }
-    int n = begin(in, 3, "a pose");
-    ArPose p = new ArPose(in.bufToDouble(), in.bufToDouble(), in.bufToDouble());
-    end(in, n, 3);
-    return p;
+    return new ArPose(in.bufToDouble(), in.bufToDouble(), in.bufToDouble());
   }
 }

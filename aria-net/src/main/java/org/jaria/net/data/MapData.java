@@ -5,30 +5,35 @@ import java.io.StringReader;
 import org.jaria.map.ArMap;
 import org.jaria.map.MapFormatException;
 import org.jaria.net.ArNetPacket;
-import org.jaria.net.NetEncodable;
 
 /**
  * The robot's map ({@code "getMap"}): its name and its {@code .map} text, byte for byte as ArMap
- * writes it, so a client gets exactly the server's map. Large maps travel in several frames; the
- * client library puts them back together.
+ * writes it, so a client gets exactly the server's map. The map travels one line per packet
+ * (ArNetworking's getMap); ArClientBase gathers them.
  *
  * @param name the map's name (its file name)
  * @param version changes whenever the server's map changes
  * @param text the {@code .map} file's text
  */
-public record MapData(String name, long version, String text) implements NetEncodable {
+public record MapData(String name, long version, String text) {
 
-  @Override
-  public void write(ArNetPacket out) {
-    out.arrayToBuf(3).strToBuf(name).intToBuf(version).strToBuf(text);
-  }
-
-  /** Reads what {@link #write} wrote. */
-  public static MapData read(ArNetPacket in) {
-    int n = Fields.begin(in, 3, "a map");
-    MapData m = new MapData(in.bufToStr(), in.bufToLong(), in.bufToStr());
-    Fields.end(in, n, 3);
-    return m;
+  /**
+   * Reads the answer to ArNetworking's getMap (the lines of every packet, gathered by {@code
+   * ArClientBase.requestOnce}), ending at the first empty string.
+   *
+   * @param name the map's name (from getMapName)
+   * @param version a number that changes with each new map (the client counts mapUpdated)
+   */
+  public static MapData read(ArNetPacket in, String name, long version) {
+    StringBuilder sb = new StringBuilder();
+    while (in.hasMore()) {
+      String line = in.bufToStr();
+      if (line.isEmpty()) {
+        break;
+      }
+      sb.append(line).append('\n');
+    }
+    return new MapData(name, version, sb.toString());
   }
 
   /**

@@ -30,39 +30,33 @@ public record PhysicalInfo(
     double maxRotVel)
     implements NetEncodable {
 
-  private static final int FIELDS = 10;
-
+  /**
+   * Writes ArNetworking's "physicalInfo" layout: string robotType; string robotSubType; byte2
+   * width; byte2 lengthFront; byte2 lengthRear; byte lateral control (0).
+   */
   @Override
   public void write(ArNetPacket out) {
-    out.arrayToBuf(FIELDS)
-        .strToBuf(name)
-        .strToBuf(type)
+    out.strToBuf(type)
         .strToBuf(subType)
-        .doubleToBuf(width)
-        .doubleToBuf(lengthFront)
-        .doubleToBuf(lengthRear)
-        .doubleToBuf(radius)
-        .intToBuf(numSonar)
-        .doubleToBuf(maxTransVel)
-        .doubleToBuf(maxRotVel);
+        .byte2ToBuf((int) Math.round(width))
+        .byte2ToBuf((int) Math.round(lengthFront))
+        .byte2ToBuf((int) Math.round(lengthRear))
+        .byteToBuf(0);
   }
 
-  /** Reads what {@link #write} wrote. */
+  /**
+   * Reads ArNetworking's "physicalInfo" layout. What it does not carry gets neutral values: name =
+   * type, radius = half the width, no sonar count (0) and no speed limits (0).
+   */
   public static PhysicalInfo read(ArNetPacket in) {
-    int n = Fields.begin(in, FIELDS, "physical info");
-    PhysicalInfo p =
-        new PhysicalInfo(
-            in.bufToStr(),
-            in.bufToStr(),
-            in.bufToStr(),
-            in.bufToDouble(),
-            in.bufToDouble(),
-            in.bufToDouble(),
-            in.bufToDouble(),
-            in.bufToInt(),
-            in.bufToDouble(),
-            in.bufToDouble());
-    Fields.end(in, n, FIELDS);
-    return p;
+    String type = in.bufToStr();
+    String subType = in.bufToStr();
+    double w = in.bufToByte2();
+    double front = in.bufToByte2();
+    double rear = in.bufToByte2();
+    if (in.hasMore()) {
+      in.bufToByte();
+    }
+    return new PhysicalInfo(type, type, subType, w, front, rear, w / 2, 0, 0, 0);
   }
 }

@@ -96,14 +96,20 @@ public final class Points implements NetEncodable {
 
   @Override
   public void write(ArNetPacket out) {
-    out.arrayToBuf(2).intToBuf(stride).intsToBuf(values, values.length);
+    out.arrayToBuf(2).intToBuf(stride).arrayToBuf(values.length);
+    for (int v : values) {
+      out.byte4ToBuf(v);
+    }
   }
 
   /** Reads what {@link #write} wrote. */
   public static Points read(ArNetPacket in) {
     int n = Fields.begin(in, 2, "points");
     int stride = in.bufToInt();
-    int[] v = in.bufToInts();
+    int[] v = new int[in.bufToArray()];
+    for (int i = 0; i < v.length; i++) {
+      v[i] = in.bufToByte4();
+    }
     Fields.end(in, n, 2);
     if ((stride != 2 && stride != 3) || v.length % stride != 0) {
       throw new ArNetPacketException(

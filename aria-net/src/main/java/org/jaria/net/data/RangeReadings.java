@@ -13,19 +13,39 @@ import org.jaria.net.NetEncodable;
 public record RangeReadings(String device, double maxRange, Points current)
     implements NetEncodable {
 
-  private static final int FIELDS = 3;
-
+  /**
+   * Writes ArNetworking's getSensorCurrent/getSensorCumulative layout: byte2 number of readings;
+   * string sensor name; then byte4 x, byte4 y (mm) for each reading. Readings that do not fit one
+   * packet are left out.
+   */
   @Override
   public void write(ArNetPacket out) {
-    out.arrayToBuf(FIELDS).strToBuf(device).doubleToBuf(maxRange);
-    current.write(out);
+    int n = Math.min(current.size(), (out.getWriteCapacity() - 2 - device.length() * 3 - 1) / 8);
+    n = Math.max(0, Math.min(n, Short.MAX_VALUE));
+    out.byte2ToBuf(n).strToBuf(device);
+    for (int i = 0; i < n; i++) {
+      out.byte4ToBuf(current.x(i)).byte4ToBuf(current.y(i));
+    }
   }
 
-  /** Reads what {@link #write} wrote. */
+  /**
+   * Reads ArNetworking's sensor layout; null if the server says there is no such sensor (-1
+   * readings). The layout does not carry the range, so {@code maxRange} is 0.
+   */
   public static RangeReadings read(ArNetPacket in) {
-    int n = Fields.begin(in, FIELDS, "range readings");
-    RangeReadings r = new RangeReadings(in.bufToStr(), in.bufToDouble(), Points.read(in));
-    Fields.end(in, n, FIELDS);
-    return r;
+    int n = in.bufToByte2();
+    String name = in.bufToStr();
+    if (n < 0) {
+      return null;
+    }
+    if ((long) n * 8 > in.getRemaining()) {
+      throw new org.jaria.net.ArNetPacketException(
+          "sensor " + name + " announces " + n + " readings but has " + in.getRemaining() + " B");
+    }
+    int[] flat = new int[n * 2];
+    for (int i = 0; i < flat.length; i++) {
+      flat[i] = in.bufToByte4();
+    }
+    return new RangeReadings(name, 0, Points.ofFlat(flat, 2));
   }
 }

@@ -45,56 +45,69 @@ public record RobotUpdate(
     long counter)
     implements NetEncodable {
 
-  private static final int FIELDS = 16;
-
   /** The pose. */
   public ArPose getPose() {
     return new ArPose(x, y, th);
   }
 
+  /**
+   * Writes ArNetworking's "update" layout: string status; string mode; byte2 10 * battery volts;
+   * byte4 x; byte4 y (mm); byte2 th (degrees, -179..180); byte2 vel; byte2 rotVel; byte2 latVel;
+   * byte temperature (-128: unknown).
+   */
   @Override
   public void write(ArNetPacket out) {
-    out.arrayToBuf(FIELDS)
-        .strToBuf(mode)
-        .strToBuf(status)
-        .doubleToBuf(batteryVoltage)
-        .doubleToBuf(x)
-        .doubleToBuf(y)
-        .doubleToBuf(th)
-        .doubleToBuf(vel)
-        .doubleToBuf(rotVel)
-        .doubleToBuf(leftVel)
-        .doubleToBuf(rightVel)
-        .boolToBuf(motorsEnabled)
-        .boolToBuf(leftStalled)
-        .boolToBuf(rightStalled)
-        .boolToBuf(eStop)
-        .intToBuf(chargeState)
-        .intToBuf(counter);
+    out.strToBuf(status).strToBuf(mode);
+    writeNumbers(out);
   }
 
-  /** Reads what {@link #write} wrote. */
+  /** Writes ArNetworking's "updateNumbers" layout (the "update" layout without the strings). */
+  public void writeNumbers(ArNetPacket out) {
+    int deg = (int) Math.round(org.jaria.geom.ArMath.fixAngle(th));
+    out.byte2ToBuf(clamp16(Math.round(batteryVoltage * 10)))
+        .byte4ToBuf(clamp32(x))
+        .byte4ToBuf(clamp32(y))
+        .byte2ToBuf(deg == -180 ? 180 : deg)
+        .byte2ToBuf(clamp16((long) vel))
+        .byte2ToBuf(clamp16((long) rotVel))
+        .byte2ToBuf(0)
+        .byteToBuf(-128);
+  }
+
+  private static int clamp16(long v) {
+    return (int) Math.max(Short.MIN_VALUE, Math.min(Short.MAX_VALUE, v));
+  }
+
+  private static int clamp32(double v) {
+    return (int) Math.max(Integer.MIN_VALUE, Math.min(Integer.MAX_VALUE, v));
+  }
+
+  /**
+   * Reads ArNetworking's "update" layout. Fields the layout does not carry get neutral values:
+   * wheel speeds both {@code vel}, motors enabled, nothing stalled, no e-stop, charge state 0 and
+   * counter 0.
+   */
   public static RobotUpdate read(ArNetPacket in) {
-    int n = Fields.begin(in, FIELDS, "a robot update");
-    RobotUpdate u =
-        new RobotUpdate(
-            in.bufToStr(),
-            in.bufToStr(),
-            in.bufToDouble(),
-            in.bufToDouble(),
-            in.bufToDouble(),
-            in.bufToDouble(),
-            in.bufToDouble(),
-            in.bufToDouble(),
-            in.bufToDouble(),
-            in.bufToDouble(),
-            in.bufToBool(),
-            in.bufToBool(),
-            in.bufToBool(),
-            in.bufToBool(),
-            in.bufToInt(),
-            in.bufToLong());
-    Fields.end(in, n, FIELDS);
-    return u;
+    String status = in.bufToStr();
+    String mode = in.bufToStr();
+    return readNumbers(in, mode, status);
+  }
+
+  /** Reads ArNetworking's "updateNumbers" layout, with mode and status given. */
+  public static RobotUpdate readNumbers(ArNetPacket in, String mode, String status) {
+    double battery = in.bufToByte2() / 10.0;
+    double x = in.bufToByte4();
+    double y = in.bufToByte4();
+    double th = in.bufToByte2();
+    double vel = in.bufToByte2();
+    double rotVel = in.bufToByte2();
+    if (in.hasMore()) {
+      in.bufToByte2(); // lateral velocity
+    }
+    if (in.hasMore()) {
+      in.bufToByte(); // temperature
+    }
+    return new RobotUpdate(
+        mode, status, battery, x, y, th, vel, rotVel, vel, vel, true, false, false, false, 0, 0);
   }
 }

@@ -1,6 +1,5 @@
 package org.jaria.net.data;
 
-import java.util.ArrayList;
 import java.util.List;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.NetEncodable;
@@ -29,24 +28,22 @@ public record SensorReadings(long counter, List<RangeReadings> devices) implemen
     return null;
   }
 
+  /** Writes the first device's readings in ArNetworking's layout (see {@link RangeReadings}). */
   @Override
   public void write(ArNetPacket out) {
-    out.arrayToBuf(2).intToBuf(counter).arrayToBuf(devices.size());
-    for (RangeReadings r : devices) {
-      r.write(out);
+    if (devices.isEmpty()) {
+      out.byte2ToBuf(0).strToBuf("");
+    } else {
+      devices.get(0).write(out);
     }
   }
 
-  /** Reads what {@link #write} wrote. */
+  /**
+   * Reads one getSensorCurrent packet (ArNetworking carries one sensor per packet) as readings of
+   * that one device; no devices if the server has no such sensor.
+   */
   public static SensorReadings read(ArNetPacket in) {
-    int n = Fields.begin(in, 2, "sensor readings");
-    long counter = in.bufToLong();
-    int k = in.bufToArray();
-    List<RangeReadings> l = new ArrayList<>(k);
-    for (int i = 0; i < k; i++) {
-      l.add(RangeReadings.read(in));
-    }
-    Fields.end(in, n, 2);
-    return new SensorReadings(counter, l);
+    RangeReadings r = RangeReadings.read(in);
+    return new SensorReadings(0, r == null ? List.of() : List.of(r));
   }
 }

@@ -84,7 +84,7 @@ public final class VideoFrame implements NetEncodable {
         .strToBuf(format.name())
         .intToBuf(width)
         .intToBuf(height)
-        .dataToBuf(data);
+        .blobToBuf(data);
   }
 
   /** Reads what {@link #write} wrote. */
@@ -100,7 +100,7 @@ public final class VideoFrame implements NetEncodable {
     }
     int w = in.bufToInt();
     int h = in.bufToInt();
-    byte[] d = in.bufToData();
+    byte[] d = in.bufToBlob();
     Fields.end(in, n, 5);
     try {
       return new VideoFrame(seq, format, w, h, d);

@@ -1,8 +1,9 @@
 package org.jaria.net.protocol;
 
 /**
- * A peer broke the protocol: a frame that is too long, not MessagePack, of an unknown kind, or a
- * message that is not allowed at this point. The connection to that peer is closed.
+ * A peer broke the protocol: bytes that are not an ArNetworking packet (bad sync bytes, length or
+ * checksum), or a packet that is not allowed at this point (anything but the introduction before
+ * logging in). The connection to that peer is closed.
  */
 public class ProtocolException extends Exception {
 

@@ -1,7 +1,6 @@
 package org.jaria.net.server;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
 import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.List;
@@ -18,10 +17,8 @@ import java.util.function.Supplier;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.ArNetPacketException;
 import org.jaria.net.data.DataInfo;
-import org.jaria.net.protocol.Frames;
-import org.jaria.net.protocol.Kind;
 import org.jaria.net.protocol.NetError;
-import org.jaria.net.protocol.PasswordHash;
+import org.jaria.net.protocol.Protocol;
 import org.jaria.robot.ArRobot;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -50,10 +47,10 @@ import org.slf4j.LoggerFactory;
  * #close()} stops and joins every thread.
  *
  * <p><b>Protection.</b> At most {@link ServerOptions#maxClients()} connections; a connection must
- * log in within the login timeout; a frame that is too long or not well-formed closes that
- * connection only; a client that reads too slowly has its subscription updates coalesced (newest
- * wins) and is dropped when its replies exceed {@link ServerOptions#maxQueuedBytes()} or its socket
- * takes nothing for the stall timeout. See {@code aria-net/PROTOCOL.md}.
+ * log in within the login timeout; a packet that is not well-formed closes that connection only; a
+ * client that reads too slowly has its subscription updates coalesced (newest wins) and is dropped
+ * when its replies exceed {@link ServerOptions#maxQueuedBytes()} or its socket takes nothing for
+ * the stall timeout. See {@code aria-net/PROTOCOL.md}.
  */
 public class ArServerBase implements AutoCloseable {
 
@@ -70,7 +67,7 @@ public class ArServerBase implements AutoCloseable {
   private final ArRobot robot;
   final ServerStats stats = new ServerStats();
   final SecureRandom random = new SecureRandom();
-  final byte[] serverKey = PasswordHash.randomBytes(random, 32);
+  private final LoginLimiter loginLimiter;
   private final List<DataEntry> entries = new CopyOnWriteArrayList<>();
   private final Map<String, DataEntry> byName = new ConcurrentHashMap<>();
   private final List<ArServerClient> clients = new CopyOnWriteArrayList<>();
@@ -103,6 +100,29 @@ public class ArServerBase implements AutoCloseable {
     this.cycleQueue = new ArrayBlockingQueue<>(options.cycleQueue());
     this.dispatcher = new Dispatcher(this, options);
     this.publisher = new Publisher(this);
+    this.loginLimiter =
+        new LoginLimiter(
+            options.timeoutClock(),
+            options.maxLoginFailures(),
+            options.loginFailureWindow().toNanos());
+    register(
+        REQUEST_FAILED,
+        "JAria: sent to a client whose request could not be carried out (bad arguments, busy,"
+            + " failed); ArNetworking clients that do not know it ignore it",
+        "none",
+        "string: data name; string: why; byte2: JAria's error code",
+        "",
+        "RETURN_SINGLE",
+        Where.WORKER,
+        (c, req, rep) -> {},
+        null);
+  }
+
+  /** Name of the data JAria sends to a client whose request failed (see PROTOCOL.md). */
+  public static final String REQUEST_FAILED = "requestFailed";
+
+  LoginLimiter loginLimiter() {
+    return loginLimiter;
   }
 
   // ------------------------------------------------------------------ lifecycle
@@ -143,11 +163,18 @@ public class ArServerBase implements AutoCloseable {
     ioThread.start();
     publisherThread.start();
     log.info(
-        "server '{}' listening on {}:{} ({})",
+        "server '{}' speaking ArNetworking on {}:{} (tcp{}; {})",
         options.serverName(),
         io.address(),
         port,
+        io.udpPort() > 0 ? ", udp " + io.udpPort() : " only",
         options.authenticator().isOpen() ? "no login needed" : "login required");
+    if (!options.authenticator().isOpen() && !io.isLoopbackOnly()) {
+      log.warn(
+          "ArNetworking's login sends an MD5 digest of the password over a plain connection,"
+              + " which anyone on the network can capture and attack offline: listen on the"
+              + " loopback address (reach it through an SSH tunnel) or trust the network");
+    }
   }
 
   /** Whether the server is open. */
@@ -235,6 +262,31 @@ public class ArServerBase implements AutoCloseable {
       String commandGroup,
       Where where,
       RequestHandler handler) {
+    return addData(
+        name,
+        description,
+        argumentDescription,
+        returnDescription,
+        commandGroup,
+        isNone(returnDescription) ? "RETURN_NONE" : "RETURN_SINGLE",
+        where,
+        handler);
+  }
+
+  /**
+   * As {@link #addData(String, String, String, String, String, Where, RequestHandler)}, with
+   * ArNetworking's data flags ("RETURN_NONE", "RETURN_SINGLE", "RETURN_VIDEO" ... joined by '|').
+   * The reply the handler writes is sent unless the flags say RETURN_NONE and it is empty.
+   */
+  public DataInfo addData(
+      String name,
+      String description,
+      String argumentDescription,
+      String returnDescription,
+      String commandGroup,
+      String dataFlags,
+      Where where,
+      RequestHandler handler) {
     Objects.requireNonNull(handler, "handler");
     Objects.requireNonNull(where, "where");
     return register(
@@ -243,9 +295,14 @@ public class ArServerBase implements AutoCloseable {
         argumentDescription,
         returnDescription,
         commandGroup,
+        dataFlags,
         where,
         handler,
         null);
+  }
+
+  private static boolean isNone(String d) {
+    return d == null || d.isBlank() || d.equalsIgnoreCase("none");
   }
 
   /**
@@ -268,6 +325,7 @@ public class ArServerBase implements AutoCloseable {
         "none",
         returnDescription,
         commandGroup,
+        "RETURN_SINGLE",
         Where.WORKER,
         null,
         publication);
@@ -279,6 +337,7 @@ public class ArServerBase implements AutoCloseable {
       String argDesc,
       String retDesc,
       String group,
+      String flags,
       Where where,
       RequestHandler handler,
       Publication publication) {
@@ -288,15 +347,18 @@ public class ArServerBase implements AutoCloseable {
     if (byName.containsKey(name)) {
       throw new IllegalArgumentException("data '" + name + "' is already registered");
     }
+    if (entries.size() >= 0xFFFF - Protocol.FIRST_DATA_COMMAND) {
+      throw new IllegalStateException("no command numbers left for '" + name + "'");
+    }
     DataInfo info =
         new DataInfo(
-            entries.size() + 1,
+            Protocol.FIRST_DATA_COMMAND + entries.size(),
             name,
             Objects.toString(description, ""),
             Objects.toString(argDesc, "none"),
             Objects.toString(retDesc, "none"),
             Objects.toString(group, ""),
-            publication != null);
+            Objects.toString(flags, ""));
     DataEntry e = new DataEntry(info, where, handler, publication);
     entries.add(e);
     byName.put(name, e);
@@ -317,9 +379,16 @@ public class ArServerBase implements AutoCloseable {
     return byName.containsKey(name);
   }
 
-  DataEntry entry(int id) {
+  DataEntry entry(int command) {
     List<DataEntry> l = entries;
-    return id >= 1 && id <= l.size() ? l.get(id - 1) : null;
+    int i = command - Protocol.FIRST_DATA_COMMAND;
+    return i >= 0 && i < l.size() ? l.get(i) : null;
+  }
+
+  /** The command number of data {@code name}, or 0 if there is none. */
+  public int findCommandFromName(String name) {
+    DataEntry e = byName.get(name);
+    return e == null ? 0 : e.id();
   }
 
   // ------------------------------------------------------------------ the robot's cycle
@@ -473,18 +542,48 @@ public class ArServerBase implements AutoCloseable {
 
   // ------------------------------------------------------------------ sending
 
-  /** Queues a complete frame for {@code c}; drops the client if its queue is over the limit. */
-  void sendFrame(ArServerClient c, byte[] frame, boolean wakeup) {
-    enqueue(c, Outgoing.frame(frame), wakeup);
+  /** Queues packet {@code p} (its command set) for {@code c}. */
+  void sendPacket(ArServerClient c, ArNetPacket p) {
+    enqueue(c, Outgoing.frame(p.toWire()), !onIoThread());
   }
 
-  void sendError(ArServerClient c, int reqId, int dataId, NetError code, String message) {
-    byte[] f = Frames.frame(Kind.ERROR, reqId, dataId, code.code(), message);
-    enqueue(c, Outgoing.frame(f), !onIoThread());
+  /** Tells {@code c} that its request of {@code e} failed (JAria's requestFailed packet). */
+  void requestFailed(ArServerClient c, DataEntry e, NetError code, String message) {
+    stats.requestErrors.increment();
+    log.debug("{}: {} failed ({}): {}", c, e.name(), code, message);
+    ArNetPacket p = new ArNetPacket(Protocol.FIRST_DATA_COMMAND);
+    p.strToBuf(e.name()).strToBuf(message).byte2ToBuf(code.code());
+    sendPacket(c, p);
   }
 
-  void sendResponse(ArServerClient c, int reqId, int dataId, ByteBuffer payload) {
-    enqueue(c, Outgoing.response(reqId, dataId, payload, true), !onIoThread());
+  /**
+   * Sends {@code packet} to every logged-in client that has requested data {@code name} (at an
+   * interval or with -1, "when it changes"): ArNetworking's {@code broadcastPacketTcp}. The
+   * packet's command is set to the data's number.
+   *
+   * @return false if there is no such data
+   */
+  public boolean broadcastPacketTcp(ArNetPacket packet, String name) {
+    DataEntry e = byName.get(name);
+    if (e == null) {
+      return false;
+    }
+    packet.setCommand(e.id());
+    byte[] wire = null;
+    for (ArServerClient c : clients) {
+      if (c.isLoggedIn() && c.requests.containsKey(e.id())) {
+        if (wire == null) {
+          wire = packet.toWire();
+        }
+        enqueue(c, Outgoing.frame(wire), true);
+      }
+    }
+    return true;
+  }
+
+  /** As {@link #broadcastPacketTcp}: JAria sends every packet over TCP (see PROTOCOL.md). */
+  public boolean broadcastPacketUdp(ArNetPacket packet, String name) {
+    return broadcastPacketTcp(packet, name);
   }
 
   private boolean onIoThread() {
@@ -513,9 +612,13 @@ public class ArServerBase implements AutoCloseable {
     io.scheduleWrite(c, wakeup);
   }
 
-  /** Runs a request where its data says (cycle or worker), answering BUSY if queues are full. */
-  void execute(ArServerClient c, int reqId, DataEntry e, byte[] args) {
-    Runnable task = () -> runCall(c, reqId, e, args);
+  /**
+   * Runs a request of {@code e} where its data says (cycle or worker). {@code r} is the interval
+   * request it runs for, or null for a request once. The caller has counted it in the client's
+   * pending calls.
+   */
+  void execute(ArServerClient c, DataEntry e, byte[] args, ArServerClient.Request r) {
+    Runnable task = () -> runCall(c, e, args, r);
     boolean queued;
     if (e.publication == null && e.where == Where.CYCLE && robot != null) {
       queued = cycleQueue.offer(task);
@@ -529,12 +632,15 @@ public class ArServerBase implements AutoCloseable {
     }
     if (!queued) {
       c.pendingCalls.decrementAndGet();
+      if (r != null) {
+        r.running.set(false);
+      }
       stats.busy.increment();
-      sendError(c, reqId, e.id(), NetError.BUSY, "the server is busy; try again in a moment");
+      requestFailed(c, e, NetError.BUSY, "the server is busy; try again in a moment");
     }
   }
 
-  private void runCall(ArServerClient c, int reqId, DataEntry e, byte[] args) {
+  private void runCall(ArServerClient c, DataEntry e, byte[] args, ArServerClient.Request r) {
     try {
       if (c.isClosed()) {
         return;
@@ -542,27 +648,59 @@ public class ArServerBase implements AutoCloseable {
       if (e.publication != null) {
         DataEntry.Encoded enc = e.currentEncoded();
         if (enc == null) {
-          sendError(c, reqId, e.id(), NetError.UNAVAILABLE, e.name() + " has no value yet");
+          requestFailed(c, e, NetError.UNAVAILABLE, e.name() + " has no value yet");
         } else {
-          sendResponse(c, reqId, e.id(), enc.payload());
+          enqueue(c, Outgoing.update(-1, enc.version(), enc.wire()), !onIoThread());
         }
         return;
       }
-      ArNetPacket reply = new ArNetPacket();
-      e.handler.handle(c, ArNetPacket.wrap(args), reply);
-      sendResponse(c, reqId, e.id(), Dispatcher.shared(reply.toByteArray()));
+      ArNetPacket reply = new ArNetPacket(e.id());
+      if (e.where == Where.WORKER) {
+        // One client's handlers run one at a time, as in ArNetworking's single server loop, so
+        // the packets of a multi-packet answer (getMap) never interleave with another's.
+        synchronized (c.handlerLock) {
+          e.handler.handle(c, ArNetPacket.wrap(e.id(), args, 0, args.length), reply);
+          sendReply(c, e, r, reply);
+        }
+      } else {
+        e.handler.handle(c, ArNetPacket.wrap(e.id(), args, 0, args.length), reply);
+        sendReply(c, e, r, reply);
+      }
     } catch (ArNetPacketException ex) {
-      sendError(c, reqId, e.id(), NetError.BAD_ARGUMENTS, e.name() + ": " + ex.getMessage());
+      requestFailed(c, e, NetError.BAD_ARGUMENTS, e.name() + ": " + ex.getMessage());
     } catch (NetRequestException ex) {
-      sendError(c, reqId, e.id(), ex.getCode(), ex.getMessage());
+      requestFailed(c, e, ex.getCode(), ex.getMessage());
     } catch (InterruptedException ex) {
       Thread.currentThread().interrupt();
-      sendError(c, reqId, e.id(), NetError.FAILED, e.name() + " was interrupted");
+      requestFailed(c, e, NetError.FAILED, e.name() + " was interrupted");
     } catch (Exception ex) {
       log.warn("{} failed for {}", e.name(), c, ex);
-      sendError(c, reqId, e.id(), NetError.FAILED, e.name() + " failed: " + ex);
+      requestFailed(c, e, NetError.FAILED, e.name() + " failed: " + ex);
     } finally {
       c.pendingCalls.decrementAndGet();
+      if (r != null) {
+        r.running.set(false);
+      }
     }
+  }
+
+  /**
+   * Sends a handler's reply: always when it holds something; an empty one to a request once unless
+   * the data returns nothing (then only to a JAria client, as its acknowledgement); never an empty
+   * one for a request at an interval (an ArNetworking handler that sends nothing sends nothing).
+   */
+  private void sendReply(ArServerClient c, DataEntry e, ArServerClient.Request r, ArNetPacket p) {
+    boolean send =
+        p.getDataLength() > 0 || (r == null && (!e.info.returnsNothing() || c.wantsAcks));
+    if (send) {
+      p.setCommand(e.id());
+      sendPacket(c, p);
+    }
+  }
+
+  /** The UDP port (0 if none is open). */
+  int udpPort() {
+    IoLoop l = io;
+    return l == null ? 0 : l.udpPort();
   }
 }

@@ -1,5 +1,6 @@
 package org.jaria.net.server;
 
+import java.net.InetSocketAddress;
 import java.nio.ByteBuffer;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.SocketChannel;
@@ -10,74 +11,108 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
-import org.jaria.net.protocol.FrameSplitter;
-import org.jaria.net.protocol.Frames;
+import org.jaria.net.ArNetPacket;
+import org.jaria.net.protocol.PacketSplitter;
 
 /**
  * One connected client, as the server sees it (ArNetworking's {@code ArServerClient}): who it is,
- * what it subscribed to and how much is waiting to be sent to it. Handlers receive it with each
+ * what it requested and how much is waiting to be sent to it. Handlers receive it with each
  * request, for example to check {@link #hasGroupAccess}. Getters may be called from any thread.
  */
 public final class ArServerClient {
 
   /** Where the conversation is. */
   enum State {
-    AWAITING_HELLO,
-    AWAITING_LOGIN,
-    READY,
+    /** The server sent its introduction and waits for the client's. */
+    SENT_INTRO,
+    /** Logged in. */
+    CONNECTED,
     CLOSED
   }
 
-  /** A subscription: which data, how often, and what the client has been sent. */
-  static final class Subscription {
+  /**
+   * A request (ArNetworking's REQUEST): which data, how often (negative: only when it changes or is
+   * broadcast), its arguments, and what the client has been sent.
+   */
+  static final class Request {
     final DataEntry entry;
-    volatile long intervalNanos;
+    final long intervalNanos;
+    final byte[] args;
     long nextDueNanos;
-    long lastVersion = Long.MIN_VALUE;
+    volatile long lastVersion = Long.MIN_VALUE;
 
-    Subscription(DataEntry entry, long intervalNanos) {
+    /** A handler run for this request has not finished yet (so runs never pile up). */
+    final AtomicBoolean running = new AtomicBoolean();
+
+    Request(DataEntry entry, long intervalNanos, byte[] args) {
       this.entry = entry;
       this.intervalNanos = intervalNanos;
+      this.args = args;
+    }
+
+    boolean periodic() {
+      return intervalNanos >= 0;
     }
   }
 
+  private final ArServerBase server;
   private final int id;
   private final String ip;
   final SocketChannel channel;
   SelectionKey key;
   final OutboundQueue out;
-  final Map<Integer, Subscription> subscriptions = new ConcurrentHashMap<>();
+  final Map<Integer, Request> requests = new ConcurrentHashMap<>();
   final AtomicInteger pendingCalls = new AtomicInteger();
+
+  /** Held while one of this client's worker handlers runs (see ArServerBase.runCall). */
+  final Object handlerLock = new Object();
+
   final AtomicBoolean writeScheduled = new AtomicBoolean();
   final AtomicBoolean dropRequested = new AtomicBoolean();
   private final AtomicLong bytesSent = new AtomicLong();
   private final AtomicLong bytesReceived = new AtomicLong();
 
+  // Set when the connection is made, then read-only.
+  final String passwordKey;
+  final long authKey;
+  final int introKey;
+
   // I/O thread only.
-  final FrameSplitter in;
-  final ByteBuffer header = ByteBuffer.allocate(Frames.MAX_HEADER_BYTES);
-  final ByteBuffer[] writeBufs = new ByteBuffer[2];
+  final PacketSplitter in = new PacketSplitter();
+  ByteBuffer writingBuf;
   Outgoing writing;
-  boolean frameInProgress;
-  byte[] nonce;
-  Credentials pendingCredentials;
   long connectedNanos;
   long lastHeardNanos;
   long lastWriteProgressNanos;
   boolean closeAfterFlush;
+  volatile InetSocketAddress udpAddress;
+  volatile boolean tcpOnly = true;
 
-  private volatile State state = State.AWAITING_HELLO;
-  private volatile String clientName = "";
+  /** The client wants an empty packet for commands that return nothing (a JAria client). */
+  volatile boolean wantsAcks;
+
+  private volatile State state = State.SENT_INTRO;
   private volatile String user = "";
   private volatile Credentials credentials;
   private volatile String closeReason;
 
-  ArServerClient(int id, SocketChannel channel, String ip, long maxQueuedBytes, int maxFrame) {
+  ArServerClient(
+      ArServerBase server,
+      int id,
+      SocketChannel channel,
+      String ip,
+      long maxQueuedBytes,
+      String passwordKey,
+      long authKey,
+      int introKey) {
+    this.server = server;
     this.id = id;
-    this.in = new FrameSplitter(4096, maxFrame);
     this.channel = channel;
     this.ip = ip;
     this.out = new OutboundQueue(maxQueuedBytes);
+    this.passwordKey = passwordKey;
+    this.authKey = authKey;
+    this.introKey = introKey;
   }
 
   State state() {
@@ -88,15 +123,10 @@ public final class ArServerClient {
     state = s;
   }
 
-  void loggedIn(String name, Credentials c) {
-    clientName = name;
+  void loggedIn(Credentials c) {
     user = c.getUser();
     credentials = c;
-    state = State.READY;
-  }
-
-  void setClientName(String name) {
-    clientName = name;
+    state = State.CONNECTED;
   }
 
   void setCloseReason(String reason) {
@@ -117,6 +147,20 @@ public final class ArServerClient {
     bytesReceived.addAndGet(n);
   }
 
+  /**
+   * Sends {@code packet} to this client (ArNetworking's {@code sendPacketTcp}): for handlers that
+   * answer with several packets, such as {@code getMap}. Set the packet's command to the data's
+   * number ({@link ArServerBase#findCommandFromName}).
+   *
+   * @throws IllegalArgumentException if the packet has no command
+   */
+  public void sendPacketTcp(ArNetPacket packet) {
+    if (packet.getCommand() == 0) {
+      throw new IllegalArgumentException("set the packet's command before sending it");
+    }
+    server.sendPacket(this, packet);
+  }
+
   /** The server's number for this client (1, 2, ... in connection order). */
   public int getId() {
     return id;
@@ -127,19 +171,14 @@ public final class ArServerClient {
     return ip;
   }
 
-  /** The name the client gave at login. */
-  public String getClientName() {
-    return clientName;
-  }
-
-  /** The user it logged in as ("" before login). */
+  /** The user it logged in as ("" before login, or on an open server where none was given). */
   public String getUser() {
     return user;
   }
 
   /** Whether it has logged in (and not been closed). */
   public boolean isLoggedIn() {
-    return state == State.READY;
+    return state == State.CONNECTED;
   }
 
   /** Whether the connection has been closed. */
@@ -147,12 +186,17 @@ public final class ArServerClient {
     return state == State.CLOSED;
   }
 
+  /** Whether the client confirmed a UDP path (else everything goes over TCP). */
+  public boolean isUdpConfirmed() {
+    return !tcpOnly;
+  }
+
   /** Why the connection was closed, or null while open. */
   public String getCloseReason() {
     return state == State.CLOSED ? closeReason : null;
   }
 
-  /** Whether the user may use data of {@code commandGroup}. */
+  /** Whether the user may use data of {@code commandGroup} (ArNetworking's group check). */
   public boolean hasGroupAccess(String commandGroup) {
     Credentials c = credentials;
     return c != null && c.hasGroupAccess(commandGroup);
@@ -188,10 +232,12 @@ public final class ArServerClient {
     return bytesReceived.get();
   }
 
-  /** The client's subscriptions: data name → interval. */
+  /**
+   * The client's requests: data name → interval (negative: only when it changes or is broadcast).
+   */
   public Map<String, Duration> getSubscriptions() {
     Map<String, Duration> m = new LinkedHashMap<>();
-    for (Subscription s : subscriptions.values()) {
+    for (Request s : requests.values()) {
       m.put(s.entry.name(), Duration.ofNanos(s.intervalNanos));
     }
     return m;

@@ -4,50 +4,72 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.security.SecureRandom;
-import java.util.Base64;
-import java.util.LinkedHashMap;
+import java.nio.file.attribute.PosixFilePermission;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import org.jaria.net.protocol.PasswordHash;
+import java.util.TreeMap;
 
 /**
- * A user/password file (ArNetworking's {@code ArServerUserInfo}). One user per line:
+ * ArNetworking's user file ({@code ArServerUserInfo}), the format ARIA's {@code
+ * serverDemo.userInfo} uses:
  *
  * <pre>
- * # comments and blank lines are ignored
- * User operator pbkdf2-sha256:60000:&lt;salt, base64&gt;:&lt;key, base64&gt; all
- * User visitor  pbkdf2-sha256:60000:...:... RobotInfo SensorInfo
+ * UserInfoVersion1
+ * ; comments start with ';' (or '#')
+ * user operator secret1 all
+ * user visitor  secret2 RobotInfo SensorInfo
  * </pre>
  *
- * <p>The words after the key are the user's command groups ({@code all} for every group). Make a
- * line with {@link #makeLine(String, String, String...)}; the password itself is never stored. User
- * names are compared exactly.
+ * <p>After the header line each {@code user} line has a name, a password (letters and digits only,
+ * as ARIA requires) and the user's command groups ({@code all} for every group). Names and groups
+ * are compared ignoring case. The passwords are stored as written, because ArNetworking's login
+ * checks a digest made from the password itself: {@link #readFile} therefore refuses a file that
+ * other users of the computer may read.
  */
 public final class ArServerUserInfo implements Authenticator {
-
-  private static final String SCHEME = "pbkdf2-sha256";
 
   private final Map<String, Credentials> users;
   private final String source;
 
   private ArServerUserInfo(Map<String, Credentials> users, String source) {
-    this.users = Map.copyOf(users);
+    this.users = users;
     this.source = source;
   }
 
   /**
    * Reads a user file.
    *
-   * @throws IOException if it cannot be read
+   * @throws IOException if it cannot be read, or if users other than its owner may read it
    * @throws IllegalArgumentException naming file and line for a malformed line or a duplicate user
    */
   public static ArServerUserInfo readFile(Path file) throws IOException {
+    checkPrivate(file);
     return parse(Files.readAllLines(file, StandardCharsets.UTF_8), file.toString());
+  }
+
+  /**
+   * Refuses a password file that its group or others may read.
+   *
+   * @throws IOException saying what to run to fix it
+   */
+  public static void checkPrivate(Path file) throws IOException {
+    Set<PosixFilePermission> p;
+    try {
+      p = Files.getPosixFilePermissions(file);
+    } catch (UnsupportedOperationException e) {
+      return; // Not a POSIX file system: nothing to check.
+    }
+    if (p.contains(PosixFilePermission.GROUP_READ) || p.contains(PosixFilePermission.OTHERS_READ)) {
+      throw new IOException(
+          file
+              + " holds passwords but other users may read it; run 'chmod 600 "
+              + file
+              + "' and start again");
+    }
   }
 
   /**
@@ -57,77 +79,62 @@ public final class ArServerUserInfo implements Authenticator {
    * @throws IllegalArgumentException naming source and line for a malformed line
    */
   public static ArServerUserInfo parse(List<String> lines, String sourceName) {
-    Map<String, Credentials> users = new LinkedHashMap<>();
+    Map<String, Credentials> users = new TreeMap<>(String.CASE_INSENSITIVE_ORDER);
+    boolean header = false;
     for (int i = 0; i < lines.size(); i++) {
       String line = lines.get(i).strip();
-      if (line.isEmpty() || line.startsWith("#")) {
+      if (line.isEmpty() || line.startsWith(";") || line.startsWith("#")) {
         continue;
       }
       String where = sourceName + ":" + (i + 1) + ": ";
       String[] w = line.split("\\s+");
-      if (w.length < 3 || !w[0].equalsIgnoreCase("User")) {
-        throw new IllegalArgumentException(
-            where + "expected 'User <name> " + SCHEME + ":<iterations>:<salt>:<key> [groups...]'");
+      if (!header) {
+        if (!w[0].equalsIgnoreCase("UserInfoVersion1")) {
+          throw new IllegalArgumentException(where + "the first line must be 'UserInfoVersion1'");
+        }
+        header = true;
+        continue;
       }
-      String[] k = w[2].split(":", -1);
-      if (k.length != 4 || !k[0].equals(SCHEME)) {
-        throw new IllegalArgumentException(
-            where
-                + "the key must look like "
-                + SCHEME
-                + ":<iterations>:<salt>:<key>; make one with ArServerUserInfo.makeLine");
+      if (w[0].equalsIgnoreCase("doNotUse")) {
+        continue;
       }
-      int iterations;
-      byte[] salt;
-      byte[] key;
-      try {
-        iterations = Integer.parseInt(k[1]);
-        salt = Base64.getDecoder().decode(k[2]);
-        key = Base64.getDecoder().decode(k[3]);
-      } catch (IllegalArgumentException e) {
-        throw new IllegalArgumentException(where + "bad number or base64 in the key", e);
+      if (w.length < 3 || !w[0].equalsIgnoreCase("user")) {
+        throw new IllegalArgumentException(where + "expected 'user <name> <password> [groups...]'");
       }
-      if (iterations < 1 || iterations > PasswordHash.MAX_ITERATIONS) {
+      if (!alnum(w[1]) || !alnum(w[2])) {
         throw new IllegalArgumentException(
-            where + "iterations must be 1.." + PasswordHash.MAX_ITERATIONS);
-      }
-      if (key.length != PasswordHash.KEY_BYTES) {
-        throw new IllegalArgumentException(
-            where + "the key must be " + PasswordHash.KEY_BYTES + " bytes, is " + key.length);
+            where + "user names and passwords may hold only letters and digits (as in ARIA)");
       }
       Set<String> groups = new LinkedHashSet<>(List.of(w).subList(3, w.length));
-      if (users.put(w[1], new Credentials(w[1], salt, iterations, key, groups)) != null) {
+      if (users.put(w[1], new Credentials(w[1], w[2], groups)) != null) {
         throw new IllegalArgumentException(where + "user " + w[1] + " is listed twice");
       }
+    }
+    if (!header) {
+      throw new IllegalArgumentException(sourceName + ": no 'UserInfoVersion1' header line");
     }
     return new ArServerUserInfo(users, sourceName);
   }
 
+  private static boolean alnum(String s) {
+    return !s.isEmpty() && s.chars().allMatch(ch -> ch < 128 && Character.isLetterOrDigit(ch));
+  }
+
   /**
-   * A line for a user file, with a fresh random salt and the default number of rounds.
+   * A line for a user file.
    *
    * @param groups command groups ({@code "all"} for every group)
    */
   public static String makeLine(String user, String password, String... groups) {
-    return makeLine(user, password, PasswordHash.DEFAULT_ITERATIONS, groups);
-  }
-
-  /** As {@link #makeLine(String, String, String...)}, with {@code iterations} PBKDF2 rounds. */
-  public static String makeLine(String user, String password, int iterations, String... groups) {
-    if (user.isEmpty() || user.chars().anyMatch(Character::isWhitespace)) {
-      throw new IllegalArgumentException("a user name must be one word, got '" + user + "'");
+    if (!alnum(user) || !alnum(password)) {
+      throw new IllegalArgumentException(
+          "user names and passwords may hold only letters and digits (as in ARIA)");
     }
-    byte[] salt = PasswordHash.randomBytes(new SecureRandom(), PasswordHash.SALT_BYTES);
-    byte[] key = PasswordHash.derive(password, salt, iterations);
-    Base64.Encoder b64 = Base64.getEncoder();
     return String.format(
         Locale.ROOT,
-        "User %s %s:%d:%s:%s%s",
+        "user %s %s%s",
         user,
-        SCHEME,
-        iterations,
-        b64.encodeToString(salt),
-        b64.encodeToString(key),
+        password,
         groups.length == 0 ? "" : " " + String.join(" ", groups));
   }
 
@@ -138,7 +145,7 @@ public final class ArServerUserInfo implements Authenticator {
 
   /** The user names. */
   public Set<String> getUserNames() {
-    return users.keySet();
+    return Set.copyOf(users.keySet());
   }
 
   @Override

@@ -1,24 +1,16 @@
 package org.jaria.net.server;
 
-import java.security.SecureRandom;
 import java.util.Optional;
 import java.util.Set;
-import org.jaria.net.protocol.PasswordHash;
 
 /**
- * Who may log in to an {@link ArServerBase}. Three kinds:
- *
- * <ul>
- *   <li>{@link #open()}: anybody (the server then listens on the loopback interface only, unless
- *       told otherwise);
- *   <li>{@link #sharedSecret(String)}: any user name with one password known to all operators;
- *   <li>{@link ArServerUserInfo}: a user/password file with salted keys and command groups, as
- *       ArNetworking's user info file.
- * </ul>
+ * Who may log in: finds a user's {@link Credentials}. {@link #open()} lets anybody in (the server
+ * then ignores the login digest, as an ArNetworking server without a user file does); {@link
+ * ArServerUserInfo} reads ArNetworking's user file.
  */
 public interface Authenticator {
 
-  /** The credentials of {@code user}, or empty if there is no such user. */
+  /** The user's credentials, if the user exists. */
   Optional<Credentials> find(String user);
 
   /** Whether anybody may log in without a password. */
@@ -26,12 +18,12 @@ public interface Authenticator {
     return false;
   }
 
-  /** An authenticator that lets everybody in, with access to every command group. */
+  /** Anybody may log in, with every group. */
   static Authenticator open() {
     return new Authenticator() {
       @Override
       public Optional<Credentials> find(String user) {
-        return Optional.of(new Credentials(user, new byte[0], 0, new byte[0], Set.of("all")));
+        return Optional.of(new Credentials(user, "", Set.of("all")));
       }
 
       @Override
@@ -42,17 +34,14 @@ public interface Authenticator {
   }
 
   /**
-   * An authenticator that accepts any user name with the password {@code secret}, with access to
-   * every command group.
+   * Any user name with this one password may log in, with every group.
+   *
+   * @throws IllegalArgumentException if the secret is empty
    */
   static Authenticator sharedSecret(String secret) {
     if (secret == null || secret.isEmpty()) {
       throw new IllegalArgumentException("a shared secret must not be empty; use open() instead");
     }
-    byte[] salt = PasswordHash.randomBytes(new SecureRandom(), PasswordHash.SALT_BYTES);
-    byte[] key = PasswordHash.derive(secret, salt, PasswordHash.DEFAULT_ITERATIONS);
-    return user ->
-        Optional.of(
-            new Credentials(user, salt, PasswordHash.DEFAULT_ITERATIONS, key, Set.of("all")));
+    return user -> Optional.of(new Credentials(user, secret, Set.of("all")));
   }
 }

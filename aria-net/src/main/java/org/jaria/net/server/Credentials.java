@@ -1,35 +1,32 @@
 package org.jaria.net.server;
 
-import java.util.Arrays;
+import java.util.Locale;
 import java.util.Set;
+import java.util.TreeSet;
 
 /**
- * What the server knows about one user: the salted password key (never the password) and the
- * command groups the user may use ({@code "all"} for every group).
+ * A user the server knows: name, password and command groups. ArNetworking's login needs the server
+ * to know the password itself (it checks an MD5 digest the client made of it), so unlike a modern
+ * login the password must be kept; protect the file it comes from (see {@link ArServerUserInfo}).
+ * Group names are compared ignoring case, as ArNetworking does.
  */
 public final class Credentials {
 
   private final String user;
-  private final byte[] salt;
-  private final int iterations;
-  private final byte[] key;
+  private final String password;
   private final Set<String> groups;
 
   /**
-   * Credentials.
+   * A user.
    *
-   * @param user the user name
-   * @param salt the PBKDF2 salt
-   * @param iterations the PBKDF2 rounds
-   * @param key {@code PBKDF2-HMAC-SHA256(password, salt, iterations)}
-   * @param groups the command groups allowed
+   * @param groups command groups ({@code "all"} for every group)
    */
-  public Credentials(String user, byte[] salt, int iterations, byte[] key, Set<String> groups) {
+  public Credentials(String user, String password, Set<String> groups) {
     this.user = user;
-    this.salt = salt.clone();
-    this.iterations = iterations;
-    this.key = key.clone();
-    this.groups = Set.copyOf(groups);
+    this.password = password;
+    Set<String> g = new TreeSet<>(String.CASE_INSENSITIVE_ORDER);
+    g.addAll(groups);
+    this.groups = g;
   }
 
   /** The user name. */
@@ -37,27 +34,21 @@ public final class Credentials {
     return user;
   }
 
-  /** The salt (a copy). */
-  public byte[] getSalt() {
-    return salt.clone();
+  /** The password (needed to check ArNetworking's login digest). */
+  String getPassword() {
+    return password;
   }
 
-  /** The PBKDF2 rounds. */
-  public int getIterations() {
-    return iterations;
-  }
-
-  /** The derived key (a copy). */
-  public byte[] getKey() {
-    return key.clone();
-  }
-
-  /** The command groups allowed. */
+  /** The command groups, in lower case. */
   public Set<String> getGroups() {
-    return groups;
+    Set<String> s = new TreeSet<>();
+    for (String g : groups) {
+      s.add(g.toLowerCase(Locale.ROOT));
+    }
+    return s;
   }
 
-  /** Whether the user may use data of {@code commandGroup} (empty group: anybody). */
+  /** Whether data of {@code commandGroup} may be used ("" is open to everybody). */
   public boolean hasGroupAccess(String commandGroup) {
     return commandGroup == null
         || commandGroup.isEmpty()
@@ -67,6 +58,6 @@ public final class Credentials {
 
   @Override
   public String toString() {
-    return "Credentials[" + user + ", groups " + groups + ", key " + Arrays.hashCode(key) + "]";
+    return "Credentials[" + user + ", groups " + getGroups() + "]";
   }
 }

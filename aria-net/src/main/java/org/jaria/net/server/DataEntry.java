@@ -7,7 +7,7 @@ import org.jaria.net.data.DataInfo;
 /**
  * A registered data: its description, and either a request handler or a publication. For a
  * publication it caches the encoding of the latest version, so a value is encoded once however many
- * clients receive it.
+ * clients receive it (ArNetworking calls the handler for each client; the bytes are the same).
  */
 final class DataEntry {
 
@@ -26,8 +26,8 @@ final class DataEntry {
     this.publication = publication;
   }
 
-  /** A published value with its encoding, both for the same version. */
-  record Encoded(long version, ByteBuffer payload) {}
+  /** A published value's whole packet (command, body, checksum), for one version. */
+  record Encoded(long version, ByteBuffer wire) {}
 
   /**
    * The current published value, encoded (read-only, shared; null if nothing was published yet).
@@ -39,9 +39,9 @@ final class DataEntry {
       return null;
     }
     if (encoded == null || v.version() != encodedVersion) {
-      ArNetPacket p = new ArNetPacket();
+      ArNetPacket p = new ArNetPacket(info.id());
       v.value().write(p);
-      encoded = ByteBuffer.wrap(p.toByteArray()).asReadOnlyBuffer();
+      encoded = ByteBuffer.wrap(p.toWire()).asReadOnlyBuffer();
       encodedVersion = v.version();
     }
     return new Encoded(encodedVersion, encoded);

@@ -1,33 +1,31 @@
 package org.jaria.net.server;
 
-import java.nio.ByteBuffer;
-import java.util.Arrays;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.ArNetPacketException;
 import org.jaria.net.data.DataInfo;
-import org.jaria.net.protocol.Frames;
-import org.jaria.net.protocol.Kind;
+import org.jaria.net.protocol.LoginDigest;
 import org.jaria.net.protocol.NetError;
-import org.jaria.net.protocol.PasswordHash;
 import org.jaria.net.protocol.Protocol;
 import org.jaria.net.protocol.ProtocolException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Understands the frames a client sends, on the I/O thread: the login conversation, then requests,
- * subscriptions and pings. Decoding is strict — a frame that is not what its kind promises closes
- * that client — while a well-formed request for something missing or not allowed only gets an error
- * reply. Requests are handed to workers or to the robot's cycle; nothing slow happens here.
+ * Understands the packets a client sends, on the I/O thread: the introduction and login, then
+ * requests (once, at an interval, stop) and the fixed commands. Decoding is strict — a login packet
+ * that is not what ArNetworking sends closes that client — while a request for something missing or
+ * not allowed is only logged and counted, as ArNetworking does. Requests are handed to workers or
+ * to the robot's cycle; nothing slow happens here.
  */
 final class Dispatcher {
 
   private static final Logger log = LoggerFactory.getLogger(Dispatcher.class);
 
-  /** Longest client name or user name kept. */
+  /** Longest user name kept (ARIA reads at most 511 bytes). */
   private static final int MAX_NAME = 64;
 
   private final ArServerBase server;
@@ -38,250 +36,283 @@ final class Dispatcher {
     this.options = options;
   }
 
-  /** Handles one frame of {@code len} bytes at {@code off} of {@code a}. */
-  void onFrame(ArServerClient c, byte[] a, int off, int len) throws ProtocolException {
-    if (c.closeAfterFlush) {
+  /** The server's introduction, sent as soon as a client connects. */
+  ArNetPacket introduction(ArServerClient c, int udpPort) {
+    ArNetPacket p = new ArNetPacket(Protocol.SERVER_INTRODUCTION);
+    p.strToBuf(Protocol.SERVER_VERSION)
+        .uByte2ToBuf(udpPort)
+        .uByte4ToBuf(c.authKey)
+        .uByte4ToBuf(c.introKey & 0xFFFFFFFFL)
+        .strToBuf(c.passwordKey)
+        .strToBuf(options.protocolVersion());
+    return p;
+  }
+
+  /** Handles one packet from {@code c} (TCP, or UDP when {@code udp}). */
+  void onPacket(ArServerClient c, ArNetPacket p, boolean udp) throws ProtocolException {
+    if (c.closeAfterFlush || c.isClosed()) {
       return;
     }
-    ArNetPacket p = ArNetPacket.wrap(a, off, len);
+    int cmd = p.getCommand();
     try {
-      Kind kind = Kind.fromCode(p.bufToLong());
-      if (kind == null) {
-        throw new ProtocolException(NetError.MALFORMED, "unknown frame kind");
+      if (c.state() == ArServerClient.State.SENT_INTRO) {
+        if (cmd == Protocol.CLIENT_INTRODUCTION) {
+          introduction(c, p);
+        } else if (cmd == Protocol.CLIENT_TCP_ONLY || cmd == Protocol.CLIENT_UDP_CONFIRMATION) {
+          // Harmless before login (ARIA clients may send TCP_ONLY right after their intro).
+          c.tcpOnly = true;
+        } else if (cmd == Protocol.CLIENT_SHUTDOWN) {
+          bye(c);
+        } else {
+          throw new ProtocolException(
+              NetError.PROTOCOL, "sent command " + cmd + " before its introduction");
+        }
+        return;
       }
-      switch (c.state()) {
-        case AWAITING_HELLO -> {
-          expect(kind, Kind.HELLO);
-          hello(c, p);
+      switch (cmd) {
+        case Protocol.CLIENT_SHUTDOWN -> bye(c);
+        case Protocol.CLIENT_INTRODUCTION ->
+            log.debug("{}: a second introduction, ignored (as ArNetworking does)", c);
+        case Protocol.CLIENT_TCP_ONLY, Protocol.CLIENT_UDP_INTRODUCTION -> c.tcpOnly = true;
+        case Protocol.CLIENT_UDP_CONFIRMATION -> {
+          // The client heard our UDP introduction; nothing else to do.
         }
-        case AWAITING_LOGIN -> {
-          expect(kind, Kind.LOGIN);
-          login(c, p);
+        case Protocol.CLIENT_LIST -> sendList(c);
+        case Protocol.CLIENT_REQUEST -> request(c, p);
+        case Protocol.CLIENT_REQUEST_STOP -> {
+          int command = p.bufToUByte2();
+          if (c.requests.remove(command) == null) {
+            log.debug("{}: stop for command {} it had not requested", c, command);
+          }
         }
-        case READY -> ready(c, kind, p);
-        case CLOSED -> {
-          // Frames after close are ignored.
-        }
-      }
-      if (kind != Kind.CALL && p.hasMore()) {
-        // Later versions may append values to a message, but they must be well-formed.
-        p.validate();
+        default -> requestOnce(c, p);
       }
     } catch (ArNetPacketException e) {
-      throw new ProtocolException(NetError.MALFORMED, "malformed frame: " + e.getMessage(), e);
+      if (c.state() == ArServerClient.State.SENT_INTRO) {
+        throw new ProtocolException(NetError.MALFORMED, "malformed introduction: " + e, e);
+      }
+      server.stats.requestErrors.increment();
+      log.info("{}: malformed packet for command {}: {}", c, cmd, e.getMessage());
     }
   }
 
-  private static void expect(Kind got, Kind wanted) throws ProtocolException {
-    if (got != wanted) {
-      throw new ProtocolException(
-          NetError.PROTOCOL, "sent " + got + " where " + wanted + " was expected");
-    }
+  private void bye(ArServerClient c) {
+    c.setCloseReason("the client said goodbye");
+    c.closeAfterFlush = true;
+    server.io().scheduleWrite(c, false);
   }
 
   private static String name(String s) {
-    if (s == null) {
-      return "";
-    }
     return s.length() > MAX_NAME ? s.substring(0, MAX_NAME) : s;
   }
 
-  private void hello(ArServerClient c, ArNetPacket p) throws ProtocolException {
-    String magic = p.bufToStr();
-    if (!Protocol.MAGIC.equals(magic)) {
-      throw new ProtocolException(NetError.MALFORMED, "not a JAria client (bad magic)");
-    }
-    long version = p.bufToLong();
-    String clientName = name(p.bufToStr());
+  private void introduction(ArServerClient c, ArNetPacket p) {
+    int clientUdpPort = p.bufToUByte2();
     String user = name(p.bufToStr());
-    c.setClientName(clientName);
-    if (version != Protocol.VERSION) {
-      refuse(
+    byte[] digest = p.bufToData(LoginDigest.DIGEST_BYTES);
+    String protocolVersion = p.bufToStr();
+    // The client's type byte (real/simulated) follows; JAria enforces no type.
+    if (!options.protocolVersion().isEmpty()
+        && !options.protocolVersion().equals(protocolVersion)
+        && !Protocol.JARIA_ACK_VERSION.equals(protocolVersion)) {
+      reject(
           c,
-          NetError.BAD_VERSION,
-          "the server speaks protocol version "
-              + Protocol.VERSION
-              + " and the client "
-              + version
-              + ": use a client and server of the same JAria release");
+          Protocol.REJECTED_SERVER_PROTOCOL,
+          "Server rejecting client connection since protocol version does not match");
+      return;
+    }
+    if (server.getNumClients() >= options.maxClients()) {
+      server.stats.refusedFull.increment();
+      reject(
+          c,
+          Protocol.REJECTED_TOO_MANY_CLIENTS,
+          "Server rejecting connection since it would exceed the maximum number of allowed"
+              + " connections (which is "
+              + options.maxClients()
+              + ")");
       return;
     }
     Authenticator auth = options.authenticator();
-    c.nonce = PasswordHash.randomBytes(server.random, Protocol.NONCE_BYTES);
-    byte[] salt;
-    int iterations;
-    Optional<Credentials> creds = auth.find(user);
+    Credentials creds;
     if (auth.isOpen()) {
-      salt = new byte[0];
-      iterations = 0;
-      c.pendingCredentials = creds.orElseThrow();
-    } else if (creds.isPresent()) {
-      salt = creds.get().getSalt();
-      iterations = creds.get().getIterations();
-      c.pendingCredentials = creds.get();
+      creds = auth.find(user).orElseThrow();
     } else {
-      // An unknown user gets a believable challenge, so names cannot be probed.
-      salt = Arrays.copyOf(PasswordHash.proof(server.serverKey, user.getBytes(UTF8)), 16);
-      iterations = PasswordHash.DEFAULT_ITERATIONS;
-      c.pendingCredentials = null;
+      if (server.loginLimiter().isThrottled(c.getIpString())) {
+        server.stats.loginThrottled.increment();
+        log.info("{}: too many failed logins from this address; refused without checking", c);
+        reject(c, Protocol.REJECTED_BAD_LOGIN, "");
+        return;
+      }
+      Optional<Credentials> found = auth.find(user);
+      byte[] want =
+          LoginDigest.digest(
+              options.serverKey(),
+              c.passwordKey,
+              found.map(Credentials::getPassword).orElse("\u0000no such user"));
+      if (found.isEmpty() || !LoginDigest.matches(want, digest)) {
+        server.stats.loginFailed.increment();
+        server.loginLimiter().failed(c.getIpString());
+        log.info("{}: rejected user '{}' or password", c, user);
+        reject(c, Protocol.REJECTED_BAD_LOGIN, "");
+        return;
+      }
+      creds = found.get();
     }
-    c.setState(ArServerClient.State.AWAITING_LOGIN);
-    server.sendFrame(
-        c,
-        Frames.frame(
-            Kind.CHALLENGE,
-            ArNetPacket.of(
-                Protocol.MAGIC, Protocol.VERSION, options.serverName(), c.nonce, salt, iterations)),
-        false);
-  }
-
-  private static final java.nio.charset.Charset UTF8 = java.nio.charset.StandardCharsets.UTF_8;
-
-  private void login(ArServerClient c, ArNetPacket p) throws ProtocolException {
-    byte[] proof = p.bufToData();
-    Credentials creds = c.pendingCredentials;
-    boolean ok =
-        creds != null
-            && (options.authenticator().isOpen()
-                || PasswordHash.matches(PasswordHash.proof(creds.getKey(), c.nonce), proof));
-    c.pendingCredentials = null;
-    c.nonce = null;
-    if (!ok) {
-      server.stats.loginFailed.increment();
-      log.info("{}: login refused", c);
-      refuse(c, NetError.BAD_LOGIN, "login refused: wrong user name or password");
-      return;
-    }
-    c.loggedIn(c.getClientName(), creds);
-    List<DataInfo> visible =
-        server.dataList().stream().filter(d -> creds.hasGroupAccess(d.commandGroup())).toList();
-    ArNetPacket w = new ArNetPacket();
-    w.intToBuf(c.getId())
-        .intToBuf(options.minInterval().toMillis())
-        .intToBuf(options.maxInboundFrame())
-        .arrayToBuf(visible.size());
-    for (DataInfo d : visible) {
-      d.write(w);
-    }
-    server.sendFrame(c, Frames.frame(Kind.WELCOME, w), false);
-    log.info("{} logged in as '{}' ({})", c, c.getUser(), c.getClientName());
+    c.wantsAcks = Protocol.JARIA_ACK_VERSION.equals(protocolVersion);
+    c.loggedIn(creds);
+    c.tcpOnly = clientUdpPort == 0 || server.udpPort() == 0 || c.tcpOnly;
+    server.sendPacket(c, new ArNetPacket(Protocol.SERVER_CONNECTED));
+    sendList(c);
+    log.info("{} logged in{}", c, user.isEmpty() ? "" : " as '" + user + "'");
     server.clientLoggedIn(c);
   }
 
-  private void refuse(ArServerClient c, NetError code, String reason) {
-    c.setCloseReason(reason);
-    server.sendFrame(c, Frames.frame(Kind.REFUSED, code.code(), reason), false);
+  private void reject(ArServerClient c, int reason, String text) {
+    c.setCloseReason("rejected (" + reason + "): " + (text.isEmpty() ? "bad login" : text));
+    ArNetPacket r = new ArNetPacket(Protocol.SERVER_REJECTED);
+    r.byte2ToBuf(reason).strToBuf(text);
+    server.sendPacket(c, r);
     c.closeAfterFlush = true;
   }
 
-  private void ready(ArServerClient c, Kind kind, ArNetPacket p) throws ProtocolException {
-    switch (kind) {
-      case CALL -> call(c, p);
-      case SUBSCRIBE -> subscribe(c, p);
-      case UNSUBSCRIBE -> {
-        int dataId = p.bufToInt();
-        c.subscriptions.remove(dataId);
+  /** Sends the data list the user may see: LIST, LISTARGRET, LISTGROUPANDFLAGS (split to fit). */
+  void sendList(ArServerClient c) {
+    List<DataInfo> visible = new ArrayList<>();
+    for (DataInfo d : server.dataList()) {
+      if (c.hasGroupAccess(d.commandGroup())) {
+        visible.add(d);
       }
-      case PING -> {
-        long token = p.bufToLong();
-        server.sendFrame(c, Frames.frame(Kind.PONG, token), false);
-      }
-      case BYE -> {
-        c.setCloseReason("the client said goodbye");
-        c.closeAfterFlush = true;
-        server.io().scheduleWrite(c, false);
-      }
-      default ->
-          throw new ProtocolException(NetError.PROTOCOL, "sent " + kind + " after logging in");
+    }
+    for (ArNetPacket p : listPackets(visible)) {
+      server.sendPacket(c, p);
     }
   }
 
-  private void call(ArServerClient c, ArNetPacket p) {
-    int reqId = p.bufToInt();
-    int dataId = p.bufToInt();
-    // The arguments must be well-formed MessagePack; what they mean is the handler's business.
-    p.validate();
+  /** The three kinds of list packets for {@code list}, each kind split so a packet fits. */
+  static List<ArNetPacket> listPackets(List<DataInfo> list) {
+    List<ArNetPacket> out = new ArrayList<>();
+    addList(out, list, Protocol.SERVER_LIST, d -> new String[] {d.name(), d.description()});
+    addList(
+        out,
+        list,
+        Protocol.SERVER_LIST_ARGRET,
+        d -> new String[] {d.argumentDescription(), d.returnDescription()});
+    addList(
+        out,
+        list,
+        Protocol.SERVER_LIST_GROUP_AND_FLAGS,
+        d -> new String[] {d.commandGroup(), d.dataFlags()});
+    return out;
+  }
+
+  private static void addList(
+      List<ArNetPacket> out,
+      List<DataInfo> list,
+      int command,
+      java.util.function.Function<DataInfo, String[]> fields) {
+    int i = 0;
+    do {
+      ArNetPacket body = new ArNetPacket(command);
+      int count = 0;
+      int size = 2;
+      while (i < list.size()) {
+        String[] f = fields.apply(list.get(i));
+        int need = 2 + f[0].length() * 3 + 1 + f[1].length() * 3 + 1;
+        if (count > 0 && size + need > ArNetPacket.MAX_DATA_LENGTH) {
+          break;
+        }
+        size += need;
+        count++;
+        i++;
+      }
+      body.uByte2ToBuf(count);
+      for (int k = i - count; k < i; k++) {
+        String[] f = fields.apply(list.get(k));
+        body.uByte2ToBuf(list.get(k).id()).strToBuf(clip(f[0])).strToBuf(clip(f[1]));
+      }
+      out.add(body);
+    } while (i < list.size());
+  }
+
+  /** ARIA's client reads descriptions into buffers of 512-1024 bytes: keep them shorter. */
+  private static String clip(String s) {
+    return s.length() > 500 ? s.substring(0, 500) : s;
+  }
+
+  private void request(ArServerClient c, ArNetPacket p) {
+    int command = p.bufToUByte2();
+    long ms = p.bufToByte4();
+    byte[] args = p.remainingBytes();
     server.stats.requests.increment();
-    DataEntry e = server.entry(dataId);
+    DataEntry e = server.entry(command);
     if (e == null) {
-      server.sendError(c, reqId, dataId, NetError.UNKNOWN_DATA, "no data with id " + dataId);
+      server.stats.requestErrors.increment();
+      log.info("{}: request for command {}, which does not exist", c, command);
       return;
     }
     if (!c.hasGroupAccess(e.info.commandGroup())) {
-      server.sendError(
+      server.stats.requestErrors.increment();
+      log.info("{}: may not request '{}' ({} group)", c, e.name(), e.info.commandGroup());
+      return;
+    }
+    if (!c.requests.containsKey(command) && c.requests.size() >= options.maxSubscriptions()) {
+      server.stats.requestErrors.increment();
+      server.requestFailed(
           c,
-          reqId,
-          dataId,
-          NetError.NOT_ALLOWED,
-          "user '" + c.getUser() + "' may not use " + e.info.commandGroup() + " data");
+          e,
+          NetError.TOO_MANY_SUBSCRIPTIONS,
+          "at most " + options.maxSubscriptions() + " requests per client");
+      return;
+    }
+    long intervalNanos =
+        ms < 0 ? -1 : TimeUnit.MILLISECONDS.toNanos(Math.max(ms, options.minInterval().toMillis()));
+    ArServerClient.Request r = new ArServerClient.Request(e, intervalNanos, args);
+    r.nextDueNanos = System.nanoTime() + Math.max(0, intervalNanos);
+    c.requests.put(command, r);
+    // ArNetworking answers a new request at once, then at the interval (or on broadcasts).
+    if (e.publication != null) {
+      DataEntry.Encoded enc = e.currentEncoded();
+      if (enc != null) {
+        r.lastVersion = enc.version();
+        c.out.offerUpdate(Outgoing.update(command, enc.version(), enc.wire()));
+        server.io().scheduleWrite(c, false);
+      }
+    } else if (r.running.compareAndSet(false, true)) {
+      if (c.pendingCalls.incrementAndGet() > options.maxPendingCalls()) {
+        c.pendingCalls.decrementAndGet();
+        r.running.set(false);
+        server.stats.busy.increment();
+        return;
+      }
+      server.execute(c, e, args, r);
+    }
+    server.publisher().wakeup();
+  }
+
+  private void requestOnce(ArServerClient c, ArNetPacket p) {
+    int command = p.getCommand();
+    server.stats.requests.increment();
+    DataEntry e = server.entry(command);
+    if (e == null) {
+      server.stats.requestErrors.increment();
+      log.info("{}: asked for command {}, which does not exist", c, command);
+      return;
+    }
+    if (!c.hasGroupAccess(e.info.commandGroup())) {
+      server.stats.requestErrors.increment();
+      log.info("{}: may not use '{}' ({} group)", c, e.name(), e.info.commandGroup());
       return;
     }
     if (c.pendingCalls.incrementAndGet() > options.maxPendingCalls()) {
       c.pendingCalls.decrementAndGet();
       server.stats.busy.increment();
-      server.sendError(
+      server.requestFailed(
           c,
-          reqId,
-          dataId,
+          e,
           NetError.BUSY,
           "more than " + options.maxPendingCalls() + " requests waiting; wait for replies");
       return;
     }
-    int start = p.getReadLength();
-    byte[] args = p.toByteArray();
-    byte[] argBytes = Arrays.copyOfRange(args, start, args.length);
-    server.execute(c, reqId, e, argBytes);
-  }
-
-  private void subscribe(ArServerClient c, ArNetPacket p) {
-    int reqId = p.bufToInt();
-    int dataId = p.bufToInt();
-    long intervalMs = p.bufToLong();
-    DataEntry e = server.entry(dataId);
-    if (e == null) {
-      server.sendError(c, reqId, dataId, NetError.UNKNOWN_DATA, "no data with id " + dataId);
-      return;
-    }
-    if (e.publication == null) {
-      server.sendError(
-          c,
-          reqId,
-          dataId,
-          NetError.NOT_SUBSCRIBABLE,
-          e.name() + " is a request, not published data: ask for it with a call");
-      return;
-    }
-    if (!c.hasGroupAccess(e.info.commandGroup())) {
-      server.sendError(
-          c,
-          reqId,
-          dataId,
-          NetError.NOT_ALLOWED,
-          "user '" + c.getUser() + "' may not use " + e.info.commandGroup() + " data");
-      return;
-    }
-    if (!c.subscriptions.containsKey(dataId)
-        && c.subscriptions.size() >= options.maxSubscriptions()) {
-      server.sendError(
-          c,
-          reqId,
-          dataId,
-          NetError.TOO_MANY_SUBSCRIPTIONS,
-          "at most " + options.maxSubscriptions() + " subscriptions per client");
-      return;
-    }
-    long minMs = options.minInterval().toMillis();
-    long granted = Math.max(intervalMs, minMs);
-    ArServerClient.Subscription s =
-        new ArServerClient.Subscription(e, TimeUnit.MILLISECONDS.toNanos(granted));
-    s.nextDueNanos = System.nanoTime();
-    c.subscriptions.put(dataId, s);
-    server.sendFrame(c, Frames.frame(Kind.SUBSCRIBED, reqId, dataId, granted), false);
-    server.publisher().wakeup();
-  }
-
-  /** The payload of a response as a shared read-only buffer. */
-  static ByteBuffer shared(byte[] b) {
-    return ByteBuffer.wrap(b).asReadOnlyBuffer();
+    server.execute(c, e, p.remainingBytes(), null);
   }
 }

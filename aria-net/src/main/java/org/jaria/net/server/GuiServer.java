@@ -78,7 +78,7 @@ public final class GuiServer implements AutoCloseable {
       new ArServerInfoLocalization(server, loc);
     }
     new ArServerInfoStrings(server, infoGroup);
-    new ArServerHandlerLocalization(server, robot, b.localization);
+    new ArServerHandlerLocalization(server, robot, b.localization, b.map);
     if (b.pathPlanning != null) {
       new ArServerInfoPath(server, b.pathPlanning);
     }

@@ -3,9 +3,11 @@ package org.jaria.net.server;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.net.SocketAddress;
 import java.net.StandardSocketOptions;
 import java.nio.ByteBuffer;
 import java.nio.channels.ClosedSelectorException;
+import java.nio.channels.DatagramChannel;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.nio.channels.ServerSocketChannel;
@@ -14,17 +16,19 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.TimeUnit;
-import org.jaria.net.protocol.Frames;
-import org.jaria.net.protocol.Kind;
+import org.jaria.net.ArNetPacket;
+import org.jaria.net.ArNetPacketException;
+import org.jaria.net.protocol.LoginDigest;
 import org.jaria.net.protocol.NetError;
+import org.jaria.net.protocol.Protocol;
 import org.jaria.net.protocol.ProtocolException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The server's single I/O thread: accepts connections, reads and splits frames (handing each to the
- * {@link Dispatcher}), writes what the clients' queues hold without ever blocking, and enforces the
- * login, idle and stall timeouts. A client that breaks the protocol is closed here; nothing a
+ * The server's single I/O thread: accepts connections, reads and splits packets (handing each to
+ * the {@link Dispatcher}), writes what the clients' queues hold without ever blocking, and enforces
+ * the login, idle and stall timeouts. A client that breaks the protocol is closed here; nothing a
  * client does can block this thread or touch another client.
  */
 final class IoLoop implements Runnable {
@@ -34,13 +38,15 @@ final class IoLoop implements Runnable {
   /** Longest wait in select, so timeouts are checked at least this often. */
   private static final long SELECT_MS = 50;
 
-  /** Time given at shutdown to send the last CLOSING frames. */
+  /** Time given at shutdown to send the last SHUTDOWN packets. */
   private static final long SHUTDOWN_GRACE_MS = 200;
 
   private final ArServerBase server;
   private final ServerOptions options;
   private final Selector selector;
   private final ServerSocketChannel serverChannel;
+  private final DatagramChannel udpChannel;
+  private final ByteBuffer udpIn = ByteBuffer.allocate(ArNetPacket.MAX_LENGTH);
   private final Dispatcher dispatcher;
   private final ConcurrentLinkedQueue<ArServerClient> writeRequests = new ConcurrentLinkedQueue<>();
   private final ConcurrentLinkedQueue<Runnable> closeRequests = new ConcurrentLinkedQueue<>();
@@ -71,6 +77,38 @@ final class IoLoop implements Runnable {
               + "): is another server running there? Choose another port.",
           e);
     }
+    this.udpChannel = openUdp();
+  }
+
+  private DatagramChannel openUdp() {
+    if (!options.udp()) {
+      return null;
+    }
+    DatagramChannel ch = null;
+    try {
+      // ArNetworking's UDP port has the TCP port's number.
+      ch = DatagramChannel.open();
+      ch.bind(new InetSocketAddress(serverChannel.socket().getInetAddress(), port()));
+      ch.configureBlocking(false);
+      ch.register(selector, SelectionKey.OP_READ, this);
+      return ch;
+    } catch (IOException e) {
+      log.info("UDP port {} could not be opened ({}); clients will use TCP only", port(), e);
+      if (ch != null) {
+        closeQuietly(ch);
+      }
+      return null;
+    }
+  }
+
+  /** The UDP port, 0 if none is open. */
+  int udpPort() {
+    return udpChannel == null ? 0 : port();
+  }
+
+  /** Whether the server listens on the loopback address only. */
+  boolean isLoopbackOnly() {
+    return serverChannel.socket().getInetAddress().isLoopbackAddress();
   }
 
   private InetSocketAddress bindAddress() throws IOException {
@@ -159,6 +197,10 @@ final class IoLoop implements Runnable {
       accept();
       return;
     }
+    if (k.attachment() == this) {
+      readUdp();
+      return;
+    }
     ArServerClient c = (ArServerClient) k.attachment();
     try {
       if (k.isReadable()) {
@@ -176,7 +218,7 @@ final class IoLoop implements Runnable {
     } catch (RuntimeException e) {
       // Whatever a client's bytes make the decoder do, only that client pays for it.
       server.stats.malformed.increment();
-      log.info("{}: its frame could not be handled ({}); closing it", c, e.toString());
+      log.info("{}: its packet could not be handled ({}); closing it", c, e.toString());
       close(c, NetError.MALFORMED, "a frame the server could not decode", true);
     }
   }
@@ -209,24 +251,34 @@ final class IoLoop implements Runnable {
         closeQuietly(ch);
         return;
       }
-      if (clients.size() >= options.maxClients()) {
-        server.stats.refusedFull.increment();
-        log.info("refused a connection from {}: already {} clients", ip, clients.size());
-        byte[] f =
-            Frames.frame(
-                Kind.REFUSED,
-                NetError.SERVER_FULL.code(),
-                "the server already has its maximum of " + options.maxClients() + " clients");
-        try {
-          ch.write(ByteBuffer.wrap(f));
-        } catch (IOException e) {
-          // Best effort: the client learns from the closed connection anyway.
+      int pending = 0;
+      for (ArServerClient o : clients) {
+        if (!o.isLoggedIn()) {
+          pending++;
         }
+      }
+      if (pending >= options.maxPendingLogins()) {
+        // Sockets that never log in must not lock real users out: refuse the newcomer at once.
+        server.stats.refusedPending.increment();
+        log.info(
+            "refused a connection from {}: already {} connections waiting to log in", ip, pending);
         closeQuietly(ch);
         continue;
       }
+      long authKey;
+      do {
+        authKey = server.random.nextInt() & 0xFFFFFFFFL;
+      } while (authKey == 0 || hasAuthKey(authKey));
       ArServerClient c =
-          new ArServerClient(nextId++, ch, ip, options.maxQueuedBytes(), options.maxInboundFrame());
+          new ArServerClient(
+              server,
+              nextId++,
+              ch,
+              ip,
+              options.maxQueuedBytes(),
+              LoginDigest.newPasswordKey(server.random),
+              authKey,
+              server.random.nextInt() & 0x7FFFFFFF);
       long now = options.timeoutClock().nanoTime();
       c.connectedNanos = now;
       c.lastHeardNanos = now;
@@ -241,6 +293,9 @@ final class IoLoop implements Runnable {
       server.addClient(c);
       server.stats.accepted.increment();
       log.debug("{} connected", c);
+      // ArNetworking's server speaks first: its introduction carries the keys for the login.
+      c.out.offer(Outgoing.frame(dispatcher.introduction(c, udpPort()).toWire()));
+      flush(c);
     }
   }
 
@@ -252,7 +307,88 @@ final class IoLoop implements Runnable {
     }
     c.countReceived(n);
     c.lastHeardNanos = options.timeoutClock().nanoTime();
-    c.in.drain((a, off, len) -> dispatcher.onFrame(c, a, off, len));
+    c.in.drain(p -> dispatcher.onPacket(c, p, false));
+  }
+
+  private boolean hasAuthKey(long k) {
+    for (ArServerClient c : clients) {
+      if (c.authKey == k) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /**
+   * One UDP datagram: a client's UDP introduction (its auth key) is answered with our UDP
+   * introduction over UDP and a confirmation over TCP, as ArNetworking does; a packet from a
+   * confirmed client's address is handled like one sent over TCP; anything else is counted and
+   * dropped.
+   */
+  private void readUdp() {
+    while (true) {
+      udpIn.clear();
+      SocketAddress from;
+      try {
+        from = udpChannel.receive(udpIn);
+      } catch (IOException e) {
+        log.debug("udp receive failed: {}", e.getMessage());
+        return;
+      }
+      if (from == null) {
+        return;
+      }
+      ArNetPacket p;
+      try {
+        p = ArNetPacket.fromWire(udpIn.array(), 0, udpIn.position());
+      } catch (ArNetPacketException e) {
+        server.stats.udpDropped.increment();
+        continue;
+      }
+      handleUdp(p, (InetSocketAddress) from);
+    }
+  }
+
+  private void handleUdp(ArNetPacket p, InetSocketAddress from) {
+    if (p.getCommand() == Protocol.CLIENT_UDP_INTRODUCTION) {
+      long key;
+      try {
+        key = p.bufToUByte4();
+      } catch (ArNetPacketException e) {
+        server.stats.udpDropped.increment();
+        return;
+      }
+      for (ArServerClient c : clients) {
+        if (c.authKey == key
+            && c.isLoggedIn()
+            && from.getAddress().getHostAddress().equals(c.getIpString())) {
+          c.udpAddress = from;
+          ArNetPacket intro = new ArNetPacket(Protocol.SERVER_UDP_INTRODUCTION);
+          intro.byte4ToBuf(c.introKey);
+          try {
+            udpChannel.send(ByteBuffer.wrap(intro.toWire()), from);
+          } catch (IOException e) {
+            log.debug("udp send failed: {}", e.getMessage());
+          }
+          c.out.offer(Outgoing.frame(new ArNetPacket(Protocol.SERVER_UDP_CONFIRMATION).toWire()));
+          flush(c);
+          return;
+        }
+      }
+      server.stats.udpDropped.increment();
+      return;
+    }
+    for (ArServerClient c : clients) {
+      if (from.equals(c.udpAddress) && c.isLoggedIn()) {
+        try {
+          dispatcher.onPacket(c, p, true);
+        } catch (ProtocolException e) {
+          server.stats.malformed.increment();
+        }
+        return;
+      }
+    }
+    server.stats.udpDropped.increment();
   }
 
   /** Writes as much of {@code c}'s queue as the socket takes now. */
@@ -270,26 +406,21 @@ final class IoLoop implements Runnable {
             }
             return;
           }
-          c.frameInProgress = false;
+          c.writingBuf = c.writing.payload.duplicate();
+          c.writingBuf.position(0);
         }
-        if (!c.frameInProgress) {
-          if (!c.writing.nextFrame(c.header, c.writeBufs)) {
-            c.out.finished(c.writing);
-            c.writing = null;
-            continue;
-          }
-          c.frameInProgress = true;
-        }
-        long n = c.channel.write(c.writeBufs);
+        long n = c.channel.write(c.writingBuf);
         if (n > 0) {
           c.countSent(n);
           c.lastWriteProgressNanos = now;
         }
-        if (c.writeBufs[0].hasRemaining() || c.writeBufs[1].hasRemaining()) {
+        if (c.writingBuf.hasRemaining()) {
           setWriteInterest(c, true);
           return;
         }
-        c.frameInProgress = false;
+        c.out.finished(c.writing);
+        c.writing = null;
+        c.writingBuf = null;
       }
     } catch (IOException e) {
       close(c, null, "connection lost while writing: " + e.getMessage(), false);
@@ -339,17 +470,18 @@ final class IoLoop implements Runnable {
   }
 
   /**
-   * Closes {@code c}: optionally tries to send a CLOSING frame first (without waiting), then closes
-   * the socket, forgets its queue and subscriptions, and tells the listeners.
+   * Closes {@code c}: optionally tries to send a SHUTDOWN packet first (logged-in clients) (without
+   * waiting), then closes the socket, forgets its queue and subscriptions, and tells the listeners.
    */
   void close(ArServerClient c, NetError code, String reason, boolean sayWhy) {
     if (c.isClosed()) {
       return;
     }
     c.setCloseReason(reason);
-    if (sayWhy && code != null && c.writing == null) {
+    if (sayWhy && code != null && c.writing == null && c.isLoggedIn()) {
       try {
-        c.channel.write(ByteBuffer.wrap(Frames.frame(Kind.CLOSING, code.code(), reason)));
+        // ArNetworking has no reason text for a close: the client is told to shut down.
+        c.channel.write(ByteBuffer.wrap(new ArNetPacket(Protocol.SERVER_SHUTDOWN).toWire()));
       } catch (IOException e) {
         // Best effort: the connection is going anyway.
       }
@@ -360,7 +492,7 @@ final class IoLoop implements Runnable {
     }
     closeQuietly(c.channel);
     c.out.clear();
-    c.subscriptions.clear();
+    c.requests.clear();
     clients.remove(c);
     server.removeClient(c, reason);
     log.debug("{} closed: {}", c, reason);
@@ -369,10 +501,7 @@ final class IoLoop implements Runnable {
   private void shutdown() {
     for (ArServerClient c : new ArrayList<>(clients)) {
       if (c.isLoggedIn()) {
-        c.out.offer(
-            Outgoing.frame(
-                Frames.frame(
-                    Kind.CLOSING, NetError.SHUTTING_DOWN.code(), "the server is shutting down")));
+        c.out.offer(Outgoing.frame(new ArNetPacket(Protocol.SERVER_SHUTDOWN).toWire()));
         c.closeAfterFlush = true;
         c.setCloseReason("the server is shutting down");
         flush(c);
@@ -396,6 +525,9 @@ final class IoLoop implements Runnable {
       close(c, null, "the server is shutting down", false);
     }
     closeQuietly(serverChannel);
+    if (udpChannel != null) {
+      closeQuietly(udpChannel);
+    }
     try {
       selector.close();
     } catch (IOException e) {

@@ -57,7 +57,7 @@ final class OutboundQueue {
     Outgoing waiting = pendingUpdates.get(o.coalesceKey);
     if (waiting != null && !waiting.started) {
       sharedBytes += o.size() - waiting.size();
-      waiting.replaceUpdate(o.payload, o.second);
+      waiting.replaceUpdate(o.payload, o.version);
       coalesced++;
       return;
     }

@@ -9,11 +9,12 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The thread that serves subscriptions: every few milliseconds it looks for subscriptions that are
- * due, takes each published value once (encoded once per version, shared by every client), and
- * queues an update for every due subscription whose client has not seen that version. Queuing
- * coalesces, so a client that reads slowly simply gets fewer, newer updates. Subscription rates are
- * timed by the real clock: the network is real even when the robot runs on virtual time.
+ * The thread that serves requests at an interval (ArNetworking's REQUEST): every few milliseconds
+ * it looks for requests that are due, takes each published value once (encoded once per version,
+ * shared by every client), and queues an update for every due subscription whose client has not
+ * seen that version. Queuing coalesces, so a client that reads slowly simply gets fewer, newer
+ * updates. Subscription rates are timed by the real clock: the network is real even when the robot
+ * runs on virtual time.
  */
 final class Publisher implements Runnable {
 
@@ -78,24 +79,35 @@ final class Publisher implements Runnable {
 
   private void publishDue(Map<DataEntry, DataEntry.Encoded> tick) {
     long now = System.nanoTime();
+    long minNanos = server.getOptions().minInterval().toNanos();
     boolean any = false;
     for (ArServerClient c : server.clientsSnapshot()) {
       if (!c.isLoggedIn() || c.closeAfterFlush) {
         continue;
       }
       boolean queued = false;
-      for (ArServerClient.Subscription s : c.subscriptions.values()) {
+      for (ArServerClient.Request s : c.requests.values()) {
         if (now - s.nextDueNanos < 0) {
           continue;
         }
+        // A request "when it changes" (-1) is looked at every minimum interval.
+        long interval = s.periodic() ? s.intervalNanos : minNanos;
         // Keep the phase, but never try to catch up on missed intervals.
-        s.nextDueNanos = Math.max(s.nextDueNanos + s.intervalNanos, now);
+        s.nextDueNanos = Math.max(s.nextDueNanos + interval, now);
+        if (s.entry.publication == null) {
+          // A handler requested at an interval runs again (if its last run has finished).
+          if (s.periodic() && s.running.compareAndSet(false, true)) {
+            c.pendingCalls.incrementAndGet();
+            server.execute(c, s.entry, s.args, s);
+          }
+          continue;
+        }
         DataEntry.Encoded e = tick.computeIfAbsent(s.entry, this::encode);
         if (e == null || e.version() == s.lastVersion) {
           continue;
         }
         s.lastVersion = e.version();
-        c.out.offerUpdate(Outgoing.update(s.entry.id(), e.version(), e.payload()));
+        c.out.offerUpdate(Outgoing.update(s.entry.id(), e.version(), e.wire()));
         server.stats.updatesQueued.increment();
         queued = true;
       }

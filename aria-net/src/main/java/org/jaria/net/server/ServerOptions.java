@@ -14,15 +14,20 @@ import org.jaria.net.protocol.Protocol;
  * @param bindAddress address to listen on; null: every interface, or loopback only when the
  *     authenticator is open (anybody could otherwise drive the robot from the network)
  * @param authenticator who may log in
- * @param maxClients most clients connected at once, counting those still logging in
+ * @param maxClients most clients logged in at once
  * @param loginTimeout time a new connection has to log in
- * @param idleTimeout a logged-in client that sends nothing for this long is dropped (the client
- *     library pings every few seconds); zero: never
+ * @param idleTimeout a logged-in client that sends nothing for this long is dropped; zero (the
+ *     default): never, since ArNetworking clients may rightly listen without sending for hours
  * @param stallTimeout a client with data waiting that accepts no byte for this long is dropped;
  *     zero: never
  * @param maxQueuedBytes most bytes of replies waiting for one client; a reply beyond it drops the
  *     client (subscription updates never count: they are coalesced, newest wins)
- * @param maxInboundFrame largest frame a client may send, bytes
+ * @param serverKey ArNetworking's server key, mixed into login digests ("" as in ARIA)
+ * @param protocolVersion version text clients must announce ("" accepts any)
+ * @param maxPendingLogins most connections not logged in yet
+ * @param maxLoginFailures failed logins per address within the window before it is throttled
+ * @param loginFailureWindow the window of maxLoginFailures
+ * @param udp whether to open the UDP port for ArNetworking's UDP handshake
  * @param minInterval shortest subscription interval granted (caps the rate)
  * @param maxSubscriptions most subscriptions per client
  * @param maxPendingCalls most requests one client may have waiting to be handled
@@ -43,7 +48,12 @@ public record ServerOptions(
     Duration idleTimeout,
     Duration stallTimeout,
     long maxQueuedBytes,
-    int maxInboundFrame,
+    String serverKey,
+    String protocolVersion,
+    int maxPendingLogins,
+    int maxLoginFailures,
+    Duration loginFailureWindow,
+    boolean udp,
     Duration minInterval,
     int maxSubscriptions,
     int maxPendingCalls,
@@ -72,8 +82,14 @@ public record ServerOptions(
     if (maxQueuedBytes < 4096) {
       throw new IllegalArgumentException("maxQueuedBytes must be at least 4096");
     }
-    if (maxInboundFrame < 256 || maxInboundFrame > 16 << 20) {
-      throw new IllegalArgumentException("maxInboundFrame must be 256 B .. 16 MiB");
+    if (serverKey == null || protocolVersion == null) {
+      throw new IllegalArgumentException(
+          "server key and protocol version must be set (\"\" for none)");
+    }
+    positive(maxPendingLogins, "maxPendingLogins");
+    positive(maxLoginFailures, "maxLoginFailures");
+    if (loginFailureWindow == null || loginFailureWindow.isNegative()) {
+      throw new IllegalArgumentException("the login failure window must be zero or positive");
     }
     for (Duration d : new Duration[] {loginTimeout, idleTimeout, stallTimeout, minInterval}) {
       if (d == null || d.isNegative()) {
@@ -113,7 +129,12 @@ public record ServerOptions(
     b.idleTimeout = idleTimeout;
     b.stallTimeout = stallTimeout;
     b.maxQueuedBytes = maxQueuedBytes;
-    b.maxInboundFrame = maxInboundFrame;
+    b.serverKey = serverKey;
+    b.protocolVersion = protocolVersion;
+    b.maxPendingLogins = maxPendingLogins;
+    b.maxLoginFailures = maxLoginFailures;
+    b.loginFailureWindow = loginFailureWindow;
+    b.udp = udp;
     b.minInterval = minInterval;
     b.maxSubscriptions = maxSubscriptions;
     b.maxPendingCalls = maxPendingCalls;
@@ -128,9 +149,10 @@ public record ServerOptions(
 
   /**
    * Builds {@link ServerOptions}. Defaults: name "jaria", port 7272, open authenticator, 32
-   * clients, 5 s login, 30 s idle, 10 s stall, 1 MiB queued replies, 64 KiB inbound frames, 50 ms
-   * minimum interval (20 Hz), 64 subscriptions and 16 pending requests per client, 2 workers with
-   * 256 queued requests, 256 queued cycle commands with 64 applied per cycle.
+   * logged-in clients, 8 not yet logged in, 5 s login, no idle timeout, 10 s stall, 1 MiB queued
+   * replies, 5 failed logins per address per minute, UDP on, 50 ms minimum interval (20 Hz), 64
+   * subscriptions and 16 pending requests per client, 2 workers with 256 queued requests, 256
+   * queued cycle commands with 64 applied per cycle.
    */
   public static final class Builder {
     private String serverName = "jaria";
@@ -139,10 +161,15 @@ public record ServerOptions(
     private Authenticator authenticator = Authenticator.open();
     private int maxClients = 32;
     private Duration loginTimeout = Duration.ofSeconds(5);
-    private Duration idleTimeout = Duration.ofSeconds(30);
+    private Duration idleTimeout = Duration.ZERO;
     private Duration stallTimeout = Duration.ofSeconds(10);
     private long maxQueuedBytes = 1 << 20;
-    private int maxInboundFrame = 64 * 1024;
+    private String serverKey = "";
+    private String protocolVersion = "";
+    private int maxPendingLogins = 8;
+    private int maxLoginFailures = 5;
+    private Duration loginFailureWindow = Duration.ofMinutes(1);
+    private boolean udp = true;
     private Duration minInterval = Duration.ofMillis(50);
     private int maxSubscriptions = 64;
     private int maxPendingCalls = 16;
@@ -209,9 +236,50 @@ public record ServerOptions(
       return this;
     }
 
-    /** Largest inbound frame. */
-    public Builder maxInboundFrame(int v) {
-      maxInboundFrame = v;
+    /**
+     * ArNetworking's server key: a secret mixed into every login digest, which clients must be
+     * given too ("" by default, as in ARIA).
+     */
+    public Builder serverKey(String v) {
+      serverKey = v;
+      return this;
+    }
+
+    /** A protocol version clients must announce ("" accepts any, as in ARIA). */
+    public Builder protocolVersion(String v) {
+      protocolVersion = v;
+      return this;
+    }
+
+    /**
+     * Most connections that have not logged in yet; one more is closed at once, so idle sockets
+     * cannot take every slot.
+     */
+    public Builder maxPendingLogins(int v) {
+      maxPendingLogins = v;
+      return this;
+    }
+
+    /**
+     * Failed logins from one address within {@link #loginFailureWindow} after which its logins are
+     * refused unchecked until the window has passed.
+     */
+    public Builder maxLoginFailures(int v) {
+      maxLoginFailures = v;
+      return this;
+    }
+
+    /** The window of {@link #maxLoginFailures}. */
+    public Builder loginFailureWindow(Duration v) {
+      loginFailureWindow = v;
+      return this;
+    }
+
+    /**
+     * Whether to open ArNetworking's UDP port (same number as TCP); data is sent over TCP anyway.
+     */
+    public Builder udp(boolean v) {
+      udp = v;
       return this;
     }
 
@@ -281,7 +349,12 @@ public record ServerOptions(
           idleTimeout,
           stallTimeout,
           maxQueuedBytes,
-          maxInboundFrame,
+          serverKey,
+          protocolVersion,
+          maxPendingLogins,
+          maxLoginFailures,
+          loginFailureWindow,
+          udp,
           minInterval,
           maxSubscriptions,
           maxPendingCalls,

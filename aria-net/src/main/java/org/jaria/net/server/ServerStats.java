@@ -15,6 +15,10 @@ public final class ServerStats {
   final LongAdder requests = new LongAdder();
   final LongAdder busy = new LongAdder();
   final LongAdder updatesQueued = new LongAdder();
+  final LongAdder loginThrottled = new LongAdder();
+  final LongAdder refusedPending = new LongAdder();
+  final LongAdder requestErrors = new LongAdder();
+  final LongAdder udpDropped = new LongAdder();
 
   ServerStats() {}
 
@@ -63,7 +67,27 @@ public final class ServerStats {
     return busy.sum();
   }
 
-  /** Subscription updates queued (before coalescing). */
+  /** Logins refused without checking because the address failed too often. */
+  public long getLoginThrottled() {
+    return loginThrottled.sum();
+  }
+
+  /** Connections closed at once because too many had not logged in yet. */
+  public long getRefusedPending() {
+    return refusedPending.sum();
+  }
+
+  /** Requests that failed (bad arguments, handler errors, busy). */
+  public long getRequestErrors() {
+    return requestErrors.sum();
+  }
+
+  /** UDP datagrams ignored (not a packet, or from an unknown sender). */
+  public long getUdpDropped() {
+    return udpDropped.sum();
+  }
+
+  /** Updates queued for requests at an interval. */
   public long getUpdatesQueued() {
     return updatesQueued.sum();
   }

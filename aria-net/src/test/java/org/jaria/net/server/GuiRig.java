@@ -77,6 +77,11 @@ final class GuiRig implements AutoCloseable {
     return new GuiRig(true, b -> b);
   }
 
+  /** As {@link #arnl()}, configured further (a camera, say). */
+  static GuiRig arnl(UnaryOperator<GuiServer.Builder> configure) throws Exception {
+    return new GuiRig(true, configure);
+  }
+
   /**
    * The future's value: waits for it, advancing the world only while the robot's cycle has a
    * command to apply.
@@ -97,6 +102,25 @@ final class GuiRig implements AutoCloseable {
         throw e.getCause() instanceof Exception x ? x : e;
       }
     }
+  }
+
+  /** Reads a ubyte4 count and that many strings (JAria's list layout). */
+  static java.util.List<String> strings(ArNetPacket p) {
+    int n = p.bufToArray();
+    java.util.List<String> l = new java.util.ArrayList<>();
+    for (int i = 0; i < n; i++) {
+      l.add(p.bufToStr());
+    }
+    return l;
+  }
+
+  /** Reads strings to the end of the packet (ArNetworking's layout of getGoals). */
+  static java.util.List<String> stringsToEnd(ArNetPacket p) {
+    java.util.List<String> l = new java.util.ArrayList<>();
+    while (p.hasMore()) {
+      l.add(p.bufToStr());
+    }
+    return l;
   }
 
   /** Sends a request and waits for its reply (see {@link #await}). */

@@ -85,7 +85,7 @@ class GuiServerArnlTest {
   @Test
   void stopCancelsTheGoal() throws Exception {
     try (GuiRig rig = GuiRig.arnl()) {
-      rig.call("gotoPose", 27000.0, 9500.0);
+      rig.call("gotoPose", 27000, 9500);
       rig.run(3000);
       assertTrue(Math.abs(rig.robot.getVel()) > 50, "on its way");
       rig.call("stop");
@@ -103,7 +103,7 @@ class GuiServerArnlTest {
       rig.sim.sim().setTruePose(elsewhere);
       rig.run(1000);
       assertTrue(rig.robot.getPose().findDistanceTo(elsewhere) > 5000, "it believes it is home");
-      assertTrue(rig.call("localizeToPose", 15000.0, 9500.0, 180.0).bufToBool());
+      rig.call("localizeToPose", 15000, 9500, 180); // byte4 x, y, th; acknowledged when done
       rig.run(500);
       LocalizationSnapshot s = LocalizationSnapshot.read(rig.call("getLocState"));
       assertTrue(s.pose().findDistanceTo(elsewhere) < 300, "localized there: " + s.pose());
@@ -116,16 +116,14 @@ class GuiServerArnlTest {
       List<ConfigSection> sections = ConfigSection.readAll(rig.call("getConfigBySections"));
       List<String> names = sections.stream().map(ConfigSection::name).toList();
       assertTrue(names.contains("Localization"), names.toString());
-      assertTrue(
-          rig.call("setConfig", List.of(List.of("Localization", "NumSamples", "500")))
-              .bufToValue()
-              .equals(List.of()));
+      assertEquals(
+          List.of(),
+          GuiRig.strings(
+              rig.call("setConfig", List.of(List.of("Localization", "NumSamples", "500")))));
       assertEquals(500, rig.nav.getLocalizationTask().getParams().getNumSamples());
-      @SuppressWarnings("unchecked")
       List<String> refused =
-          (List<String>)
-              rig.call("setConfig", List.of(List.of("Localization", "NumSamples", "5")))
-                  .bufToValue();
+          GuiRig.strings(
+              rig.call("setConfig", List.of(List.of("Localization", "NumSamples", "5"))));
       assertEquals(1, refused.size());
       assertTrue(refused.get(0).contains("NumSamples"), refused.get(0));
     }

@@ -79,14 +79,20 @@ class GuiServerModesTest {
   @Test
   void gotoPoseAndGoalInAStraightLine() throws Exception {
     try (GuiRig rig = GuiRig.plain(b -> b)) {
-      rig.call("gotoPose", 4000.0, 9500.0);
+      rig.call("gotoPose", 4000, 9500); // ArNetworking's layout: byte4 x, byte4 y
+      ArClientException nan =
+          assertThrows(
+              ArClientException.class, () -> rig.call("ratioDrive", Double.NaN, 0.0, 50.0));
+      assertEquals(NetError.BAD_ARGUMENTS, nan.getCode());
+      ArClientException off =
+          assertThrows(ArClientException.class, () -> rig.call("gotoPose", 900_000, 9500));
+      assertTrue(off.getMessage().contains("outside the map"), off.getMessage());
       assertEquals("Goto", mode(rig));
       assertEquals("Going to pose (4000, 9500)", status(rig));
       assertTrue(
           rig.runUntil(() -> status(rig).startsWith("Arrived"), 30_000), "arrived: " + status(rig));
       assertTrue(rig.sim.sim().getTruePose().findDistanceTo(new ArPose(4000, 9500)) < 300);
-      @SuppressWarnings("unchecked")
-      List<String> goals = (List<String>) rig.call("getGoals").bufToValue();
+      List<String> goals = GuiRig.stringsToEnd(rig.call("getGoals"));
       assertTrue(goals.contains("Corridor West"), goals.toString());
       rig.call("gotoGoal", "corridor west");
       assertEquals("Going to goal corridor west", status(rig));
@@ -100,7 +106,11 @@ class GuiServerModesTest {
   @Test
   void relocalizingWithoutALocalizerDeclaresThePose() throws Exception {
     try (GuiRig rig = GuiRig.plain(b -> b)) {
-      assertTrue(rig.call("localizeToPose", 2000.0, 9000.0, 90.0).bufToBool());
+      rig.call("localizeToPose", 2000, 9000, 90);
+      ArClientException off =
+          assertThrows(
+              ArClientException.class, () -> rig.call("localizeToPose", 2000, -900_000, 0));
+      assertEquals(NetError.BAD_ARGUMENTS, off.getCode());
       rig.run(200);
       ArPose p = rig.robot.getPose();
       assertEquals(2000, p.x(), 1);

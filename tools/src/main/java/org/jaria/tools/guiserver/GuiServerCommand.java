@@ -27,6 +27,7 @@ import org.jaria.net.server.modes.ArServerModes;
 import org.jaria.net.sim.SimulatedGuiServer;
 import org.jaria.net.video.JpegVideo;
 import org.jaria.robot.ArRobot;
+import org.jaria.tools.cli.Passwords;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -101,14 +102,23 @@ public final class GuiServerCommand implements Callable<Integer> {
   @Option(
       names = "--user-file",
       paramLabel = "FILE",
-      description = "Users, passwords and groups (see aria-net/PROTOCOL.md §10).")
+      description =
+          "ArNetworking's user file: users, passwords and groups (see aria-net/PROTOCOL.md §4).")
   Path userFile;
 
   @Option(
       names = "--password",
       paramLabel = "SECRET",
-      description = "One password for every user name.")
+      description =
+          "One password for every user name (visible to other users of this computer: prefer"
+              + " --password-file or the JARIA_NET_PASSWORD environment variable).")
   String password;
+
+  @Option(
+      names = "--password-file",
+      paramLabel = "FILE",
+      description = "Read the password from the first line of FILE (which only you may read).")
+  Path passwordFile;
 
   @Option(
       names = "--bind",
@@ -188,13 +198,16 @@ public final class GuiServerCommand implements Callable<Integer> {
   }
 
   ServerOptions serverOptions() throws IOException {
-    if (userFile != null && password != null) {
-      throw new IllegalArgumentException("give --user-file or --password, not both");
+    String secret =
+        Passwords.resolve(
+            password, passwordFile, userFile == null ? System.getenv() : java.util.Map.of());
+    if (userFile != null && secret != null) {
+      throw new IllegalArgumentException("give --user-file or a password, not both");
     }
     Authenticator auth =
         userFile != null
             ? ArServerUserInfo.readFile(userFile)
-            : password != null ? Authenticator.sharedSecret(password) : Authenticator.open();
+            : secret != null ? Authenticator.sharedSecret(secret) : Authenticator.open();
     return ServerOptions.builder()
         .serverName("guiServer")
         .port(port)

@@ -42,8 +42,18 @@ public final class MonitorCommand implements Callable<Integer>, AppCommand {
   @Option(names = "--user", description = "User name (for servers that need a login).")
   String user = "";
 
-  @Option(names = "--password", description = "Password (for servers that need a login).")
+  @Option(
+      names = "--password",
+      description =
+          "Password (visible to other users of this computer: prefer --password-file or the"
+              + " JARIA_NET_PASSWORD environment variable).")
   String password;
+
+  @Option(
+      names = "--password-file",
+      paramLabel = "FILE",
+      description = "Read the password from the first line of FILE (which only you may read).")
+  java.nio.file.Path passwordFile;
 
   @Override
   public String appName() {
@@ -80,7 +90,13 @@ public final class MonitorCommand implements Callable<Integer>, AppCommand {
 
   @Override
   public DesktopApp open(Stage stage, AppEnvironment env) {
-    MonitorWindow w = new MonitorWindow(stage, env, host(), port(), user, password);
+    String secret;
+    try {
+      secret = org.jaria.tools.cli.Passwords.resolve(password, passwordFile, System.getenv());
+    } catch (java.io.IOException e) {
+      throw new IllegalArgumentException(e.getMessage(), e);
+    }
+    MonitorWindow w = new MonitorWindow(stage, env, host(), port(), user, secret);
     w.show();
     return w;
   }
@@ -90,7 +106,8 @@ public final class MonitorCommand implements Callable<Integer>, AppCommand {
     PrintWriter err = spec.commandLine().getErr();
     try {
       port();
-    } catch (IllegalArgumentException e) {
+      org.jaria.tools.cli.Passwords.resolve(password, passwordFile, System.getenv());
+    } catch (IllegalArgumentException | java.io.IOException e) {
       err.println("monitor: " + e.getMessage());
       return 2;
     }

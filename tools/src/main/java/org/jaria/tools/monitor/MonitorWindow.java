@@ -396,11 +396,22 @@ public final class MonitorWindow implements DesktopApp {
   }
 
   private void gotoPose(ArPose p, boolean useHeading) {
-    send("gotoPose", p.x(), p.y(), p.th(), useHeading);
+    // ArNetworking's layouts: byte4 x, byte4 y (mm) and, for a heading, byte2 th (degrees).
+    if (useHeading) {
+      send(
+          "gotoPose", (int) Math.round(p.x()), (int) Math.round(p.y()), (short) Math.round(p.th()));
+    } else {
+      send("gotoPose", (int) Math.round(p.x()), (int) Math.round(p.y()));
+    }
   }
 
   private void localize(ArPose p) {
-    send("localizeToPose", p.x(), p.y(), p.th());
+    // ArNetworking's layout: byte4 x, byte4 y, byte4 th.
+    send(
+        "localizeToPose",
+        (int) Math.round(p.x()),
+        (int) Math.round(p.y()),
+        (int) Math.round(p.th()));
   }
 
   private void applyConfig(List<List<String>> changes) {

@@ -1,5 +1,6 @@
 package org.jaria.tools.monitor;
 
+import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.Consumer;
@@ -10,6 +11,7 @@ import org.jaria.map.MapFormatException;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.client.ArClientBase;
 import org.jaria.net.client.ArClientException;
+import org.jaria.net.client.ArNetPacketArgs;
 import org.jaria.net.client.ClientOptions;
 import org.jaria.net.client.ConnectionListener;
 import org.jaria.net.data.CommandInfo;
@@ -61,20 +63,69 @@ final class RobotLink implements AutoCloseable {
     on("getStrings", InfoStrings::read, v -> state.strings = v);
     on("getConfigBySections", ConfigSection::readAll, v -> state.config = v);
     on("getVideo", VideoFrame::read, v -> state.video = v);
-    on("getMap", RobotLink::mapView, v -> state.map = v);
+    client.addHandler(
+        "mapUpdated",
+        p -> {
+          // ArNetworking's signal that the map changed: fetch it again.
+          mapVersion.incrementAndGet();
+          fetchMap();
+        });
+  }
+
+  private final java.util.concurrent.atomic.AtomicLong mapVersion =
+      new java.util.concurrent.atomic.AtomicLong(1);
+
+  /** Data whose packets the monitor could not read: asked for no more (logged once). */
+  private final java.util.Set<String> unreadable =
+      java.util.concurrent.ConcurrentHashMap.newKeySet();
+
+  /** Asks for the map's name and then the map (ArNetworking's getMapName and getMap). */
+  private void fetchMap() {
+    if (!client.dataExists("getMap")) {
+      return;
+    }
+    CompletableFuture<?> unused =
+        request("getMapName")
+            .thenCompose(n -> request("getMap").thenApply(m -> mapView(m, n.bufToStr())))
+            .thenAccept(
+                v -> {
+                  state.map = v;
+                  changed.run();
+                })
+            .exceptionally(
+                e -> {
+                  log.info("the server's map could not be read: {}", e.getMessage());
+                  return null;
+                });
   }
 
   private <T> void on(String name, Function<ArNetPacket, T> read, Consumer<T> store) {
     client.addHandler(
         name,
         p -> {
-          store.accept(read.apply(p));
+          T v;
+          try {
+            v = read.apply(p);
+          } catch (RuntimeException e) {
+            // An ArNetworking server may offer data of this name in a layout the monitor does not
+            // read (ARIA's config, ARNL's path...): stop asking rather than fail ten times a
+            // second.
+            if (unreadable.add(name)) {
+              log.info(
+                  "{} from this server is not in a layout the monitor reads: {}",
+                  name,
+                  e.getMessage());
+              client.requestStop(name);
+            }
+            return;
+          }
+          store.accept(v);
           changed.run();
         });
   }
 
-  private static MonitorState.MapView mapView(ArNetPacket p) {
-    MapData d = MapData.read(p);
+  private MonitorState.MapView mapView(ArNetPacket p, String name) {
+    MapData d = MapData.read(p, name, mapVersion.get());
     try {
       ArMap m = d.toArMap();
       ArMapPoints pts = m.getPoints();
@@ -98,18 +149,24 @@ final class RobotLink implements AutoCloseable {
    */
   void connect(String host, int port, String user, String password) throws ArClientException {
     state.clear();
-    for (String d : List.of("update", "getSensorCurrent")) {
-      subscribe(d, FAST_MS);
-    }
+    unreadable.clear();
+    subscribe("update", FAST_MS);
     for (String d : List.of("getLocState", "getLocPoints", "getPath", "getStrings")) {
       subscribe(d, MEDIUM_MS);
     }
     client.connect(host, port, user == null ? "" : user, password);
-    for (String d : List.of("getMap", "getConfigBySections")) {
-      if (client.dataExists(d)) {
-        subscribe(d, SLOW_MS);
-      }
+    if (client.dataExists("getSensorCurrent")) {
+      // ArNetworking sends one named sensor's readings per request.
+      CompletableFuture<Duration> unused =
+          client.request("getSensorCurrent", FAST_MS, ArNetPacketArgs.of("sonar"));
     }
+    if (client.dataExists("getConfigBySections")) {
+      subscribe("getConfigBySections", SLOW_MS);
+    }
+    if (client.dataExists("mapUpdated")) {
+      subscribe("mapUpdated", -1);
+    }
+    fetchMap();
     if (client.dataExists("physicalInfo")) {
       CompletableFuture<?> unused =
           request("physicalInfo").thenAccept(p -> state.physical = PhysicalInfo.read(p));
@@ -119,12 +176,12 @@ final class RobotLink implements AutoCloseable {
           request("getGoals")
               .thenAccept(
                   p -> {
-                    int n = p.bufToArray();
-                    String[] g = new String[n];
-                    for (int i = 0; i < n; i++) {
-                      g[i] = p.bufToStr();
+                    // ArNetworking's layout: one string per goal, to the end.
+                    List<String> g = new java.util.ArrayList<>();
+                    while (p.hasMore()) {
+                      g.add(p.bufToStr());
                     }
-                    state.goals = List.of(g);
+                    state.goals = List.copyOf(g);
                     changed.run();
                   });
     }

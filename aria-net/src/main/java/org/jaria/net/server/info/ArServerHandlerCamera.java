@@ -5,11 +5,13 @@ import org.jaria.net.provider.VideoSource;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.PolledPublication;
 import org.jaria.net.server.Where;
+import org.jaria.net.video.AriaJpeg;
 
 /**
  * Video for clients (ArNetworking's video forwarding and {@code ArServerHandlerCamera}): {@code
  * "getVideo"} publishes the source's newest frame (a slow client gets fewer frames, never a
- * backlog), {@code "getVideoInfo"} names the camera.
+ * backlog; JAria's layout), {@code "getVideoInfo"} names the camera, and ArNetworking's {@code
+ * "sendVideo"} and {@code "videoSize"} answer a JPEG in ARIA's layout (see {@link AriaJpeg}).
  */
 public final class ArServerHandlerCamera {
 
@@ -34,5 +36,32 @@ public final class ArServerHandlerCamera {
         "Video",
         Where.WORKER,
         (client, request, reply) -> reply.strToBuf(source.getName()));
+    // ArNetworking's video data (ArHybridForwarderVideo, getVideoExample): JPEG in one packet.
+    server.addData(
+        "sendVideo",
+        "gets video from the robot's camera (you should requestOnce this, you shouldn't request"
+            + " it, since you could easily fill the bandwidth that way)",
+        "uByte: quality (0 - 100)",
+        "out: uByte2: width, uByte2: height, (len - readLen)*uByte: jpegData",
+        "Video",
+        "RETURN_VIDEO",
+        Where.WORKER,
+        (client, request, reply) ->
+            AriaJpeg.write(
+                source.getLatestFrame(), request.hasMore() ? request.bufToUByte() : 75, reply));
+    server.addData(
+        "videoSize",
+        "gets the width and height of the video data",
+        "none",
+        "uByte2: width, uByte2: height",
+        "Video",
+        "RETURN_SINGLE",
+        Where.WORKER,
+        (client, request, reply) -> {
+          VideoFrame f = source.getLatestFrame();
+          reply
+              .uByte2ToBuf(f == null ? 0 : f.getWidth())
+              .uByte2ToBuf(f == null ? 0 : f.getHeight());
+        });
   }
 }

@@ -110,8 +110,7 @@ public final class ArServerHandlerCommands {
   private static List<String> argsAsText(ArNetPacket p) {
     List<String> l = new ArrayList<>();
     while (p.hasMore()) {
-      Object v = p.bufToValue();
-      l.add(v instanceof byte[] b ? b.length + " bytes" : String.valueOf(v));
+      l.add(p.bufToStr());
     }
     return l;
   }

@@ -7,6 +7,7 @@ import org.jaria.net.NetEncodable;
 import org.jaria.net.data.ConfigSection;
 import org.jaria.net.provider.ConfigRegistry;
 import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.NetRequestException;
 import org.jaria.net.server.PolledPublication;
 import org.jaria.net.server.Where;
 
@@ -49,15 +50,19 @@ public final class ArServerHandlerConfig {
             String section = request.bufToStr();
             String name = request.bufToStr();
             String value = request.bufToStr();
-            for (int j = 3; j < k; j++) {
-              request.skip();
+            if (k != 3) {
+              throw new NetRequestException(
+                  org.jaria.net.protocol.NetError.BAD_ARGUMENTS, "each parameter needs 3 strings");
             }
             String err = config.setParam(section, name, value);
             if (err != null) {
               errors.add(err);
             }
           }
-          reply.valueToBuf(errors);
+          reply.arrayToBuf(errors.size());
+          for (String e : errors) {
+            reply.strToBuf(e);
+          }
         });
   }
 }

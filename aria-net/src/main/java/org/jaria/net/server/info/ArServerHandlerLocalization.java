@@ -1,10 +1,12 @@
 package org.jaria.net.server.info;
 
 import org.jaria.geom.ArPose;
+import org.jaria.map.ArMap;
 import org.jaria.net.protocol.NetError;
 import org.jaria.net.provider.LocalizationInfo;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.NetRequestException;
+import org.jaria.net.server.NumericArgs;
 import org.jaria.net.server.Where;
 import org.jaria.robot.ArRobot;
 
@@ -21,21 +23,32 @@ public final class ArServerHandlerLocalization {
    * @param loc the localizer, or null to move the robot's pose instead
    */
   public ArServerHandlerLocalization(ArServerBase server, ArRobot robot, LocalizationInfo loc) {
+    this(server, robot, loc, null);
+  }
+
+  /**
+   * Registers {@code "localizeToPose"}, refusing poses outside {@code map} (null: any finite pose).
+   */
+  public ArServerHandlerLocalization(
+      ArServerBase server, ArRobot robot, LocalizationInfo loc, ArMap map) {
     server.addData(
         "localizeToPose",
-        "relocalizes the robot at a pose",
-        "double x (mm), double y (mm), double th (deg)",
-        "bool accepted",
+        "Initialize localization at the given point in the map",
+        "byte4: x; byte4: y; byte4: th",
+        "none",
         "Localization",
         Where.WORKER,
         (client, request, reply) -> {
+          // ArNetworking's layout (RemoteRequestAPI): three 4-byte integers, mm and degrees.
           ArPose pose =
-              new ArPose(request.bufToDouble(), request.bufToDouble(), request.bufToDouble());
+              NumericArgs.pose(
+                  request.bufToByte4(), request.bufToByte4(), request.bufToByte4(), map);
           if (loc != null) {
-            reply.boolToBuf(loc.localizeToPose(pose));
-          } else if (server.runOnCycle(() -> robot.moveTo(pose))) {
-            reply.boolToBuf(true);
-          } else {
+            if (!loc.localizeToPose(pose)) {
+              throw new NetRequestException(
+                  NetError.FAILED, "the localization did not accept the pose " + pose);
+            }
+          } else if (!server.runOnCycle(() -> robot.moveTo(pose))) {
             throw new NetRequestException(NetError.BUSY, "the robot's command queue is full");
           }
         });

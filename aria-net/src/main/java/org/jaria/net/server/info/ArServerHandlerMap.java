@@ -4,20 +4,21 @@ import java.io.IOException;
 import java.io.StringWriter;
 import java.io.UncheckedIOException;
 import org.jaria.map.ArMap;
+import org.jaria.net.ArNetPacket;
 import org.jaria.net.data.MapData;
 import org.jaria.net.server.ArServerBase;
-import org.jaria.net.server.PublishedValue;
 import org.jaria.net.server.Where;
 
 /**
- * The robot's map for clients (ArNetworking's {@code ArServerHandlerMap}): {@code "getMap"} sends
- * the {@code .map} text (in several frames when large; rendered once per map, shared by every
- * client), {@code "getMapName"} its name and version. Subscribing to {@code "getMap"} at a slow
- * rate delivers the map once and again whenever {@link #setMap} changes it.
+ * The robot's map for clients (ArNetworking's {@code ArServerHandlerMap}), with ArNetworking's
+ * names and layouts: {@code "getMapName"} answers the map's file name; {@code "getMap"} sends the
+ * map's .map text one line per packet, then a packet with an empty string, then an empty packet;
+ * {@code "mapUpdated"} is an empty packet sent to the clients that requested it (with interval -1)
+ * whenever {@link #setMap} changes the map.
  */
 public final class ArServerHandlerMap {
 
-  private final PublishedValue map = new PublishedValue();
+  private final ArServerBase server;
   private volatile MapData current;
 
   /**
@@ -27,23 +28,56 @@ public final class ArServerHandlerMap {
    * @param name the map's name, usually its file name
    */
   public ArServerHandlerMap(ArServerBase server, ArMap arMap, String name) {
-    server.addPublishedData(
-        "getMap",
-        "the map as .map text; subscribe slowly to hear of new maps",
-        "MapData [name, version, text]",
-        "MapInfo",
-        map);
+    this.server = server;
     server.addData(
         "getMapName",
-        "the map's name and version",
+        "gets the name of the map being used",
         "none",
-        "string name, int version",
-        "MapInfo",
+        "string: map name (empty string if no maps)",
+        "Map",
+        "RETURN_SINGLE",
         Where.WORKER,
         (client, request, reply) -> {
           MapData m = current;
-          reply.strToBuf(m == null ? "" : m.name()).intToBuf(m == null ? 0 : m.version());
+          reply.strToBuf(m == null ? "" : m.name());
         });
+    server.addData(
+        "getMap",
+        "gets the map as a set of ascii lines",
+        "none",
+        "packets of '<string>: line' followed by a packet with an empty string to denote end (if"
+            + " only empty string then no map)",
+        "Map",
+        "RETURN_UNTIL_EMPTY",
+        Where.WORKER,
+        (client, request, reply) -> {
+          int cmd = server.findCommandFromName("getMap");
+          MapData m = current;
+          if (m != null) {
+            for (String line : m.text().split("\n", -1)) {
+              if (line.isEmpty()) {
+                continue; // an empty line would end the map early
+              }
+              ArNetPacket p = new ArNetPacket(cmd);
+              p.strToBuf(line.length() > 4000 ? line.substring(0, 4000) : line);
+              client.sendPacketTcp(p);
+            }
+          }
+          ArNetPacket end = new ArNetPacket(cmd);
+          end.strToBuf("");
+          client.sendPacketTcp(end);
+          // The (empty) reply packet the server sends next ends the answer.
+        });
+    server.addData(
+        "mapUpdated",
+        "a single packet is sent to this when the map is updated and this denotes a new getMap"
+            + " and getMapName should be requested",
+        "none",
+        "none",
+        "Map",
+        "RETURN_SINGLE",
+        Where.WORKER,
+        (client, request, reply) -> {});
     if (arMap != null) {
       setMap(arMap, name);
     }
@@ -51,7 +85,7 @@ public final class ArServerHandlerMap {
 
   /**
    * Serves a new map (from any thread; the map is rendered to text now, so keep it unchanged during
-   * this call).
+   * this call) and tells the clients that asked for mapUpdated.
    */
   public synchronized void setMap(ArMap arMap, String name) {
     StringWriter w = new StringWriter();
@@ -61,9 +95,10 @@ public final class ArServerHandlerMap {
       throw new UncheckedIOException("writing a map to a string cannot fail", e);
     }
     MapData old = current;
-    MapData m = new MapData(name, old == null ? 1 : old.version() + 1, w.toString());
-    current = m;
-    map.publish(m);
+    current = new MapData(name, old == null ? 1 : old.version() + 1, w.toString());
+    if (old != null) {
+      server.broadcastPacketTcp(new ArNetPacket(), "mapUpdated");
+    }
   }
 
   /** The map being served, or null. */

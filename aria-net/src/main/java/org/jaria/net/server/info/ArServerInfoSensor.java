@@ -2,23 +2,22 @@ package org.jaria.net.server.info;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.jaria.geom.ArPose;
+import org.jaria.net.ArNetPacket;
 import org.jaria.net.data.Points;
 import org.jaria.net.data.RangeReadings;
 import org.jaria.net.data.SensorReadings;
-import org.jaria.net.protocol.NetError;
 import org.jaria.net.server.ArServerBase;
-import org.jaria.net.server.NetRequestException;
-import org.jaria.net.server.PolledPublication;
 import org.jaria.net.server.Where;
 import org.jaria.range.ArRangeDevice;
 import org.jaria.robot.ArRobot;
 
 /**
  * The robot's range readings for clients (ArNetworking's {@code ArServerInfoSensor}): {@code
- * "getSensorList"}, {@code "getSensorCurrent"} (published: every device's current readings, taken
- * once per robot cycle and only while someone is subscribed) and {@code "getSensorCumulative"} (one
- * device's cumulative readings, on request). Range devices may be read from any thread, so nothing
- * of this runs on the robot's cycle.
+ * "getSensorList"}, {@code "getSensorCurrent"} and {@code "getSensorCumulative"} (one named
+ * device's readings, in ArNetworking's layouts; request them at an interval with the sensor's name
+ * as the argument). Range devices may be read from any thread, so nothing of this runs on the
+ * robot's cycle.
  */
 public final class ArServerInfoSensor {
 
@@ -29,41 +28,53 @@ public final class ArServerInfoSensor {
     this.robot = robot;
     server.addData(
         "getSensorList",
-        "the names of the robot's range devices",
+        "gets a list of sensors attached to the robot",
         "none",
-        "array of string",
+        "byte2: numSensors,  repeating for numSensors: string: sensorName",
         "SensorInfo",
+        "RETURN_COMPLEX",
         Where.WORKER,
         (client, request, reply) -> {
           List<String> names = new ArrayList<>();
           for (ArRangeDevice d : robot.getRangeDeviceList()) {
             names.add(d.getName());
           }
-          reply.valueToBuf(names);
+          reply.byte2ToBuf(names.size());
+          for (String s : names) {
+            reply.strToBuf(s);
+          }
         });
-    server.addPublishedData(
+    server.addData(
         "getSensorCurrent",
-        "every range device's current readings, global mm",
-        "SensorReadings [counter, [[device, maxRange, points]...]]",
+        "gets the current sensor readings for requested sensors",
+        "string: sensorName",
+        "byte2: numReadings string: sensorName, repeating for numReadings times: byte4: x byte4:"
+            + " y.... if numReadings is -1 it means no sensor by that name",
         "SensorInfo",
-        PolledPublication.keyed(robot::getCounter, this::current));
+        "RETURN_COMPLEX",
+        Where.WORKER,
+        (client, request, reply) -> readings(request.bufToStr(), false, reply));
     server.addData(
         "getSensorCumulative",
-        "one range device's cumulative readings, global mm",
-        "string device",
-        "RangeReadings [device, maxRange, points]",
+        "gets the cumulative sensor readings for requested sensors",
+        "string: sensorName",
+        "byte2: numReadings string: sensorName, repeating for numReadings times: byte4: x byte4:"
+            + " y.... if numReadings is -1 it means no sensor by that name",
         "SensorInfo",
+        "RETURN_COMPLEX",
         Where.WORKER,
-        (client, request, reply) -> {
-          String name = request.bufToStr();
-          ArRangeDevice d = robot.findRangeDevice(name);
-          if (d == null) {
-            throw new NetRequestException(
-                NetError.BAD_ARGUMENTS, "no range device '" + name + "'; see getSensorList");
-          }
-          new RangeReadings(d.getName(), d.getMaxRange(), Points.of(d.getCumulativeReadings()))
-              .write(reply);
-        });
+        (client, request, reply) -> readings(request.bufToStr(), true, reply));
+  }
+
+  private void readings(String name, boolean cumulative, ArNetPacket reply) {
+    ArRangeDevice d = robot.findRangeDevice(name);
+    if (d == null) {
+      // ArNetworking's answer for a sensor it does not have.
+      reply.byte2ToBuf(-1).strToBuf(name);
+      return;
+    }
+    List<ArPose> l = cumulative ? d.getCumulativeReadings() : d.getCurrentReadings();
+    new RangeReadings(d.getName(), d.getMaxRange(), Points.of(l)).write(reply);
   }
 
   /** Every device's current readings now. */

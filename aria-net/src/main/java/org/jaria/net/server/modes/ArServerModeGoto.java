@@ -25,6 +25,7 @@ import org.jaria.net.provider.PathPlanningInfo;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ArServerClient;
 import org.jaria.net.server.NetRequestException;
+import org.jaria.net.server.NumericArgs;
 import org.jaria.net.server.Where;
 import org.jaria.robot.ArRobot;
 
@@ -83,7 +84,7 @@ public class ArServerModeGoto extends ArServerMode {
     server.addData(
         "gotoPose",
         "drives to a pose",
-        "double x (mm), double y (mm)[, double th (deg), bool useHeading]",
+        "byte4: x; byte4: y; (optional) byte2: th",
         "none",
         "Movement",
         where,
@@ -103,7 +104,15 @@ public class ArServerModeGoto extends ArServerMode {
         "array of string",
         "RobotInfo",
         Where.WORKER,
-        (client, request, reply) -> reply.valueToBuf(getGoals()));
+        (client, request, reply) -> {
+          // ArNetworking's layout: one string per goal, to the end of the packet.
+          for (String g : getGoals()) {
+            if (reply.getWriteCapacity() < g.length() * 3 + 1) {
+              break;
+            }
+            reply.strToBuf(g);
+          }
+        });
   }
 
   /** The names of the map's goals, in map order. */
@@ -124,11 +133,13 @@ public class ArServerModeGoto extends ArServerMode {
 
   private void serverGotoPose(ArServerClient client, ArNetPacket request, ArNetPacket reply)
       throws NetRequestException, InterruptedException {
-    double x = request.bufToDouble();
-    double y = request.bufToDouble();
-    double th = request.hasMore() ? request.bufToDouble() : 0;
-    boolean useHeading = request.hasMore() && request.bufToBool();
-    ArPose goal = new ArPose(x, y, th);
+    // ArNetworking's gotoPose: byte4 x, byte4 y and, optionally, byte2 th (then the heading is
+    // used).
+    double x = request.bufToByte4();
+    double y = request.bufToByte4();
+    boolean useHeading = request.hasMore();
+    double th = useHeading ? request.bufToByte2() : 0;
+    ArPose goal = NumericArgs.pose(x, y, th, map);
     String name = String.format(Locale.ROOT, "pose (%.0f, %.0f)", x, y);
     if (planner != null) {
       startWithPlanner(name, () -> planner.pathPlanToPose(goal, useHeading));

@@ -6,6 +6,7 @@ import org.jaria.action.ArActionDeceleratingLimiter;
 import org.jaria.action.ArActionGroup;
 import org.jaria.action.ArActionRatioInput;
 import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.NumericArgs;
 import org.jaria.net.server.Where;
 import org.jaria.robot.ArRobot;
 
@@ -52,17 +53,24 @@ public class ArServerModeRatioDrive extends ArServerMode {
     server.addData(
         "ratioDrive",
         "drives the robot as with a joystick; send it several times a second",
-        "double transRatio (-100..100), double rotRatio (-100..100), double throttleRatio"
-            + " (0..100)",
+        "double: transRatio (0,100); double: rotRatio (0,100); double: throttleRatio (0,100);"
+            + " [double: lateralRatio (0,100)] ",
         "none",
         "Movement",
         Where.CYCLE,
-        (client, request, reply) ->
-            ratioDrive(request.bufToDouble(), request.bufToDouble(), request.bufToDouble()));
+        (client, request, reply) -> {
+          double trans = NumericArgs.within(request.bufToDouble(), -100, 100, "transRatio");
+          double rot = NumericArgs.within(request.bufToDouble(), -100, 100, "rotRatio");
+          double throttle = NumericArgs.within(request.bufToDouble(), 0, 100, "throttleRatio");
+          if (request.hasMore()) {
+            NumericArgs.within(request.bufToDouble(), -100, 100, "lateralRatio");
+          }
+          ratioDrive(trans, rot, throttle);
+        });
     server.addData(
         "setSafeDrive",
         "whether the limiters brake before obstacles (false is UNSAFE)",
-        "bool safe",
+        "byte: 1 == drive safely, 0 == drive unsafely",
         "none",
         "UnsafeMovement",
         Where.CYCLE,
@@ -71,7 +79,7 @@ public class ArServerModeRatioDrive extends ArServerMode {
         "getSafeDrive",
         "whether teleoperation brakes before obstacles",
         "none",
-        "bool safe",
+        "byte: 1 == driving safely, 0 == driving unsafely",
         "Movement",
         Where.WORKER,
         (client, request, reply) -> reply.boolToBuf(safe));

@@ -1,0 +1,178 @@
+package org.jaria.net.server;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.jaria.net.ArNetPacket;
+import org.jaria.net.PeerRecording;
+import org.jaria.net.RawClient;
+import org.jaria.net.data.RobotUpdate;
+import org.jaria.net.protocol.Protocol;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Replays the bytes ARIA 2.9.1's own clients sent to {@code jaria demo guiserver} (recorded by
+ * hand, see docs/networking.md) to a JAria guiServer, and checks what it answers.
+ */
+class AriaClientReplayTest {
+
+  @Test
+  void robotUpdateExampleLogsInAndGetsUpdateNumbersAndStrings() throws Exception {
+    byte[] sent = PeerRecording.bytes("robotUpdateExample.c2s.bin");
+    List<ArNetPacket> asSent = PeerRecording.packets(sent);
+    // What ARIA's client sent: introduction, UDP confirmation, then two requests.
+    assertEquals(
+        List.of(Protocol.CLIENT_INTRODUCTION, Protocol.CLIENT_UDP_CONFIRMATION, 129, 129),
+        asSent.stream().map(ArNetPacket::getCommand).toList());
+    try (GuiRig rig = GuiRig.plain(b -> b);
+        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
+      ArServerBase s = rig.gui.getServer();
+      assertEquals(258, s.findCommandFromName("updateNumbers"), "the number it requested");
+      assertEquals(259, s.findCommandFromName("updateStrings"));
+      aria.readIntroduction();
+      aria.send(sent);
+      assertEquals(
+          Protocol.SERVER_CONNECTED, aria.readUntil(Protocol.SERVER_CONNECTED).getCommand());
+      rig.run(500);
+      ArNetPacket strings = aria.readUntil(259);
+      assertEquals("Stopped", strings.bufToStr());
+      assertEquals("Stop", strings.bufToStr());
+      ArNetPacket numbers = aria.readUntil(258);
+      RobotUpdate u = RobotUpdate.readNumbers(numbers, "Stop", "Stopped");
+      assertEquals((int) rig.robot.getX(), (int) u.x(), 50);
+      assertEquals((int) rig.robot.getY(), (int) u.y(), 50);
+    }
+  }
+
+  @Test
+  void clientCommandListerSeesTheServicesItListed() throws Exception {
+    byte[] sent = PeerRecording.bytes("clientCommandLister.c2s.bin");
+    List<String> listedThen =
+        PeerRecording.listedNames(
+            PeerRecording.packets(PeerRecording.bytes("clientCommandLister.s2c.bin")));
+    assertTrue(
+        listedThen.contains("update") && listedThen.contains("ratioDrive"), listedThen.toString());
+    try (GuiRig rig = GuiRig.plain(b -> b);
+        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
+      aria.readIntroduction();
+      aria.send(PeerRecording.packets(sent).get(0).toWire());
+      aria.readUntil(Protocol.SERVER_CONNECTED);
+      ArNetPacket list = aria.readUntil(Protocol.SERVER_LIST);
+      List<String> now = PeerRecording.listedNames(List.of(list));
+      for (String name :
+          List.of(
+              "update",
+              "updateNumbers",
+              "updateStrings",
+              "physicalInfo",
+              "batteryInfo",
+              "ratioDrive",
+              "stop",
+              "getGoals",
+              "getMapName",
+              "getMap")) {
+        assertTrue(now.contains(name), name + " is listed: " + now);
+      }
+      // The recording came from the full demo (camera, localization, config): a plain guiServer
+      // lists a part of it, with the same names.
+      assertTrue(listedThen.containsAll(now), "listed by hand: " + listedThen + ", now: " + now);
+      assertTrue(aria.readUntil(Protocol.SERVER_LIST_ARGRET).bufToUByte2() > 0);
+      assertTrue(aria.readUntil(Protocol.SERVER_LIST_GROUP_AND_FLAGS).bufToUByte2() > 0);
+    }
+  }
+
+  @Test
+  void clientDemoGetsItsTableAndDrives() throws Exception {
+    byte[] sent = PeerRecording.bytes("clientDemo.c2s.bin");
+    List<ArNetPacket> asSent = PeerRecording.packets(sent);
+    // Its introduction, UDP confirmation, setSafeDrive 1, batteryInfo and physicalInfo once,
+    // then updateNumbers every 100 ms and updateStrings and mapUpdated when they change.
+    assertEquals(
+        List.of(2, 4, 284, 261, 260, 129, 129, 129),
+        asSent.stream().map(ArNetPacket::getCommand).toList());
+    // The demo guiServer it talked to: localization, planning and a camera.
+    org.jaria.net.provider.VideoSource camera =
+        new org.jaria.net.provider.VideoSource() {
+          @Override
+          public String getName() {
+            return "Camera";
+          }
+
+          @Override
+          public org.jaria.net.data.VideoFrame getLatestFrame() {
+            return null;
+          }
+        };
+    try (GuiRig rig = GuiRig.arnl(b -> b.video(camera));
+        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
+      ArServerBase s = rig.gui.getServer();
+      for (var e :
+          java.util.Map.of(
+                  258, "updateNumbers",
+                  259, "updateStrings",
+                  260, "batteryInfo",
+                  261, "physicalInfo",
+                  267, "mapUpdated",
+                  284, "setSafeDrive")
+              .entrySet()) {
+        assertEquals(e.getKey(), s.findCommandFromName(e.getValue()), e.getValue());
+      }
+      aria.readIntroduction();
+      aria.send(sent);
+      ArNetPacket physical = aria.readUntil(261);
+      assertEquals(rig.robot.getRobotType(), physical.bufToStr());
+      ArNetPacket battery = aria.readUntil(260);
+      assertEquals(11.5, battery.bufToDouble());
+      assertEquals(11, battery.bufToDouble());
+      rig.run(300);
+      RobotUpdate u = RobotUpdate.readNumbers(aria.readUntil(258), "", "");
+      assertEquals((int) rig.robot.getX(), (int) u.x(), 50);
+    }
+  }
+
+  @Test
+  void getVideoExampleSavesAJpegFromSendVideo() throws Exception {
+    byte[] sent = PeerRecording.bytes("getVideoExample.c2s.bin");
+    List<ArNetPacket> asSent = PeerRecording.packets(sent);
+    // Introduction, UDP confirmation, then sendVideo once (it has no getPictureCam1 to use).
+    assertEquals(List.of(2, 4, 277), asSent.stream().map(ArNetPacket::getCommand).toList());
+    byte[] rgb = new byte[160 * 120 * 3];
+    java.util.Arrays.fill(rgb, (byte) 120);
+    org.jaria.net.data.VideoFrame frame =
+        new org.jaria.net.data.VideoFrame(
+            1, org.jaria.net.data.VideoFrame.Format.RGB, 160, 120, rgb);
+    org.jaria.net.provider.VideoSource camera =
+        new org.jaria.net.provider.VideoSource() {
+          @Override
+          public String getName() {
+            return "Camera";
+          }
+
+          @Override
+          public org.jaria.net.data.VideoFrame getLatestFrame() {
+            return frame;
+          }
+        };
+    try (GuiRig rig = GuiRig.arnl(b -> b.video(camera));
+        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
+      assertEquals(277, rig.gui.getServer().findCommandFromName("sendVideo"));
+      aria.readIntroduction();
+      aria.send(sent);
+      ArNetPacket video = aria.readUntil(277);
+      assertEquals(160, video.bufToUByte2());
+      assertEquals(120, video.bufToUByte2());
+      byte[] jpeg = video.bufToData(video.getRemaining());
+      java.awt.image.BufferedImage img =
+          javax.imageio.ImageIO.read(new java.io.ByteArrayInputStream(jpeg));
+      assertEquals(160, img.getWidth(), "a JPEG the example can save");
+      // What it saved by hand: a 160x120 JPEG of about 2 kB from the simulated camera.
+      List<ArNetPacket> answered =
+          PeerRecording.packets(PeerRecording.bytes("getVideoExample.s2c.bin"));
+      ArNetPacket then =
+          answered.stream().filter(p -> p.getCommand() == 277).findFirst().orElseThrow();
+      assertEquals(160, then.bufToUByte2());
+      assertEquals(120, then.bufToUByte2());
+    }
+  }
+}
