@@ -80,6 +80,14 @@ public final class GradeCommand implements Callable<Integer> {
               + " could change anything you can, grades included. Every report says so.")
   boolean unsafe;
 
+  @Option(
+      names = "--bwrap",
+      paramLabel = "PROGRAM",
+      description =
+          "The bubblewrap program that isolates the submissions (default: ${DEFAULT-VALUE}).",
+      defaultValue = "/usr/bin/bwrap")
+  Path bwrap;
+
   @Option(names = "--list", description = "List the assignments and exit.")
   boolean list;
 
@@ -139,7 +147,7 @@ public final class GradeCommand implements Callable<Integer> {
       err.println(GradeReport.UNSAFE_WARNING);
     } else {
       try {
-        sandbox = Sandbox.bubblewrap();
+        sandbox = Sandbox.bubblewrap(bwrap);
       } catch (IllegalStateException e) {
         err.println(
             "grade: cannot isolate the submissions: "
@@ -159,7 +167,9 @@ public final class GradeCommand implements Callable<Integer> {
     Path students = out.resolve("students");
     Grader grader =
         new Grader(
-            a, Grader.Options.of(Duration.ofSeconds(timeoutSeconds), jobs, sandbox), students);
+            a,
+            Grader.Options.of(Duration.ofSeconds(timeoutSeconds), jobs, sandbox).in(Texts.of(lang)),
+            students);
     o.printf(
         Locale.ROOT,
         "Grading %d submission(s) of '%s', %d at a time%s...%n",

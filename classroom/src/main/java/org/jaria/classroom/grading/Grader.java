@@ -30,6 +30,7 @@ import org.jaria.classroom.link.StudentMain;
 import org.jaria.classroom.link.StudentStreams;
 import org.jaria.classroom.sandbox.Limits;
 import org.jaria.classroom.sandbox.Sandbox;
+import org.jaria.classroom.sandbox.ScratchFiles;
 
 /**
  * Grades a folder of submissions. Each student's Java files are copied into a scratch folder of
@@ -42,6 +43,9 @@ import org.jaria.classroom.sandbox.Sandbox;
  * Originals are only read.
  */
 public final class Grader {
+
+  /** How often the files in a running student's scratch folder are counted, ms. */
+  private static final long FILE_COUNT_EVERY_MS = 250;
 
   /** How the scratch folders in the system's temporary folder are named. */
   public static final String SCRATCH_PREFIX = "jaria-grade-";
@@ -69,12 +73,18 @@ public final class Grader {
    * @param jobs how many students are graded at once
    * @param sandbox how student JVMs are contained
    * @param limits what each student JVM may use
+   * @param texts the language of the checks
    */
-  public record Options(Duration timeout, int jobs, Sandbox sandbox, Limits limits) {
+  public record Options(Duration timeout, int jobs, Sandbox sandbox, Limits limits, Texts texts) {
 
-    /** Options with the limits that go with {@code timeout}. */
+    /** Options with the limits that go with {@code timeout}, the checks in English. */
     public static Options of(Duration timeout, int jobs, Sandbox sandbox) {
-      return new Options(timeout, jobs, sandbox, Limits.forTimeout(timeout));
+      return new Options(timeout, jobs, sandbox, Limits.forTimeout(timeout), Texts.english());
+    }
+
+    /** These options with the checks in {@code t}'s language. */
+    public Options in(Texts t) {
+      return new Options(timeout, jobs, sandbox, limits, t);
     }
   }
 
@@ -197,7 +207,7 @@ public final class Grader {
             new Result(
                 student,
                 Status.COMPILE_ERROR,
-                Grading.compileFailure(assignment, compiled.errors()),
+                Grading.compileFailure(assignment, compiled.errors(), options.texts()),
                 seconds(t0),
                 log);
       } else {
@@ -235,10 +245,26 @@ public final class Grader {
             },
             options.timeout().toMillis(),
             TimeUnit.MILLISECONDS);
+    // Nothing in the kernel limits how many files it makes: count them while it runs, so a flood
+    // of small files is stopped early (the count after it ended decides the status).
+    AtomicBoolean tooManyFiles = new AtomicBoolean();
+    ScheduledFuture<?> fileCount =
+        watchdog.scheduleWithFixedDelay(
+            () -> {
+              if (overFileLimit(scratch)) {
+                tooManyFiles.set(true);
+                kill(p);
+              }
+            },
+            FILE_COUNT_EVERY_MS,
+            FILE_COUNT_EVERY_MS,
+            TimeUnit.MILLISECONDS);
     Grade grade = null;
     LinkLost lost = null;
     try {
-      grade = assignment.grade(StudentStreams.of(p.getInputStream(), p.getOutputStream()));
+      grade =
+          assignment.grade(
+              StudentStreams.of(p.getInputStream(), p.getOutputStream()), options.texts());
     } catch (LinkLost e) {
       lost = e;
     } catch (RuntimeException e) {
@@ -252,16 +278,36 @@ public final class Grader {
               assignment.id(),
               List.of(
                   Check.fail(
-                      "grading ran to the end",
+                      options.texts().get("ended.name"),
                       assignment.points(),
-                      "grading could not go on: " + e.getMessage()))),
+                      options.texts().get("ended.graderFailed", e.getMessage())))),
           seconds(t0),
           log);
     } finally {
       alarm.cancel(false);
+      fileCount.cancel(false);
       watchdog.shutdownNow();
     }
     int exit = waitOrKill(p);
+    if (tooManyFiles.get() || overFileLimit(scratch)) {
+      return new Result(
+          student,
+          Status.TOO_MANY_FILES,
+          new Grade(
+              assignment.id(),
+              List.of(
+                  Check.fail(
+                      options.texts().get("ended.name"),
+                      assignment.points(),
+                      Outcomes.detail(
+                          Status.TOO_MANY_FILES,
+                          exit,
+                          options.timeout(),
+                          tail(log, 400),
+                          options.texts())))),
+          seconds(t0),
+          log);
+    }
     if (grade != null && lost == null) {
       // A program that exhausted its threads or memory but caught the error still gets named so.
       Status exhausted = Outcomes.exhausted(tail(log, 1 << 16));
@@ -272,15 +318,25 @@ public final class Grader {
     }
     Status status =
         Outcomes.classify(timedOut.get(), lost != null && lost.exiting(), exit, tail(log, 4000));
-    String detail = Outcomes.detail(status, exit, options.timeout(), tail(log, 400));
+    String detail =
+        Outcomes.detail(status, exit, options.timeout(), tail(log, 400), options.texts());
     return new Result(
         student,
         status,
         new Grade(
             assignment.id(),
-            List.of(Check.fail("grading ran to the end", assignment.points(), detail))),
+            List.of(Check.fail(options.texts().get("ended.name"), assignment.points(), detail))),
         seconds(t0),
         log);
+  }
+
+  /** Whether the scratch folder holds more than the limit; an unreadable one is not counted. */
+  private boolean overFileLimit(Path scratch) {
+    try {
+      return ScratchFiles.over(scratch, options.limits().files());
+    } catch (IOException e) {
+      return false;
+    }
   }
 
   private static void kill(Process p) {
