@@ -112,7 +112,7 @@ public final class BallAssignment implements Assignment {
                 scene.world, scene.simRobot, student, Map.of("acts", scene.actsEnd))) {
       Optional<String> failed = sim.setUp();
       if (failed.isPresent()) {
-        return Grading.setUpFailure(this, failed.get());
+        return Grading.setUpFailure(this, failed.get(), t);
       }
       try (PoseTrace trace = new PoseTrace(scene.world, scene.simRobot)) {
         List<Check> checks = new ArrayList<>();

@@ -141,7 +141,7 @@ public final class GoalsAssignment implements Assignment {
       try (StudentLink sim = StudentLink.connect(world, r, student, Map.of())) {
         Optional<String> failed = sim.setUp();
         if (failed.isPresent()) {
-          return Grading.setUpFailure(this, failed.get());
+          return Grading.setUpFailure(this, failed.get(), t);
         }
         sim.runMillis(1500);
         if (!sim.call("localize").equals("true")) {

@@ -107,13 +107,20 @@ public final class Grading {
   }
 
   /**
-   * The grade of a solution that could not be set up, from the student's side's answer: the check's
-   * name, a tab, the message.
+   * The grade of a solution that could not be set up, from the student's side's answer ({@link
+   * Solutions#setUpAnswer}), in {@code t}'s language. An answer that names no sentence of the
+   * catalogue is shown as it is.
    */
-  public static Grade setUpFailure(Assignment a, String answer) {
+  public static Grade setUpFailure(Assignment a, String answer, Texts t) {
     int tab = answer.indexOf('\t');
-    String name = tab < 0 ? "solution can be created" : answer.substring(0, tab);
-    String message = tab < 0 ? answer : answer.substring(tab + 1);
-    return new Grade(a.id(), List.of(Check.fail(name, a.points(), message)));
+    String nameKey = tab < 0 ? "setup.created.name" : answer.substring(0, tab);
+    List<String> msg = Solutions.fields(tab < 0 ? "" : answer.substring(tab + 1));
+    if (tab < 0 || !t.has(nameKey) || !t.has(msg.get(0))) {
+      return new Grade(
+          a.id(), List.of(Check.fail(t.get("setup.created.name"), a.points(), answer)));
+    }
+    Object[] args = msg.subList(1, msg.size()).toArray();
+    return new Grade(
+        a.id(), List.of(Check.fail(t.get(nameKey), a.points(), t.get(msg.get(0), args))));
   }
 }

@@ -55,6 +55,11 @@ public final class Texts {
     return lang;
   }
 
+  /** Whether the catalogue has sentence {@code key}. */
+  public boolean has(String key) {
+    return entries.getProperty(key) != null;
+  }
+
   /** The keys of the catalogue. */
   public Set<String> keys() {
     return new TreeSet<>(entries.stringPropertyNames());

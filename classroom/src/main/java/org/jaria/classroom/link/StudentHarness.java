@@ -211,16 +211,17 @@ public final class StudentHarness {
     try {
       solution = SolutionFinder.find(assignment, loader, classNames);
     } catch (Solutions.SolutionException e) {
-      return "solution found\t" + e.getMessage();
+      return Solutions.setUpAnswer("setup.found.name", e.key(), e.args());
     }
     try {
       side = assignment.studentSide();
       side.setUp(context());
       return "";
     } catch (Solutions.SolutionException e) {
-      return "solution can be created\t" + e.getMessage();
+      return Solutions.setUpAnswer("setup.created.name", e.key(), e.args());
     } catch (RuntimeException | LinkageError e) {
-      return "solution can be created\tsetting up your solution failed: " + Solutions.describe(e);
+      return Solutions.setUpAnswer(
+          "setup.created.name", "setup.failed", List.of(Solutions.describe(e)));
     }
   }
 

@@ -109,7 +109,7 @@ public final class SquareAssignment implements Assignment {
           PoseTrace trace = new PoseTrace(world, r)) {
         Optional<String> failed = sim.setUp();
         if (failed.isPresent()) {
-          return Grading.setUpFailure(this, failed.get());
+          return Grading.setUpFailure(this, failed.get(), t);
         }
         List<Check> checks = new ArrayList<>();
         Programs.Ending end = Programs.run(sim, MAX_TIME, 1, t);

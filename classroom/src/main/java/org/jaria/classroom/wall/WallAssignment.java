@@ -125,7 +125,7 @@ public final class WallAssignment implements Assignment {
           PoseTrace trace = new PoseTrace(world, r)) {
         Optional<String> failed = sim.setUp();
         if (failed.isPresent()) {
-          return Grading.setUpFailure(this, failed.get());
+          return Grading.setUpFailure(this, failed.get(), t);
         }
         sim.runMillis(SECONDS * 1000L);
         List<Check> checks = new ArrayList<>();

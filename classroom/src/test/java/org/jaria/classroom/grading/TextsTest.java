@@ -49,10 +49,24 @@ class TextsTest {
         }
         """,
         StandardCharsets.UTF_8);
+    // its constructor is private: the student's side cannot make one and says so by key
+    Path noConstructor = work.resolve("no-constructor");
+    Files.createDirectories(noConstructor);
+    Files.writeString(
+        noConstructor.resolve("Square.java"),
+        """
+        import org.jaria.classroom.RobotProgram;
+        import org.jaria.robot.ArRobot;
+        public class Square implements RobotProgram {
+          private Square() {}
+          public void run(ArRobot robot) {}
+        }
+        """,
+        StandardCharsets.UTF_8);
     List<String> english = englishPhrases();
     // the starter (a corner reached, one missed, the rest not reached) and a program that does
     // nothing (every check that passes earns nothing)
-    for (Path dir : List.of(Path.of("assignments/square/starter"), empty)) {
+    for (Path dir : List.of(Path.of("assignments/square/starter"), empty, noConstructor)) {
       Path w = work.resolve("w-" + dir.getFileName() + dir.getNameCount());
       Grade en = Grading.compileAndGrade(square, dir, w.resolve("en"), Texts.of("en"));
       Grade es = Grading.compileAndGrade(square, dir, w.resolve("es"), Texts.of("es"));
@@ -68,6 +82,12 @@ class TextsTest {
               s.message().contains(phrase) || s.name().contains(phrase),
               "English '" + phrase + "' in " + s);
         }
+      }
+      if (dir.equals(noConstructor)) {
+        assertEquals(
+            "Square necesita un constructor público sin argumentos",
+            es.checks().get(0).message(),
+            es.describe());
       }
     }
   }
