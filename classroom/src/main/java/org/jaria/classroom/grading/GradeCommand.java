@@ -123,7 +123,7 @@ public final class GradeCommand implements Callable<Integer> {
     List<Path> found;
     try {
       a = Assignments.byId(assignment);
-      found = Grader.submissions(submissions);
+      found = SubmissionFolders.submissions(submissions);
     } catch (IllegalArgumentException | IOException e) {
       err.println("grade: " + e.getMessage());
       return 2;
@@ -158,7 +158,7 @@ public final class GradeCommand implements Callable<Integer> {
     }
     List<Path> toGrade = found;
     if (only != null) {
-      toGrade = found.stream().filter(p -> Grader.studentOf(p).equals(only)).toList();
+      toGrade = found.stream().filter(p -> SubmissionFolders.studentOf(p).equals(only)).toList();
       if (toGrade.isEmpty()) {
         err.println("grade: no submission called '" + only + "' in " + submissions);
         return 2;
@@ -202,13 +202,13 @@ public final class GradeCommand implements Callable<Integer> {
     } else {
       // the others as graded before, from their files in the report
       for (Path p : found) {
-        String name = Grader.studentOf(p);
+        String name = SubmissionFolders.studentOf(p);
         if (name.equals(only)) {
           results.add(graded.get(0));
           continue;
         }
         try {
-          results.add(ResultFiles.read(students.resolve(Grader.safeName(name)), name));
+          results.add(ResultFiles.read(students.resolve(SubmissionFolders.safeName(name)), name));
         } catch (IOException e) {
           err.println(
               "grade: " + name + " has no earlier result in " + out + " (grade the class first)");
@@ -222,7 +222,7 @@ public final class GradeCommand implements Callable<Integer> {
     Files.writeString(out.resolve("report.html"), report.html(), StandardCharsets.UTF_8);
     Files.writeString(out.resolve("gradebook.csv"), report.csv(), StandardCharsets.UTF_8);
     for (Grader.Result r : results) {
-      Path dir = students.resolve(Grader.safeName(r.student()));
+      Path dir = students.resolve(SubmissionFolders.safeName(r.student()));
       Files.createDirectories(dir);
       Files.writeString(dir.resolve("feedback.txt"), report.feedback(r), StandardCharsets.UTF_8);
     }

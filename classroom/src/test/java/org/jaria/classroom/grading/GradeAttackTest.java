@@ -224,8 +224,8 @@ class GradeAttackTest {
             subs.toString());
     stdout = o.toString();
     assertEquals(0, exit, e.toString());
-    for (Path dir : Grader.submissions(subs)) {
-      String name = Grader.studentOf(dir);
+    for (Path dir : SubmissionFolders.submissions(subs)) {
+      String name = SubmissionFolders.studentOf(dir);
       byStudent.put(name, ResultFiles.read(out.resolve("students").resolve(name), name));
     }
   }

@@ -194,7 +194,7 @@ class GradeCommandTest {
   @Test
   void aFolderOfJavaFilesIsOneSubmission(@TempDir Path tmp) throws IOException {
     write(tmp.resolve("mine"), "Square.java", kit("solution"));
-    assertEquals(List.of(tmp.resolve("mine")), Grader.submissions(tmp.resolve("mine")));
-    assertEquals(List.of(tmp.resolve("mine")), Grader.submissions(tmp));
+    assertEquals(List.of(tmp.resolve("mine")), SubmissionFolders.submissions(tmp.resolve("mine")));
+    assertEquals(List.of(tmp.resolve("mine")), SubmissionFolders.submissions(tmp));
   }
 }
