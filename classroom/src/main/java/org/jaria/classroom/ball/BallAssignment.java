@@ -11,12 +11,14 @@ import org.jaria.action.ArActionLimiterForwards;
 import org.jaria.acts.ArACTS_1_2;
 import org.jaria.classroom.grading.Assignment;
 import org.jaria.classroom.grading.Check;
+import org.jaria.classroom.grading.FirstStep;
 import org.jaria.classroom.grading.Fmt;
 import org.jaria.classroom.grading.Grade;
 import org.jaria.classroom.grading.Grading;
 import org.jaria.classroom.grading.GuardedAction;
 import org.jaria.classroom.grading.PoseTrace;
 import org.jaria.classroom.grading.Solutions;
+import org.jaria.classroom.grading.Texts;
 import org.jaria.classroom.link.StudentContext;
 import org.jaria.classroom.link.StudentLink;
 import org.jaria.classroom.link.StudentSide;
@@ -103,62 +105,57 @@ public final class BallAssignment implements Assignment {
   }
 
   @Override
-  public Grade grade(StudentStreams student) {
+  public Grade grade(StudentStreams student, Texts t) {
     try (BallScene scene = new BallScene(11, 2500, 400);
         StudentLink sim =
             StudentLink.connect(
                 scene.world, scene.simRobot, student, Map.of("acts", scene.actsEnd))) {
       Optional<String> failed = sim.setUp();
       if (failed.isPresent()) {
-        return Grading.setUpFailure(this, failed.get());
+        return Grading.setUpFailure(this, failed.get(), t);
       }
       try (PoseTrace trace = new PoseTrace(scene.world, scene.simRobot)) {
         List<Check> checks = new ArrayList<>();
         boolean close = sim.runUntil(() -> scene.distanceToBall() < CLOSE, Duration.ofSeconds(30));
-        checks.add(approach(close, scene));
-        checks.add(follow(close, scene, sim));
-        checks.add(stopsWhenLost(scene, sim));
-        checks.add(GuardedAction.check(1, sim.call("fire")));
+        checks.add(approach(close, scene, t));
+        checks.add(follow(close, scene, sim, t));
+        checks.add(stopsWhenLost(scene, sim, t));
+        checks.add(GuardedAction.check(1, sim.call("fire"), t));
         checks.add(
             Check.of(
-                "no collisions",
+                t.get("collisions.name"),
                 1,
                 !trace.everStalled(),
-                "the robot never ran into anything",
-                "your robot ran into something at "
-                    + trace.firstStallWhere()
-                    + " after "
-                    + Fmt.seconds(trace.firstStallSeconds())));
-        return new Grade(id(), checks);
+                t.get("ball.collisions.none"),
+                t.get(
+                    "ball.collision",
+                    trace.firstStallWhere(),
+                    Fmt.seconds(trace.firstStallSeconds()))));
+        return new Grade(id(), FirstStep.gate(checks, close, t.get("step.ball"), t));
       }
     }
   }
 
-  private static Check approach(boolean close, BallScene scene) {
-    String name = "drives up to the ball";
+  private static Check approach(boolean close, BallScene scene, Texts t) {
+    String name = t.get("ball.approach.name");
     if (close) {
-      return Check.pass(name, 3, "got within " + Fmt.dist(CLOSE) + " of the ball");
+      return Check.pass(name, 3, t.get("ball.approach.ok", Fmt.dist(CLOSE)));
     }
     double v = scene.simRobot.getVel();
     return Check.fail(
         name,
         3,
-        "after 30 s your robot was still "
-            + Fmt.dist(scene.distanceToBall())
-            + " from the ball (it started "
-            + Fmt.dist(scene.startDistance)
-            + " away, the ball 400 mm to its left) and moving at "
-            + Fmt.num(v, 0)
-            + " mm/s: when acts.getNumBlobs(1) > 0, set a forward velocity (desired.setVel(200))"
-            + " and turn towards the largest blob: blob.getXCG() below 80 (the image is 160"
-            + " pixels wide) means it is to the left, turn with a positive"
-            + " desired.setDeltaHeading");
+        t.get(
+            "ball.approach.failed",
+            Fmt.dist(scene.distanceToBall()),
+            Fmt.dist(scene.startDistance),
+            Fmt.num(v, 0)));
   }
 
-  private static Check follow(boolean close, BallScene scene, StudentLink sim) {
-    String name = "follows the ball as it rolls";
+  private static Check follow(boolean close, BallScene scene, StudentLink sim, Texts t) {
+    String name = t.get("ball.follow.name");
     if (!close) {
-      return Check.fail(name, 3, "not tried: the robot never got close to the ball");
+      return Check.fail(name, 3, t.get("ball.follow.notTried"));
     }
     double x = scene.ball().x();
     double y = scene.ball().y();
@@ -172,43 +169,29 @@ public final class BallAssignment implements Assignment {
         return Check.fail(
             name,
             3,
-            "the ball rolled to your robot's left at 100 mm/s and got "
-                + Fmt.dist(scene.distanceToBall())
-                + " away after "
-                + Fmt.seconds(step * 0.2)
-                + " (allowed: "
-                + Fmt.dist(KEEP_UP)
-                + "): keep turning towards the blob while you drive (a turn proportional to how"
-                + " far its centre is from the middle of the image); and if ACTS lost the ball"
-                + " because the robot got too close, slow down as the blob nears the bottom of"
-                + " the image (blob.getYCG() close to 120)");
+            t.get(
+                "ball.follow.lost",
+                Fmt.dist(scene.distanceToBall()),
+                Fmt.seconds(step * 0.2),
+                Fmt.dist(KEEP_UP)));
       }
     }
     double moved = scene.simRobot.getTruePose().findDistanceTo(before);
     if (moved < 1000) {
-      return Check.fail(
-          name,
-          3,
-          "the robot moved only "
-              + Fmt.dist(moved)
-              + " while the ball rolled 2 m: keep driving towards it, not only turning");
+      return Check.fail(name, 3, t.get("ball.follow.notDriving", Fmt.dist(moved)));
     }
-    return Check.pass(
-        name, 3, "stayed within " + Fmt.dist(KEEP_UP) + " and moved " + Fmt.dist(moved));
+    return Check.pass(name, 3, t.get("ball.follow.ok", Fmt.dist(KEEP_UP), Fmt.dist(moved)));
   }
 
-  private static Check stopsWhenLost(BallScene scene, StudentLink sim) {
+  private static Check stopsWhenLost(BallScene scene, StudentLink sim, Texts t) {
     scene.removeBall();
     sim.runMillis(3000);
     double v = scene.simRobot.getVel();
     return Check.of(
-        "stops when the ball is gone",
+        t.get("ball.stops.name"),
         2,
         Math.abs(v) < 30,
-        "stopped within 3 s of losing the ball",
-        "3 s after the ball disappeared your robot was still driving at "
-            + Fmt.num(v, 0)
-            + " mm/s: when ACTS has seen no blob for a while (say a second), return null from"
-            + " fire() so the lower-priority stop action takes over");
+        t.get("ball.stops.ok"),
+        t.get("ball.stops.failed", Fmt.num(v, 0)));
   }
 }

@@ -13,12 +13,14 @@ import org.jaria.arnl.ArSonarLocalizationTask;
 import org.jaria.classroom.NavigationProgram;
 import org.jaria.classroom.grading.Assignment;
 import org.jaria.classroom.grading.Check;
+import org.jaria.classroom.grading.FirstStep;
 import org.jaria.classroom.grading.Fmt;
 import org.jaria.classroom.grading.Grade;
 import org.jaria.classroom.grading.Grading;
 import org.jaria.classroom.grading.PoseTrace;
 import org.jaria.classroom.grading.Programs;
 import org.jaria.classroom.grading.Solutions;
+import org.jaria.classroom.grading.Texts;
 import org.jaria.classroom.link.StudentContext;
 import org.jaria.classroom.link.StudentLink;
 import org.jaria.classroom.link.StudentSide;
@@ -130,7 +132,7 @@ public final class GoalsAssignment implements Assignment {
   }
 
   @Override
-  public Grade grade(StudentStreams student) {
+  public Grade grade(StudentStreams student, Texts t) {
     ArMap map = ArMap.loadBundled("office");
     SimOptions options =
         SimOptions.builder().seed(SEED).odometryError(OdometryError.random(0.02, 0.02)).build();
@@ -139,7 +141,7 @@ public final class GoalsAssignment implements Assignment {
       try (StudentLink sim = StudentLink.connect(world, r, student, Map.of())) {
         Optional<String> failed = sim.setUp();
         if (failed.isPresent()) {
-          return Grading.setUpFailure(this, failed.get());
+          return Grading.setUpFailure(this, failed.get(), t);
         }
         sim.runMillis(1500);
         if (!sim.call("localize").equals("true")) {
@@ -147,78 +149,67 @@ public final class GoalsAssignment implements Assignment {
               id(),
               List.of(
                   Check.fail(
-                      "robot localized",
-                      points(),
-                      "the robot could not be localized at home; did your constructor move it?")));
+                      t.get("goals.localized.name"), points(), t.get("goals.localized.failed"))));
         }
         try (PoseTrace trace = new PoseTrace(world, r)) {
           List<Check> checks = new ArrayList<>();
-          Programs.Ending end = Programs.run(sim, MAX_TIME, 2);
+          Programs.Ending end = Programs.run(sim, MAX_TIME, 2, t);
           checks.add(end.check());
           sim.runMillis(5000);
           int interrupted = sim.call("interrupted").matches("0*") ? 0 : 1;
-          checks.addAll(goals(map, trace, interrupted));
+          List<Check> goals = goals(map, trace, interrupted, t);
+          checks.addAll(goals);
           checks.add(
               Check.of(
-                  "no collisions",
+                  t.get("collisions.name"),
                   2,
                   !trace.everStalled(),
-                  "the robot never touched a wall",
-                  "the robot ran into something at "
-                      + trace.firstStallWhere()
-                      + " after "
-                      + Fmt.seconds(trace.firstStallSeconds())
-                      + ": let the path planning task drive (do not add motion commands or"
-                      + " actions of your own while it is active)"));
-          return new Grade(id(), checks);
+                  t.get("collisions.none"),
+                  t.get(
+                      "goals.collision",
+                      trace.firstStallWhere(),
+                      Fmt.seconds(trace.firstStallSeconds()))));
+          return new Grade(
+              id(),
+              FirstStep.gate(checks, goals.get(0).passed(), t.get("step.goals", GOALS.get(0)), t));
         }
       }
     }
   }
 
-  private List<Check> goals(ArMap map, PoseTrace trace, int interrupted) {
+  private List<Check> goals(ArMap map, PoseTrace trace, int interrupted, Texts t) {
     List<Check> checks = new ArrayList<>();
     int from = 0;
     boolean previousReached = false;
     for (int k = 0; k < GOALS.size(); k++) {
       String goal = GOALS.get(k);
       ArPose p = map.findMapObject(goal).orElseThrow().pose();
-      String name = "stopped at goal " + (k + 1) + " '" + goal + "'";
+      String name = t.get("goals.goal.name", k + 1, goal);
       int at = trace.firstStopWithin(p.x(), p.y(), TOLERANCE, 30, from);
       if (at >= 0) {
         checks.add(
             Check.pass(
                 name,
                 3,
-                "stopped "
-                    + Fmt.dist(trace.distance(at, p.x(), p.y()))
-                    + " from it at "
-                    + Fmt.seconds(trace.t(at))));
+                t.get(
+                    "goals.goal.ok",
+                    Fmt.dist(trace.distance(at, p.x(), p.y())),
+                    Fmt.seconds(trace.t(at)))));
         from = at;
         previousReached = true;
         continue;
       }
       int closest = trace.closestTo(p.x(), p.y(), from);
       StringBuilder msg =
-          new StringBuilder("your robot never stopped within ")
-              .append(Fmt.dist(TOLERANCE))
-              .append(" of '")
-              .append(goal)
-              .append("' ")
-              .append(Fmt.xy(p.x(), p.y()))
-              .append(previousReached ? " after the previous goal" : "")
-              .append("; the closest it came was ")
-              .append(Fmt.dist(trace.distance(closest, p.x(), p.y())))
-              .append('.');
-      if (interrupted > 0) {
-        msg.append(" A new goal replaced one the robot had not reached yet: after")
-            .append(" path.pathPlanToGoal(name), wait until path.isActive() is false (checking")
-            .append(" path.getState()) before asking for the next goal.");
-      } else {
-        msg.append(" Did you ask for it with path.pathPlanToGoal(\"")
-            .append(goal)
-            .append("\") and wait on the robot's clock while path.isActive()?");
-      }
+          new StringBuilder(
+              t.get(
+                  "goals.goal.missed",
+                  Fmt.dist(TOLERANCE),
+                  goal,
+                  Fmt.xy(p.x(), p.y()),
+                  previousReached ? t.get("goals.goal.afterPrevious") : "",
+                  Fmt.dist(trace.distance(closest, p.x(), p.y()))));
+      msg.append(interrupted > 0 ? t.get("goals.goal.replaced") : t.get("goals.goal.askFor", goal));
       checks.add(Check.fail(name, 3, msg.toString()));
       previousReached = false;
     }

@@ -35,11 +35,17 @@ public interface Assignment {
    * Grades the student whose process is at the other end of {@code student} on the simulator: the
    * world, its ground truth and the checks live here, the student's object lives in their process
    * ({@link #studentSide()}), joined by a {@link org.jaria.classroom.link.StudentLink}. Never
-   * throws for a faulty solution: every problem becomes a failed check with a message.
+   * throws for a faulty solution: every problem becomes a failed check with a message, in the
+   * language of {@code texts}.
    *
    * @throws org.jaria.classroom.link.LinkLost if the student's process stops answering
    */
-  Grade grade(StudentStreams student);
+  Grade grade(StudentStreams student, Texts texts);
+
+  /** {@link #grade(StudentStreams, Texts)} in English. */
+  default Grade grade(StudentStreams student) {
+    return grade(student, Texts.english());
+  }
 
   /** The half that runs in the student's process: makes their object and hooks it up. */
   StudentSide studentSide();

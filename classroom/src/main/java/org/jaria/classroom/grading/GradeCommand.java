@@ -80,6 +80,14 @@ public final class GradeCommand implements Callable<Integer> {
               + " could change anything you can, grades included. Every report says so.")
   boolean unsafe;
 
+  @Option(
+      names = "--bwrap",
+      paramLabel = "PROGRAM",
+      description =
+          "The bubblewrap program that isolates the submissions (default: ${DEFAULT-VALUE}).",
+      defaultValue = "/usr/bin/bwrap")
+  Path bwrap;
+
   @Option(names = "--list", description = "List the assignments and exit.")
   boolean list;
 
@@ -115,7 +123,7 @@ public final class GradeCommand implements Callable<Integer> {
     List<Path> found;
     try {
       a = Assignments.byId(assignment);
-      found = Grader.submissions(submissions);
+      found = SubmissionFolders.submissions(submissions);
     } catch (IllegalArgumentException | IOException e) {
       err.println("grade: " + e.getMessage());
       return 2;
@@ -139,7 +147,7 @@ public final class GradeCommand implements Callable<Integer> {
       err.println(GradeReport.UNSAFE_WARNING);
     } else {
       try {
-        sandbox = Sandbox.bubblewrap();
+        sandbox = Sandbox.bubblewrap(bwrap);
       } catch (IllegalStateException e) {
         err.println(
             "grade: cannot isolate the submissions: "
@@ -150,7 +158,7 @@ public final class GradeCommand implements Callable<Integer> {
     }
     List<Path> toGrade = found;
     if (only != null) {
-      toGrade = found.stream().filter(p -> Grader.studentOf(p).equals(only)).toList();
+      toGrade = found.stream().filter(p -> SubmissionFolders.studentOf(p).equals(only)).toList();
       if (toGrade.isEmpty()) {
         err.println("grade: no submission called '" + only + "' in " + submissions);
         return 2;
@@ -159,7 +167,9 @@ public final class GradeCommand implements Callable<Integer> {
     Path students = out.resolve("students");
     Grader grader =
         new Grader(
-            a, Grader.Options.of(Duration.ofSeconds(timeoutSeconds), jobs, sandbox), students);
+            a,
+            Grader.Options.of(Duration.ofSeconds(timeoutSeconds), jobs, sandbox).in(Texts.of(lang)),
+            students);
     o.printf(
         Locale.ROOT,
         "Grading %d submission(s) of '%s', %d at a time%s...%n",
@@ -192,13 +202,13 @@ public final class GradeCommand implements Callable<Integer> {
     } else {
       // the others as graded before, from their files in the report
       for (Path p : found) {
-        String name = Grader.studentOf(p);
+        String name = SubmissionFolders.studentOf(p);
         if (name.equals(only)) {
           results.add(graded.get(0));
           continue;
         }
         try {
-          results.add(ResultFiles.read(students.resolve(Grader.safeName(name)), name));
+          results.add(ResultFiles.read(students.resolve(SubmissionFolders.safeName(name)), name));
         } catch (IOException e) {
           err.println(
               "grade: " + name + " has no earlier result in " + out + " (grade the class first)");
@@ -212,7 +222,7 @@ public final class GradeCommand implements Callable<Integer> {
     Files.writeString(out.resolve("report.html"), report.html(), StandardCharsets.UTF_8);
     Files.writeString(out.resolve("gradebook.csv"), report.csv(), StandardCharsets.UTF_8);
     for (Grader.Result r : results) {
-      Path dir = students.resolve(Grader.safeName(r.student()));
+      Path dir = students.resolve(SubmissionFolders.safeName(r.student()));
       Files.createDirectories(dir);
       Files.writeString(dir.resolve("feedback.txt"), report.feedback(r), StandardCharsets.UTF_8);
     }

@@ -22,8 +22,13 @@ public final class Grading {
 
   private Grading() {}
 
-  /** Grades the solution among the classes compiled into {@code classesDir}. */
+  /** Grades the solution among the classes compiled into {@code classesDir}, in English. */
   public static Grade gradeClasses(Assignment a, Path classesDir) throws IOException {
+    return gradeClasses(a, classesDir, Texts.english());
+  }
+
+  /** Grades the solution among the classes compiled into {@code classesDir}, in {@code t}. */
+  public static Grade gradeClasses(Assignment a, Path classesDir, Texts t) throws IOException {
     List<String> names = SubmissionCompiler.classNames(classesDir);
     Pipe toStudent = Pipe.open();
     Pipe toGrader = Pipe.open();
@@ -57,7 +62,8 @@ public final class Grading {
         return a.grade(
             StudentStreams.of(
                 Channels.newInputStream(toGrader.source()),
-                Channels.newOutputStream(toStudent.sink())));
+                Channels.newOutputStream(toStudent.sink())),
+            t);
       } finally {
         toStudent.sink().close();
         try {
@@ -77,30 +83,44 @@ public final class Grading {
    */
   public static Grade compileAndGrade(Assignment a, Path sourceDir, Path workDir)
       throws IOException {
+    return compileAndGrade(a, sourceDir, workDir, Texts.english());
+  }
+
+  /** {@link #compileAndGrade(Assignment, Path, Path)} with the checks in {@code t}'s language. */
+  public static Grade compileAndGrade(Assignment a, Path sourceDir, Path workDir, Texts t)
+      throws IOException {
     SubmissionCompiler.Result r =
         SubmissionCompiler.compile(sourceDir, workDir, SubmissionCompiler.classPath());
     if (!r.ok()) {
-      return compileFailure(a, r.errors());
+      return compileFailure(a, r.errors(), t);
     }
-    return gradeClasses(a, workDir);
+    return gradeClasses(a, workDir, t);
   }
 
   /** The grade of a submission that does not compile. */
-  static Grade compileFailure(Assignment a, String errors) {
+  static Grade compileFailure(Assignment a, String errors, Texts t) {
     return new Grade(
         a.id(),
         List.of(
-            Check.fail("compiles", a.points(), "your code does not compile:\n" + errors.strip())));
+            Check.fail(
+                t.get("compiles.name"), a.points(), t.get("compiles.failed", errors.strip()))));
   }
 
   /**
-   * The grade of a solution that could not be set up, from the student's side's answer: the check's
-   * name, a tab, the message.
+   * The grade of a solution that could not be set up, from the student's side's answer ({@link
+   * Solutions#setUpAnswer}), in {@code t}'s language. An answer that names no sentence of the
+   * catalogue is shown as it is.
    */
-  public static Grade setUpFailure(Assignment a, String answer) {
+  public static Grade setUpFailure(Assignment a, String answer, Texts t) {
     int tab = answer.indexOf('\t');
-    String name = tab < 0 ? "solution can be created" : answer.substring(0, tab);
-    String message = tab < 0 ? answer : answer.substring(tab + 1);
-    return new Grade(a.id(), List.of(Check.fail(name, a.points(), message)));
+    String nameKey = tab < 0 ? "setup.created.name" : answer.substring(0, tab);
+    List<String> msg = Solutions.fields(tab < 0 ? "" : answer.substring(tab + 1));
+    if (tab < 0 || !t.has(nameKey) || !t.has(msg.get(0))) {
+      return new Grade(
+          a.id(), List.of(Check.fail(t.get("setup.created.name"), a.points(), answer)));
+    }
+    Object[] args = msg.subList(1, msg.size()).toArray();
+    return new Grade(
+        a.id(), List.of(Check.fail(t.get(nameKey), a.points(), t.get(msg.get(0), args))));
   }
 }

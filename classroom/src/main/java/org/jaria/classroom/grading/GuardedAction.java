@@ -52,7 +52,7 @@ public final class GuardedAction extends ArAction {
 
   /**
    * What the action did, as the student's side reports it to the grader: the times it fired, a tab,
-   * and what it first threw (empty if nothing); {@link #check(int, String)} reads it.
+   * and what it first threw (empty if nothing); {@link #check(int, String, Texts)} reads it.
    */
   public String report() {
     Throwable t = failure;
@@ -61,20 +61,14 @@ public final class GuardedAction extends ArAction {
 
   /**
    * The check that the action never threw (worth {@code points}), from the student's side's {@link
-   * #report()}.
+   * #report()}, in the language of {@code t}.
    */
-  public static Check check(int points, String report) {
+  public static Check check(int points, String report, Texts t) {
     String[] f = report.split("\t", 2);
     String fired = f[0].isEmpty() ? "0" : f[0];
     if (f.length < 2 || f[1].isEmpty()) {
-      return Check.pass(
-          "fire() runs without errors", points, "fire() ran " + fired + " times without throwing");
+      return Check.pass(t.get("fire.name"), points, t.get("fire.ok", fired));
     }
-    return Check.fail(
-        "fire() runs without errors",
-        points,
-        "your fire() threw "
-            + f[1]
-            + "; the robot switched your action off, so it stopped steering");
+    return Check.fail(t.get("fire.name"), points, t.get("fire.threw", f[1]));
   }
 }

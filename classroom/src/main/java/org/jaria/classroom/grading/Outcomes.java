@@ -61,35 +61,15 @@ final class Outcomes {
     return exitCode == OOM_EXIT ? Status.OUT_OF_MEMORY : Status.CRASH;
   }
 
-  /**
-   * What the teacher and the student read about it (English; the sentence is in {@link Status}).
-   */
-  static String detail(Status s, int exitCode, Duration timeout, String lastOutput) {
+  /** What the teacher and the student read about it, in {@code t}'s language. */
+  static String detail(Status s, int exitCode, Duration timeout, String lastOutput, Texts t) {
     return switch (s) {
-      case TIMEOUT ->
-          "stopped after "
-              + timeout.toSeconds()
-              + " s of real time (or its processor-time limit): look for a loop that never ends"
-              + " in a constructor or in fire() (they run on the robot's cycle, which then never"
-              + " finishes)";
-      case OUT_OF_MEMORY ->
-          "its Java machine ran out of memory: does it keep adding to a list without end?"
-              + " Last output: "
-              + lastOutput;
-      case TOO_MANY_THREADS ->
-          "it started more threads or processes than allowed; a robot program needs none of its"
-              + " own. Last output: "
-              + lastOutput;
-      case EXIT ->
-          "it called System.exit("
-              + exitCode
-              + "), which ended its Java machine, robot included, before grading was done: return"
-              + " from run() instead";
-      default ->
-          "its Java machine ended (exit code "
-              + exitCode
-              + ") before grading was done. Last output: "
-              + lastOutput;
+      case TIMEOUT -> t.get("outcome.timeout", timeout.toSeconds());
+      case OUT_OF_MEMORY -> t.get("outcome.memory", lastOutput);
+      case TOO_MANY_THREADS -> t.get("outcome.threads", lastOutput);
+      case TOO_MANY_FILES -> t.get("outcome.files", lastOutput);
+      case EXIT -> t.get("outcome.exit", exitCode);
+      default -> t.get("outcome.crash", exitCode, lastOutput);
     };
   }
 }

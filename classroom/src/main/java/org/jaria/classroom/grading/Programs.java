@@ -28,30 +28,17 @@ public final class Programs {
    * simulated time.
    *
    * @param points what ending normally is worth
+   * @param t the language of the check
    */
-  public static Ending run(StudentLink link, Duration max, int points) {
+  public static Ending run(StudentLink link, Duration max, int points, Texts t) {
     ProgramResult r = link.runProgram(max);
-    String name = "program ends";
+    String name = t.get("program.name");
     Check c =
         switch (r) {
-          case FINISHED -> Check.pass(name, points, "your program returned");
-          case TIMED_OUT ->
-              Check.fail(
-                  name,
-                  points,
-                  "your program was still running after "
-                      + max.toSeconds()
-                      + " s of robot time: does one of your wait loops never end (a condition"
-                      + " that never becomes true)?");
-          case STUCK ->
-              Check.fail(
-                  name,
-                  points,
-                  "your program kept the computer busy without ever waiting on the robot's clock,"
-                      + " so simulated time could not pass: wait with"
-                      + " robot.getClock().sleepMillis(50) inside every loop (never busy-wait or"
-                      + " Thread.sleep)");
-          case FAILED -> Check.fail(name, points, "your program threw " + link.programFailure());
+          case FINISHED -> Check.pass(name, points, t.get("program.finished"));
+          case TIMED_OUT -> Check.fail(name, points, t.get("program.timedOut", max.toSeconds()));
+          case STUCK -> Check.fail(name, points, t.get("program.stuck"));
+          case FAILED -> Check.fail(name, points, t.get("program.failed", link.programFailure()));
         };
     return new Ending(r, c);
   }

@@ -60,11 +60,6 @@ public final class SolutionFinder {
     if (!fits.isEmpty()) {
       return fits.get(0);
     }
-    throw new Solutions.SolutionException(
-        "none of your classes "
-            + seen
-            + " is a solution: the assignment needs "
-            + a.solutionShape(),
-        null);
+    throw new Solutions.SolutionException(null, "setup.noSolution." + a.id(), seen.toString());
   }
 }

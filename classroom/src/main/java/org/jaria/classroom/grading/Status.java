@@ -12,6 +12,8 @@ public enum Status {
   OUT_OF_MEMORY,
   /** It started more threads or processes than allowed. */
   TOO_MANY_THREADS,
+  /** It wrote more files into its scratch folder than allowed; it was stopped. */
+  TOO_MANY_FILES,
   /** It called System.exit, which ended its Java machine before grading was done. */
   EXIT,
   /** Its Java machine ended in any other way before grading was done. */
@@ -49,6 +51,12 @@ public enum Status {
                   + " propios, el robot ya ejecuta tu código en su ciclo."
               : "Your program started more threads or processes than allowed: you need no"
                   + " threads of your own, the robot already runs your code on its cycle.";
+      case TOO_MANY_FILES ->
+          es
+              ? "Tu programa creó más archivos de los permitidos y se detuvo: un programa del robot"
+                  + " no necesita escribir archivos; si guardas datos, usa uno solo."
+              : "Your program created more files than allowed and was stopped: a robot program"
+                  + " needs to write no files; if you log data, use a single file.";
       case EXIT ->
           es
               ? "Tu programa llamó a System.exit, que termina todo el programa Java (robot"

@@ -8,7 +8,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.ReentrantLock;
 import org.jaria.classroom.grading.Assignment;
 import org.jaria.classroom.grading.Programs;
@@ -31,14 +30,6 @@ import org.jaria.robot.ArRobot;
  */
 public final class StudentHarness {
 
-  /** Program states as sent in a STATE frame. */
-  static final int NONE = 0;
-
-  static final int RUNNING = 1;
-  static final int FINISHED = 2;
-  static final int FAILED = 3;
-  static final int STUCK = 4;
-
   private final Assignment assignment;
   private final ClassLoader loader;
   private final List<String> classNames;
@@ -49,18 +40,12 @@ public final class StudentHarness {
   private final List<PipeConnection> ends = new ArrayList<>();
   private final Map<String, PipeConnection> devices = new LinkedHashMap<>();
   private final byte[] buf = new byte[1 << 16];
-  private final AtomicBoolean finished = new AtomicBoolean();
   private ArRobot robot;
   private StudentSide side;
   private Class<?> solution;
-  private Programs.Body program;
-  private Thread programThread;
-  private volatile Throwable failure;
-  private int programState = NONE;
-  private String message = "";
+  private final StudentProgram program = new StudentProgram(clock);
   private long lastCycleNanos;
   private volatile boolean ended;
-  private java.util.function.Consumer<OutOfMemoryError> onResourceError = e -> {};
 
   /**
    * A harness for {@code assignment} over the grader's streams, with the student's classes (named
@@ -84,7 +69,7 @@ public final class StudentHarness {
    * the grader names it; in a shared JVM nothing is done).
    */
   public void onResourceError(java.util.function.Consumer<OutOfMemoryError> action) {
-    onResourceError = action;
+    program.onResourceError(action);
   }
 
   /** Whether the grader ended the link normally (END answered). */
@@ -131,15 +116,15 @@ public final class StudentHarness {
         case Frames.SET_UP -> reply(setUp());
         case Frames.CALL -> reply(call(Frames.readString(in)));
         case Frames.PROGRAM -> {
-          startProgram();
+          program.start(robot);
           state();
         }
         case Frames.STOP -> {
-          stopProgram();
+          program.stop();
           reply("");
         }
         case Frames.END -> {
-          stopProgram();
+          program.stop();
           ended = true;
           writeLock.lock();
           try {
@@ -188,8 +173,8 @@ public final class StudentHarness {
     }
     clock.advanceTo(now);
     cycle();
-    if (programState == RUNNING) {
-      awaitProgram();
+    if (program.state() == StudentProgram.RUNNING) {
+      program.await();
     }
     state();
   }
@@ -211,16 +196,17 @@ public final class StudentHarness {
     try {
       solution = SolutionFinder.find(assignment, loader, classNames);
     } catch (Solutions.SolutionException e) {
-      return "solution found\t" + e.getMessage();
+      return Solutions.setUpAnswer("setup.found.name", e.key(), e.args());
     }
     try {
       side = assignment.studentSide();
       side.setUp(context());
       return "";
     } catch (Solutions.SolutionException e) {
-      return "solution can be created\t" + e.getMessage();
+      return Solutions.setUpAnswer("setup.created.name", e.key(), e.args());
     } catch (RuntimeException | LinkageError e) {
-      return "solution can be created\tsetting up your solution failed: " + Solutions.describe(e);
+      return Solutions.setUpAnswer(
+          "setup.created.name", "setup.failed", List.of(Solutions.describe(e)));
     }
   }
 
@@ -256,84 +242,14 @@ public final class StudentHarness {
 
       @Override
       public void setProgram(Programs.Body body) {
-        program = body;
+        program.set(body);
       }
     };
   }
 
-  private void startProgram() {
-    if (program == null) {
-      failure = null;
-      programState = FINISHED;
-      return;
-    }
-    finished.set(false);
-    failure = null;
-    Programs.Body body = program;
-    Thread t =
-        new Thread(
-            () -> {
-              try {
-                body.run(robot);
-              } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-              } catch (OutOfMemoryError e) {
-                failure = e;
-                onResourceError.accept(e);
-              } catch (RuntimeException | Error e) {
-                failure = e;
-                System.err.println("your program threw " + Solutions.describe(e));
-              } finally {
-                finished.set(true);
-                clock.wakeWatchers(); // hand control back at once
-              }
-            },
-            "program-" + robot.getName());
-    t.setDaemon(true);
-    programThread = t;
-    programState = RUNNING;
-    t.start();
-    awaitProgram();
-  }
-
-  /** Waits until the program waits on the clock, ends, or is stuck. */
-  private void awaitProgram() {
-    boolean waiting;
-    try {
-      waiting = clock.awaitWaiters(1, Programs.STUCK_AFTER, finished::get);
-    } catch (InterruptedException e) {
-      Thread.currentThread().interrupt();
-      waiting = false;
-    }
-    if (finished.get()) {
-      joinQuietly(programThread);
-      Throwable f = failure;
-      programState = f == null ? FINISHED : FAILED;
-      message = f == null ? "" : Solutions.describe(f);
-    } else if (!waiting) {
-      programState = STUCK;
-      programThread.interrupt();
-    }
-  }
-
-  private static void joinQuietly(Thread t) {
-    try {
-      t.join(Programs.STUCK_AFTER.toMillis());
-    } catch (InterruptedException e) {
-      Thread.currentThread().interrupt();
-    }
-  }
-
-  private void stopProgram() {
-    if (programState == RUNNING && programThread != null) {
-      programThread.interrupt();
-      programState = NONE;
-    }
-  }
-
   private void state() throws IOException {
     int flags = 0;
-    String msg = message;
+    String msg = program.message();
     if (robot != null) {
       flags = (robot.isConnecting() ? 1 : 0) | (robot.isConnected() ? 2 : 0);
       if (!robot.isConnecting() && !robot.isConnected()) {
@@ -343,7 +259,7 @@ public final class StudentHarness {
     writeLock.lock();
     try {
       out.writeByte(Frames.STATE);
-      out.writeByte(programState);
+      out.writeByte(program.state());
       out.writeByte(flags);
       Frames.writeString(out, msg);
       for (PipeConnection end : ends) {

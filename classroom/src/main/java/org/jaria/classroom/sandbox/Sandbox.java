@@ -25,16 +25,20 @@ public final class Sandbox {
   /** The user ids the sandboxed JVMs run as when the grader is root: BASE_UID + slot. */
   public static final int BASE_UID = 64000;
 
-  private static final Path BWRAP = Path.of("/usr/bin/bwrap");
+  /** Where bubblewrap is looked for unless the teacher says otherwise ({@code --bwrap}). */
+  public static final Path DEFAULT_BWRAP = Path.of("/usr/bin/bwrap");
+
   private static final Path SETPRIV = Path.of("/usr/bin/setpriv");
   private static final Path PRLIMIT = Path.of("/usr/bin/prlimit");
 
   private final boolean isolated;
   private final boolean root;
+  private final Path bwrap;
 
-  private Sandbox(boolean isolated, boolean root) {
+  private Sandbox(boolean isolated, boolean root, Path bwrap) {
     this.isolated = isolated;
     this.root = root;
+    this.bwrap = bwrap;
   }
 
   /**
@@ -43,21 +47,30 @@ public final class Sandbox {
    * @throws IllegalStateException saying what to install or allow, if there is none
    */
   public static Sandbox bubblewrap() {
-    Optional<String> why = whyUnavailable();
+    return bubblewrap(DEFAULT_BWRAP);
+  }
+
+  /**
+   * The sandbox made with the bubblewrap program at {@code bwrap}.
+   *
+   * @throws IllegalStateException saying what to install or allow, if it cannot isolate
+   */
+  public static Sandbox bubblewrap(Path bwrap) {
+    Optional<String> why = whyUnavailable(bwrap);
     if (why.isPresent()) {
       throw new IllegalStateException(why.get());
     }
-    return new Sandbox(true, isRoot());
+    return new Sandbox(true, isRoot(), bwrap);
   }
 
   /** A sandbox as it would be with or without root (for tests of the command it builds). */
   static Sandbox of(boolean isolated, boolean root) {
-    return new Sandbox(isolated, root);
+    return new Sandbox(isolated, root, DEFAULT_BWRAP);
   }
 
   /** No isolation at all: the student's JVM runs as the grader's user, with only its JVM limits. */
   public static Sandbox none() {
-    return new Sandbox(false, false);
+    return new Sandbox(false, false, DEFAULT_BWRAP);
   }
 
   /** Whether student JVMs are contained. */
@@ -67,12 +80,17 @@ public final class Sandbox {
 
   /** Why bubblewrap cannot be used here, or empty if it can. */
   public static Optional<String> whyUnavailable() {
+    return whyUnavailable(DEFAULT_BWRAP);
+  }
+
+  /** Why the bubblewrap program at {@code bwrap} cannot be used here, or empty if it can. */
+  public static Optional<String> whyUnavailable(Path bwrap) {
     if (!System.getProperty("os.name", "").toLowerCase(java.util.Locale.ROOT).contains("linux")) {
       return Optional.of(
           "isolating submissions needs Linux with bubblewrap; on this system grade only with"
               + " --unsafe, on code you trust");
     }
-    for (Path p : List.of(BWRAP, PRLIMIT)) {
+    for (Path p : List.of(bwrap, PRLIMIT)) {
       if (!Files.isExecutable(p)) {
         return Optional.of(
             p
@@ -86,7 +104,7 @@ public final class Sandbox {
     try {
       Process p =
           new ProcessBuilder(
-                  BWRAP.toString(),
+                  bwrap.toString(),
                   "--ro-bind",
                   "/",
                   "/",
@@ -191,7 +209,7 @@ public final class Sandbox {
     cmd.add("--");
     cmd.addAll(
         List.of(
-            BWRAP.toString(),
+            bwrap.toString(),
             "--die-with-parent",
             "--new-session",
             "--unshare-pid",

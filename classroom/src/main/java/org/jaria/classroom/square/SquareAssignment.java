@@ -8,12 +8,14 @@ import java.util.Optional;
 import org.jaria.classroom.RobotProgram;
 import org.jaria.classroom.grading.Assignment;
 import org.jaria.classroom.grading.Check;
+import org.jaria.classroom.grading.FirstStep;
 import org.jaria.classroom.grading.Fmt;
 import org.jaria.classroom.grading.Grade;
 import org.jaria.classroom.grading.Grading;
 import org.jaria.classroom.grading.PoseTrace;
 import org.jaria.classroom.grading.Programs;
 import org.jaria.classroom.grading.Solutions;
+import org.jaria.classroom.grading.Texts;
 import org.jaria.classroom.link.StudentContext;
 import org.jaria.classroom.link.StudentLink;
 import org.jaria.classroom.link.StudentSide;
@@ -100,58 +102,38 @@ public final class SquareAssignment implements Assignment {
   }
 
   @Override
-  public Grade grade(StudentStreams student) {
+  public Grade grade(StudentStreams student, Texts t) {
     try (SimWorld world = SimWorld.empty(SimOptions.builder().seed(1).build())) {
       SimRobot r = world.addRobot(RobotOptions.of("p3dx-sh").withStartPose(START));
       try (StudentLink sim = StudentLink.connect(world, r, student, Map.of());
           PoseTrace trace = new PoseTrace(world, r)) {
         Optional<String> failed = sim.setUp();
         if (failed.isPresent()) {
-          return Grading.setUpFailure(this, failed.get());
+          return Grading.setUpFailure(this, failed.get(), t);
         }
         List<Check> checks = new ArrayList<>();
-        Programs.Ending end = Programs.run(sim, MAX_TIME, 1);
+        Programs.Ending end = Programs.run(sim, MAX_TIME, 1, t);
         checks.add(end.check());
         sim.runMillis(2000); // a program that returns while moving keeps moving
-        List<Check> corners = corners(trace);
+        List<Check> corners = corners(trace, t);
         checks.addAll(corners);
-        checks.add(stopped(r));
+        checks.add(stopped(r, t));
         String actions = sim.call("actions");
         checks.add(
             Check.of(
-                "motion commands only",
+                t.get("square.motion.name"),
                 1,
                 actions.equals("0"),
-                "no actions were added",
-                "you added actions ("
-                    + actions
-                    + "); this assignment is about motion commands: use robot.move(mm) and"
-                    + " robot.setDeltaHeading(deg) and wait for isMoveDone()/isHeadingDone()"));
-        return new Grade(id(), corners.get(0).passed() ? checks : notEarned(checks));
+                t.get("square.motion.ok"),
+                t.get("square.motion.actions", actions)));
+        return new Grade(
+            id(), FirstStep.gate(checks, corners.get(0).passed(), t.get("step.square"), t));
       }
     }
   }
 
-  /**
-   * The checks of a robot that never reached the first corner: ending cleanly, standing still and
-   * using motion commands are worth nothing if it never drove, so an empty program earns 0.
-   */
-  private static List<Check> notEarned(List<Check> checks) {
-    List<Check> out = new ArrayList<>();
-    for (Check c : checks) {
-      out.add(
-          c.passed()
-              ? Check.fail(
-                  c.name(),
-                  c.points(),
-                  c.message() + ", but this earns nothing while the robot never reaches corner 1")
-              : c);
-    }
-    return out;
-  }
-
   /** The three corners and the return to the start, in order. */
-  private static List<Check> corners(PoseTrace trace) {
+  private static List<Check> corners(PoseTrace trace, Texts t) {
     double[][] corner = {{0, 0}, {SIDE, 0}, {SIDE, SIDE}, {0, SIDE}, {0, 0}};
     List<Check> checks = new ArrayList<>();
     int from = 0;
@@ -159,17 +141,11 @@ public final class SquareAssignment implements Assignment {
     for (int k = 1; k <= 4; k++) {
       double cx = corner[k][0];
       double cy = corner[k][1];
-      String name = k < 4 ? "corner " + k + " reached" : "back at the start";
+      String name = k < 4 ? t.get("square.corner.name", k) : t.get("square.back.name");
       // the corner must be reached after leaving the previous one (the start counts once left)
       int leave = k == 4 ? firstFarFrom(trace, 0, 0, 2 * TOLERANCE, from) : from;
       if (leave < 0) {
-        checks.add(
-            Check.fail(
-                name,
-                1,
-                "your robot never drove more than "
-                    + Fmt.dist(2 * TOLERANCE)
-                    + " away from where it started, so it cannot have driven the square"));
+        checks.add(Check.fail(name, 1, t.get("square.neverLeft", Fmt.dist(2 * TOLERANCE))));
         continue;
       }
       int at = trace.firstWithin(cx, cy, TOLERANCE, leave);
@@ -179,26 +155,21 @@ public final class SquareAssignment implements Assignment {
             Check.pass(
                 name,
                 k < 4 ? 2 : 1,
-                "passed within "
-                    + Fmt.dist(trace.distance(closest, cx, cy))
-                    + " of "
-                    + Fmt.xy(cx, cy)
-                    + " at "
-                    + Fmt.seconds(trace.t(closest))));
+                t.get(
+                    "square.passed",
+                    Fmt.dist(trace.distance(closest, cx, cy)),
+                    Fmt.xy(cx, cy),
+                    Fmt.seconds(trace.t(closest)))));
         from = closest;
         continue;
       }
       if (missedOne > 0) {
-        checks.add(
-            Check.fail(
-                name,
-                k < 4 ? 2 : 1,
-                "your robot did not get this far: fix corner " + missedOne + " first"));
+        checks.add(Check.fail(name, k < 4 ? 2 : 1, t.get("square.fixFirst", missedOne)));
         continue;
       }
       missedOne = k;
       checks.add(
-          Check.fail(name, k < 4 ? 2 : 1, missed(trace, k, corner[k - 1], corner[k], leave)));
+          Check.fail(name, k < 4 ? 2 : 1, missed(trace, k, corner[k - 1], corner[k], leave, t)));
     }
     return checks;
   }
@@ -224,8 +195,12 @@ public final class SquareAssignment implements Assignment {
   }
 
   /** Why the robot missed corner {@code k}, in words a student can act on. */
-  private static String missed(PoseTrace trace, int k, double[] prev, double[] target, int from) {
-    String what = k < 4 ? "corner " + k + " " + Fmt.xy(target[0], target[1]) : "the start (0, 0)";
+  private static String missed(
+      PoseTrace trace, int k, double[] prev, double[] target, int from, Texts t) {
+    String what =
+        k < 4
+            ? t.get("square.corner.what", k, Fmt.xy(target[0], target[1]))
+            : t.get("square.start.what");
     int i = trace.closestTo(target[0], target[1], from);
     double px = trace.x(i);
     double py = trace.y(i);
@@ -234,46 +209,30 @@ public final class SquareAssignment implements Assignment {
     double uy = (target[1] - prev[1]) / SIDE;
     double along = (px - prev[0]) * ux + (py - prev[1]) * uy;
     double aside = -(px - prev[0]) * uy + (py - prev[1]) * ux;
-    StringBuilder sb = new StringBuilder("your robot never came within ");
-    sb.append(Fmt.dist(TOLERANCE)).append(" of ").append(what).append("; ");
+    StringBuilder sb = new StringBuilder(t.get("square.missed", Fmt.dist(TOLERANCE), what));
     boolean wentRight =
         k > 1 && k < 4 && trace.firstWithin(target[0], -target[1], 2 * TOLERANCE, from) >= 0;
     if (wentRight) {
-      sb.append("it went to ").append(Fmt.xy(target[0], -target[1]));
-      sb.append(" instead: it turned right. The square goes counter-clockwise: turn left,");
-      sb.append(" robot.setDeltaHeading(90), and wait until robot.isHeadingDone()");
+      sb.append(t.get("square.wentRight", Fmt.xy(target[0], -target[1])));
     } else if (Math.abs(aside) < 300 && along < 100 && along > -300 && k > 1) {
-      sb.append("it never drove the side from corner ").append(k - 1).append(": after it, turn");
-      sb.append(" 90 degrees left (robot.setDeltaHeading(90)), wait until robot.isHeadingDone(),");
-      sb.append(" and drive the next ").append(Fmt.dist(SIDE));
+      sb.append(t.get("square.noSide", k - 1, Fmt.dist(SIDE)));
     } else if (Math.abs(aside) < 300 && along < SIDE && along > -300) {
-      sb.append("it stopped ").append(Fmt.dist(SIDE - along)).append(" short of it, at ");
-      sb.append(Fmt.xy(px, py)).append(". Does every side drive the full ");
-      sb.append(Fmt.dist(SIDE)).append(" and wait until robot.isMoveDone()?");
+      sb.append(t.get("square.short", Fmt.dist(SIDE - along), Fmt.xy(px, py), Fmt.dist(SIDE)));
     } else if (Math.abs(aside) < 300 && along >= SIDE) {
-      sb.append("it drove ").append(Fmt.dist(along - SIDE)).append(" past it, to ");
-      sb.append(Fmt.xy(px, py)).append(": is a side longer than ").append(Fmt.dist(SIDE));
-      sb.append(", or did it turn too late?");
+      sb.append(t.get("square.past", Fmt.dist(along - SIDE), Fmt.xy(px, py), Fmt.dist(SIDE)));
     } else {
-      sb.append("the closest it came was ").append(Fmt.dist(d)).append(", at ");
-      sb.append(Fmt.xy(px, py)).append(". Check your turns: each is 90 degrees to the left,");
-      sb.append(" and the robot must finish turning (isHeadingDone) before it drives");
+      sb.append(t.get("square.closest", Fmt.dist(d), Fmt.xy(px, py)));
     }
     return sb.toString();
   }
 
-  private static Check stopped(SimRobot r) {
+  private static Check stopped(SimRobot r, Texts t) {
     double v = r.getVel();
     return Check.of(
-        "stops at the end",
+        t.get("square.stops.name"),
         1,
         Math.abs(v) < 20 && Math.abs(r.getRotVel()) < 5,
-        "the robot was standing still after your program ended",
-        "your robot was still moving ("
-            + Fmt.num(v, 0)
-            + " mm/s, "
-            + Fmt.num(r.getRotVel(), 0)
-            + " deg/s) two seconds after your program ended: wait for robot.isMoveDone() on the"
-            + " last side, or call robot.stop(), before returning");
+        t.get("square.stops.ok"),
+        t.get("square.stops.moving", Fmt.num(v, 0), Fmt.num(r.getRotVel(), 0)));
   }
 }

@@ -7,12 +7,14 @@ import java.util.Optional;
 import org.jaria.action.ArAction;
 import org.jaria.classroom.grading.Assignment;
 import org.jaria.classroom.grading.Check;
+import org.jaria.classroom.grading.FirstStep;
 import org.jaria.classroom.grading.Fmt;
 import org.jaria.classroom.grading.Grade;
 import org.jaria.classroom.grading.Grading;
 import org.jaria.classroom.grading.GuardedAction;
 import org.jaria.classroom.grading.PoseTrace;
 import org.jaria.classroom.grading.Solutions;
+import org.jaria.classroom.grading.Texts;
 import org.jaria.classroom.link.StudentContext;
 import org.jaria.classroom.link.StudentLink;
 import org.jaria.classroom.link.StudentSide;
@@ -116,34 +118,36 @@ public final class WallAssignment implements Assignment {
   }
 
   @Override
-  public Grade grade(StudentStreams student) {
+  public Grade grade(StudentStreams student, Texts t) {
     try (SimWorld world = SimWorld.ofLines(WALLS, START, SimOptions.builder().seed(3).build())) {
       SimRobot r = world.addRobot(RobotOptions.of("p3dx-sh").withStartPose(START));
       try (StudentLink sim = StudentLink.connect(world, r, student, Map.of());
           PoseTrace trace = new PoseTrace(world, r)) {
         Optional<String> failed = sim.setUp();
         if (failed.isPresent()) {
-          return Grading.setUpFailure(this, failed.get());
+          return Grading.setUpFailure(this, failed.get(), t);
         }
         sim.runMillis(SECONDS * 1000L);
         List<Check> checks = new ArrayList<>();
-        checks.add(GuardedAction.check(1, sim.call("fire")));
+        checks.add(GuardedAction.check(1, sim.call("fire"), t));
         double progress = progress(trace.x(trace.size() - 1), trace.y(trace.size() - 1));
-        checks.add(alongFirst(progress, trace));
-        checks.add(aroundCorner(progress, trace));
-        checks.add(distanceKept(trace));
+        checks.add(alongFirst(progress, trace, t));
+        Check corner = aroundCorner(progress, trace, t);
+        checks.add(corner);
+        checks.add(distanceKept(trace, t));
         checks.add(
             Check.of(
-                "no collisions",
+                t.get("collisions.name"),
                 2,
                 !trace.everStalled(),
-                "the robot never touched a wall",
-                "your robot ran into something at "
-                    + trace.firstStallWhere()
-                    + " after "
-                    + Fmt.seconds(trace.firstStallSeconds())
-                    + ": slow down or turn away when a sonar reading gets short"));
-        return new Grade(id(), checks);
+                t.get("collisions.none"),
+                t.get(
+                    "wall.collision",
+                    trace.firstStallWhere(),
+                    Fmt.seconds(trace.firstStallSeconds()))));
+        // Driving straight on along the first wall (what the starter does) keeps the distance and
+        // gets far along it without following anything: only turning the corner shows following.
+        return new Grade(id(), FirstStep.gate(checks, corner.passed(), t.get("step.wall"), t));
       }
     }
   }
@@ -157,62 +161,48 @@ public final class WallAssignment implements Assignment {
     return d1 <= d2 ? t1 : FIRST_LEG + t2;
   }
 
-  private static Check alongFirst(double progress, PoseTrace trace) {
-    String name = "drives along the wall";
+  private static Check alongFirst(double progress, PoseTrace trace, Texts t) {
+    String name = t.get("wall.along.name");
     if (progress >= ALONG_FIRST) {
-      return Check.pass(name, 2, "got " + Fmt.dist(progress) + " along the course");
+      return Check.pass(name, 2, t.get("wall.along.ok", Fmt.dist(progress)));
     }
     double moved = trace.distance(trace.size() - 1, START.x(), START.y());
     if (moved < 300) {
-      return Check.fail(
-          name,
-          2,
-          "your robot hardly moved ("
-              + Fmt.dist(moved)
-              + " in "
-              + SECONDS
-              + " s): does fire() return a desire with a forward velocity (desired.setVel(300))?");
+      return Check.fail(name, 2, t.get("wall.along.hardlyMoved", Fmt.dist(moved), SECONDS));
     }
     return Check.fail(
         name,
         2,
-        "your robot got only "
-            + Fmt.dist(progress)
-            + " along the wall in "
-            + SECONDS
-            + " s (it needs "
-            + Fmt.dist(ALONG_FIRST)
-            + "); it ended at "
-            + Fmt.xy(trace.x(trace.size() - 1), trace.y(trace.size() - 1))
-            + ": keep driving forward at 200 to 400 mm/s while you steer");
+        t.get(
+            "wall.along.short",
+            Fmt.dist(progress),
+            SECONDS,
+            Fmt.dist(ALONG_FIRST),
+            Fmt.xy(trace.x(trace.size() - 1), trace.y(trace.size() - 1))));
   }
 
-  private static Check aroundCorner(double progress, PoseTrace trace) {
-    String name = "turns the corner";
+  private static Check aroundCorner(double progress, PoseTrace trace, Texts t) {
+    String name = t.get("wall.corner.name");
     if (progress >= AROUND_CORNER) {
-      return Check.pass(
-          name, 2, "went round the corner and " + Fmt.dist(progress - FIRST_LEG) + " on");
+      return Check.pass(name, 2, t.get("wall.corner.ok", Fmt.dist(progress - FIRST_LEG)));
     }
     String hint =
         trace.everStalled() && trace.firstStallSeconds() > 0
-            ? " It hit a wall at " + trace.firstStallWhere() + "."
+            ? t.get("wall.corner.hitAt", trace.firstStallWhere())
             : "";
     return Check.fail(
         name,
         2,
-        "your robot did not get "
-            + Fmt.dist(AROUND_CORNER - FIRST_LEG)
-            + " along the second wall after the corner at ("
-            + Fmt.num(CORNER_X + 600, 0)
-            + ", 0)."
-            + hint
-            + " When the wall ahead gets close (robot.checkRangeDevicesCurrentPolar(-20, 20)),"
-            + " turn left until it is on your right again");
+        t.get(
+            "wall.corner.failed",
+            Fmt.dist(AROUND_CORNER - FIRST_LEG),
+            Fmt.num(CORNER_X + 600, 0),
+            hint));
   }
 
   /** The share of samples away from the corner where the robot kept its distance. */
-  private static Check distanceKept(PoseTrace trace) {
-    String name = "keeps " + Fmt.dist(NEAR) + " to " + Fmt.dist(FAR) + " from the wall";
+  private static Check distanceKept(PoseTrace trace, Texts t) {
+    String name = t.get("wall.kept.name", Fmt.dist(NEAR), Fmt.dist(FAR));
     int counted = 0;
     int kept = 0;
     double nearest = Double.POSITIVE_INFINITY;
@@ -240,37 +230,23 @@ public final class WallAssignment implements Assignment {
       }
     }
     if (counted < 100) {
-      return Check.fail(
-          name, 3, "your robot did not drive far enough along the wall to measure its distance");
+      return Check.fail(name, 3, t.get("wall.kept.tooShort"));
     }
     double share = (double) kept / counted;
     String detail =
-        "it was within "
-            + Fmt.dist(NEAR)
-            + " to "
-            + Fmt.dist(FAR)
-            + " of the wall "
-            + Fmt.num(100 * share, 0)
-            + "% of the time; closest "
-            + Fmt.dist(nearest)
-            + " at "
-            + Fmt.xy(trace.x(nearestAt), trace.y(nearestAt))
-            + ", farthest "
-            + Fmt.dist(farthest)
-            + " at "
-            + Fmt.xy(trace.x(farthestAt), trace.y(farthestAt));
+        t.get(
+            "wall.kept.detail",
+            Fmt.dist(NEAR),
+            Fmt.dist(FAR),
+            Fmt.num(100 * share, 0),
+            Fmt.dist(nearest),
+            Fmt.xy(trace.x(nearestAt), trace.y(nearestAt)),
+            Fmt.dist(farthest),
+            Fmt.xy(trace.x(farthestAt), trace.y(farthestAt)));
     if (share >= KEEP_SHARE) {
       return Check.pass(name, 3, detail);
     }
-    return Check.fail(
-        name,
-        3,
-        detail
-            + " (needs "
-            + Fmt.num(100 * KEEP_SHARE, 0)
-            + "%). Steer by the right-hand sonar (robot.checkRangeDevicesCurrentPolar(-100, -60)):"
-            + " turn towards the wall when it is too far and away when too close, gently, so the"
-            + " robot does not zig-zag");
+    return Check.fail(name, 3, t.get("wall.kept.failed", detail, Fmt.num(100 * KEEP_SHARE, 0)));
   }
 
   /** Distance from (x, y) to the nearest wall of the course, mm. */

@@ -35,6 +35,30 @@ class BallAssignmentTest {
             .orElseThrow();
     assertFalse(approach.passed());
     assertTrue(approach.message().contains("desired.setVel(200)"), approach.message());
+    // a robot that never moves "stops when the ball is gone" and touches nothing: worth nothing
+    assertEquals(0, g.score(), g.describe());
+  }
+
+  @Test
+  void anActionThatDoesNothingEarnsNothing(@TempDir Path work) throws IOException {
+    Grade g =
+        Kit.gradeSource(
+            ball,
+            "BallFollower.java",
+            """
+            import org.jaria.action.ArAction;
+            import org.jaria.action.ArActionDesired;
+            import org.jaria.acts.ArACTS_1_2;
+            public class BallFollower extends ArAction {
+              public BallFollower(ArACTS_1_2 acts) { super("ball"); }
+              public ArActionDesired fire(ArActionDesired current) {
+                return new ArActionDesired();
+              }
+            }
+            """,
+            work);
+    assertEquals(0, g.score(), g.describe());
+    assertEquals(ball.points(), g.maxScore(), g.describe());
   }
 
   @Test

@@ -35,5 +35,29 @@ class GoalsAssignmentTest {
             .orElseThrow();
     assertFalse(first.passed(), g.describe());
     assertTrue(first.message().contains("wait until path.isActive() is false"), first.message());
+    // its program ends and the robot touches nothing, which earns nothing without the first goal
+    assertEquals(0, g.score(), g.describe());
+  }
+
+  @Test
+  void aProgramThatDoesNothingEarnsNothing(@TempDir Path work) throws IOException {
+    Grade g =
+        Kit.gradeSource(
+            goals,
+            "GoalTour.java",
+            """
+            import java.util.List;
+            import org.jaria.arnl.ArPathPlanningTask;
+            import org.jaria.classroom.NavigationProgram;
+            import org.jaria.robot.ArRobot;
+            public class GoalTour implements NavigationProgram {
+              public void run(ArRobot robot, ArPathPlanningTask path, List<String> goals) {}
+            }
+            """,
+            work);
+    assertEquals(0, g.score(), g.describe());
+    Check ends = g.checks().get(0);
+    assertEquals("program ends", ends.name());
+    assertTrue(ends.message().contains("earns nothing until the robot stops at"), ends.message());
   }
 }

@@ -192,6 +192,13 @@ class GradeAttackTest {
         "Sleeper.java",
         "public class Sleeper { public static void main(String[] a) throws Exception {"
             + " Thread.sleep(90_000); } }");
+    // many small files, each far below the file-size limit
+    write(
+        "hoarder",
+        "Square.java",
+        run(
+            "    for (int i = 0; i < 20000; i++) { Files.writeString(Path.of(\"/sandbox/tmp/f\" +"
+                + " i), \"x\"); }\n    System.out.println(\"wrote them all\");"));
     // a link to a classmate's file is not copied: the submission is empty
     Files.createDirectories(subs.resolve("linker"));
     Files.createSymbolicLink(
@@ -217,8 +224,8 @@ class GradeAttackTest {
             subs.toString());
     stdout = o.toString();
     assertEquals(0, exit, e.toString());
-    for (Path dir : Grader.submissions(subs)) {
-      String name = Grader.studentOf(dir);
+    for (Path dir : SubmissionFolders.submissions(subs)) {
+      String name = SubmissionFolders.studentOf(dir);
       byStudent.put(name, ResultFiles.read(out.resolve("students").resolve(name), name));
     }
   }
@@ -289,6 +296,7 @@ class GradeAttackTest {
             Map.entry("spin", Status.TIMEOUT),
             Map.entry("allocate", Status.OUT_OF_MEMORY),
             Map.entry("exit", Status.EXIT),
+            Map.entry("hoarder", Status.TOO_MANY_FILES),
             Map.entry("linker", Status.COMPILE_ERROR));
     for (var e : expected.entrySet()) {
       Grader.Result r = result(e.getKey());
@@ -361,6 +369,6 @@ class GradeAttackTest {
     assertTrue(
         Files.exists(out.resolve("students/spin/grade.txt")),
         "a timed-out student has a grade file");
-    assertTrue(stdout.contains("[15/15]"), stdout);
+    assertTrue(stdout.contains("[16/16]"), stdout);
   }
 }

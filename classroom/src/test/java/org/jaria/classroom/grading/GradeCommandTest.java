@@ -1,6 +1,7 @@
 package org.jaria.classroom.grading;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -125,18 +126,44 @@ class GradeCommandTest {
     String feedback = Files.readString(out.resolve("students/bob/feedback.txt"));
     assertTrue(feedback.contains("Nota: 10/10"), feedback);
     assertTrue(feedback.contains("Tu programa se ejecutó"), feedback);
+    // the checks too are in Spanish
+    assertTrue(feedback.contains("esquina 1 alcanzada"), feedback);
+    assertFalse(feedback.contains("corner 1 reached"), feedback);
     assertTrue(Files.readString(out.resolve("report.md")).contains("| Estudiante | Nota |"));
+  }
+
+  @Test
+  void withoutBubblewrapItRefusesToGradeAndWritesNothing(@TempDir Path tmp) throws IOException {
+    write(tmp.resolve("subs/alice"), "Square.java", kit("solution"));
+    Path out = tmp.resolve("report");
+    String missing = tmp.resolve("no-such-bwrap").toString();
+    Run r =
+        jaria(
+            "--assignment",
+            "square",
+            "--bwrap",
+            missing,
+            "-o",
+            out.toString(),
+            tmp.resolve("subs").toString());
+    assertEquals(2, r.exit(), r.out() + r.err());
+    assertTrue(r.err().contains(missing + " is missing"), r.err());
+    assertTrue(r.err().contains("Refusing to grade; --unsafe grades anyway"), r.err());
+    assertFalse(Files.exists(out), "nothing is graded, so no report folder");
   }
 
   @Test
   void unsafeGradingWarnsOnEveryReport(@TempDir Path tmp) throws IOException {
     write(tmp.resolve("subs/alice"), "Square.java", kit("solution"));
     Path out = tmp.resolve("report");
+    // --unsafe grades where bubblewrap is missing
     Run r =
         jaria(
             "--assignment",
             "square",
             "--unsafe",
+            "--bwrap",
+            tmp.resolve("no-such-bwrap").toString(),
             "-o",
             out.toString(),
             tmp.resolve("subs").toString());
@@ -167,7 +194,7 @@ class GradeCommandTest {
   @Test
   void aFolderOfJavaFilesIsOneSubmission(@TempDir Path tmp) throws IOException {
     write(tmp.resolve("mine"), "Square.java", kit("solution"));
-    assertEquals(List.of(tmp.resolve("mine")), Grader.submissions(tmp.resolve("mine")));
-    assertEquals(List.of(tmp.resolve("mine")), Grader.submissions(tmp));
+    assertEquals(List.of(tmp.resolve("mine")), SubmissionFolders.submissions(tmp.resolve("mine")));
+    assertEquals(List.of(tmp.resolve("mine")), SubmissionFolders.submissions(tmp));
   }
 }

@@ -25,7 +25,8 @@ class KitInSandboxTest {
     for (String id : List.of("wall", "goals", "ball")) {
       Assignment a = Assignments.byId(id);
       Path subs = tmp.resolve(id).resolve("subs");
-      Grader.copySources(Path.of("assignments", id, "solution"), subs.resolve("solution"));
+      SubmissionFolders.copySources(
+          Path.of("assignments", id, "solution"), subs.resolve("solution"));
       Grader grader =
           new Grader(
               a,

@@ -32,6 +32,31 @@ class WallAssignmentTest {
     assertFalse(corner.passed());
     assertTrue(corner.message().contains("turn left"), corner.message());
     assertFalse(find(g, "no collisions").passed(), g.describe());
+    // it drives straight along the first wall, keeping its distance without steering: that earns
+    // nothing until the robot turns the corner
+    assertEquals(0, g.score(), g.describe());
+    Check kept = g.checks().stream().filter(c -> c.name().startsWith("keeps")).findFirst().get();
+    assertTrue(
+        kept.message().contains("earns nothing until the robot turns the corner"), kept.message());
+  }
+
+  @Test
+  void anActionThatDoesNothingEarnsNothing(@TempDir Path work) throws IOException {
+    Grade g =
+        Kit.gradeSource(
+            wall,
+            "WallFollower.java",
+            """
+            import org.jaria.action.ArAction;
+            import org.jaria.action.ArActionDesired;
+            public class WallFollower extends ArAction {
+              public WallFollower() { super("wall follower"); }
+              public ArActionDesired fire(ArActionDesired current) { return null; }
+            }
+            """,
+            work);
+    assertEquals(0, g.score(), g.describe());
+    assertEquals(wall.points(), g.maxScore(), g.describe());
   }
 
   @Test
@@ -60,6 +85,7 @@ class WallAssignmentTest {
     assertTrue(c.message().contains("WallFollower.java:7"), c.message());
     Check along = find(g, "drives along the wall");
     assertTrue(along.message().contains("hardly moved"), along.message());
+    assertEquals(0, g.score(), g.describe());
   }
 
   @Test

@@ -1,0 +1,56 @@
+package org.jaria.classroom.sandbox;
+
+import java.io.IOException;
+import java.nio.file.FileVisitResult;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.SimpleFileVisitor;
+import java.nio.file.attribute.BasicFileAttributes;
+
+/**
+ * Counts what a student's scratch folder holds. The operating system limits the size of each file
+ * the student's JVM writes but not how many it makes, so the grader counts them while the JVM runs
+ * and once more when it has ended.
+ */
+public final class ScratchFiles {
+
+  private ScratchFiles() {}
+
+  /**
+   * Whether {@code dir} holds more than {@code max} files and folders (links and other entries
+   * included; the folder itself not). Stops counting as soon as it is over, so a folder with a
+   * million files costs no more than one with {@code max + 1}. A folder it may not read counts as
+   * one entry.
+   *
+   * @throws IOException if {@code dir} itself cannot be read
+   */
+  public static boolean over(Path dir, int max) throws IOException {
+    int[] n = {0};
+    Files.walkFileTree(
+        dir,
+        new SimpleFileVisitor<>() {
+          @Override
+          public FileVisitResult preVisitDirectory(Path d, BasicFileAttributes a) {
+            return count(d);
+          }
+
+          @Override
+          public FileVisitResult visitFile(Path f, BasicFileAttributes a) {
+            return count(f);
+          }
+
+          @Override
+          public FileVisitResult visitFileFailed(Path f, IOException e) {
+            return count(f);
+          }
+
+          private FileVisitResult count(Path p) {
+            if (!p.equals(dir)) {
+              n[0]++;
+            }
+            return n[0] > max ? FileVisitResult.TERMINATE : FileVisitResult.CONTINUE;
+          }
+        });
+    return n[0] > max;
+  }
+}
