@@ -49,7 +49,7 @@ import picocli.CommandLine.Spec;
       "Frame grabber drivers: JAria reads cameras through OpenCV (V4L2, DirectShow/MSMF,"
           + " AVFoundation as available); -G, -x, -n and -V are accepted for compatibility and"
           + " ignored.",
-      "Example: jaria acts -c actsconfig -f desk-scene.ppm -p 5001"
+      "Example: jaria acts -c actsconfig -f desk-scene -p 5001"
     })
 public final class ActsCommand implements Callable<Integer> {
 
@@ -68,7 +68,8 @@ public final class ActsCommand implements Callable<Integer> {
       names = "-f",
       paramLabel = "IMAGE",
       description =
-          "Use this image file (PPM, PNG, JPEG...) or folder of images instead of a camera.")
+          "Use this image file (PPM, PNG, JPEG...) or folder of images instead of a camera;"
+              + " desk-scene is the shipped tutorial image.")
   Path imageFile;
 
   @Option(names = "-G", paramLabel = "DRIVER", description = "Grabber driver (ignored: OpenCV).")
@@ -359,6 +360,13 @@ public final class ActsCommand implements Callable<Integer> {
       }
       if (Files.isDirectory(image)) {
         return ImageSequenceSource.ofDirectory(image, w, h, true);
+      }
+      if (org.jaria.acts.image.TestScene.isBundledName(image)) {
+        return new StillImageSource(
+            org.jaria.acts.image.TestScene.load(),
+            w,
+            h,
+            org.jaria.acts.image.TestScene.BUNDLED_NAME);
       }
       return StillImageSource.open(image, w, h);
     }

@@ -110,7 +110,23 @@ public final class GyroExample {
       return 1;
     }
     robot.comInt(ArCommands.ENABLE, 1);
+    // Space belongs to both the turn keys (stop a turn started with a motion command) and the
+    // keydrive action (zero its speeds): the action takes its keys, then space does both.
+    Runnable stopTurn = keyHandler.getKeyHandler(ArKeyHandler.SPACE);
+    keyHandler.remKeyHandler(ArKeyHandler.SPACE);
     robot.addAction(keydriveAct, 45);
+    Runnable keydriveSpace = keyHandler.getKeyHandler(ArKeyHandler.SPACE);
+    keyHandler.remKeyHandler(ArKeyHandler.SPACE);
+    keyHandler.addKeyHandler(
+        ArKeyHandler.SPACE,
+        () -> {
+          if (keydriveSpace != null) {
+            keydriveSpace.run();
+          }
+          if (stopTurn != null) {
+            stopTurn.run();
+          }
+        });
     keyHandler.attachKeyHandler(robot, true, () -> {});
     robot.runAsync(true);
     started.accept(robot);

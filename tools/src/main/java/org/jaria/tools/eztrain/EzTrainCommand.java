@@ -8,6 +8,7 @@ import java.util.concurrent.Callable;
 import javafx.stage.Stage;
 import org.jaria.acts.color.ChannelBank;
 import org.jaria.acts.config.ActsConfig;
+import org.jaria.acts.image.TestScene;
 import org.jaria.tools.fx.AppCommand;
 import org.jaria.tools.fx.AppEnvironment;
 import org.jaria.tools.fx.AppLauncher;
@@ -41,7 +42,8 @@ public final class EzTrainCommand implements Callable<Integer>, AppCommand {
   @Option(
       names = "-f",
       paramLabel = "IMAGE",
-      description = "Train on this image (PPM, PNG, JPEG...); default: the tutorial image.")
+      description =
+          "Train on this image (PPM, PNG, JPEG...); default: desk-scene, the tutorial image.")
   Path image;
 
   @Option(names = "-d", paramLabel = "DEVICE", description = "Start with live video from a camera.")
@@ -152,7 +154,7 @@ public final class EzTrainCommand implements Callable<Integer>, AppCommand {
       }
       return new EzTrainOptions(
           config,
-          image,
+          image == null || TestScene.isBundledName(image) ? null : image,
           device,
           noServer ? -1 : (port != null ? port : d.port()),
           w,

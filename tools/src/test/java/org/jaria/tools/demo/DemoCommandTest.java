@@ -3,15 +3,24 @@ package org.jaria.tools.demo;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import org.jaria.geom.ArPose;
+import org.jaria.range.ArSonarDevice;
+import org.jaria.robot.ArRobot;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
+import org.jaria.sim.client.SimulatedRobot;
 import org.jaria.testing.SocatPty;
 import org.jaria.tools.cli.JariaCli;
+import org.jaria.tools.examples.GotoActionExample;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
@@ -42,10 +51,74 @@ class DemoCommandTest {
     assertTrue(r.out().contains("Simulator: office map"), r.out());
     assertTrue(r.out().contains("t=  1s") && r.out().contains("t=  2s"), r.out());
     assertTrue(r.out().contains("true pose"), r.out());
+    assertTrue(r.out().contains("3 crates put in its way"), r.out());
+    assertTrue(r.out().contains("'pose' is where the robot believes it is"), r.out());
+    assertTrue(r.out().contains("Stops by itself after 2 s"), r.out());
     assertTrue(
         Thread.getAllStackTraces().keySet().stream()
             .noneMatch(t -> t.getName().equals("demo-status") && t.isAlive()),
         "the status thread was joined");
+  }
+
+  /**
+   * The default demo's 30 s on virtual time: the crates are in the robot's way, and the wander
+   * program's actions turn it away from them (the reporter prints those turns) without it ever
+   * stalling against one.
+   */
+  @Test
+  void theDefaultDemoTurnsAwayFromTheCratesInItsWay() {
+    try (SimWorld world = SimWorld.bundled("office", SimOptions.builder().seed(1).build())) {
+      SimRobot r = world.addRobot("p3dx-sh");
+      ArPose start = r.getTruePose();
+      List<ObstaclesAhead.Crate> crates = ObstaclesAhead.place(world, start);
+      ObstaclesAhead.Crate first = crates.get(0);
+      assertTrue(
+          Math.abs(first.y() - start.y()) < first.across() / 2 + 200,
+          "the first crate stands in the robot's path: " + first);
+      try (SimulatedRobot sim = SimulatedRobot.connect(world, r)) {
+        ArRobot robot = sim.robot();
+        robot.addRangeDevice(new ArSonarDevice());
+        robot.enableMotors();
+        GotoActionExample.addWanderActions(robot);
+        TurnReporter turns = new TurnReporter();
+        List<String> lines = new ArrayList<>();
+        int stalledCycles = 0;
+        for (int tenth = 1; tenth <= 300; tenth++) {
+          sim.runMillis(100);
+          String l =
+              turns.update(
+                  tenth / 10.0,
+                  robot.getRotVel(),
+                  robot.getClosestSonarRange(0, 90),
+                  robot.getClosestSonarRange(-90, 0));
+          if (l != null) {
+            lines.add(l);
+          }
+          stalledCycles += r.isStalled() ? 1 : 0;
+        }
+        assertTrue(lines.size() >= 2, "it turned away from things: " + lines);
+        assertEquals(0, stalledCycles, "never pushed against a crate or a wall: " + lines);
+        double driven = r.getTruePose().findDistanceTo(start);
+        assertTrue(driven > 2000, "it got past the first crate, " + driven + " mm from the start");
+      }
+    }
+  }
+
+  @Test
+  void gyroDemoPressesItsKeysWithoutAKeyConflict() {
+    PrintStream realErr = System.err;
+    ByteArrayOutputStream logged = new ByteArrayOutputStream();
+    System.setErr(new PrintStream(logged, true, StandardCharsets.UTF_8)); // slf4j-simple's output
+    Run r;
+    try {
+      r = jaria("demo", "gyro", "--seconds", "5");
+    } finally {
+      System.setErr(realErr);
+    }
+    String log = logged.toString(StandardCharsets.UTF_8);
+    assertEquals(0, r.status(), r.out() + r.err() + log);
+    assertTrue(r.out().contains("gyro"), r.out());
+    assertTrue(!log.contains("keydrive will not work"), log);
   }
 
   @Test

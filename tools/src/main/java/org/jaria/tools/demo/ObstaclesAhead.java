@@ -1,0 +1,48 @@
+package org.jaria.tools.demo;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.jaria.geom.ArPose;
+import org.jaria.sim.SimWorld;
+
+/**
+ * The boxes the default demo puts in the robot's way, so that there is something to avoid: three
+ * crates ahead of where the robot starts, alternately left and right of its path, each leaving room
+ * to pass on the other side (in the office corridor, about a metre).
+ */
+final class ObstaclesAhead {
+
+  /** A crate: its centre in map coordinates (mm) and its size along and across the path. */
+  record Crate(double x, double y, double along, double across) {}
+
+  /** How far ahead of the start (mm) each crate stands, and its offset to the left of the path. */
+  private static final double[][] AHEAD_AND_LEFT = {{2500, 350}, {6000, -350}, {9500, 350}};
+
+  private static final double ALONG = 500;
+  private static final double ACROSS = 700;
+
+  private ObstaclesAhead() {}
+
+  /** The crates for a robot starting at {@code start} (a value: nothing is placed yet). */
+  static List<Crate> crates(ArPose start) {
+    double th = Math.toRadians(start.th());
+    double cos = Math.cos(th);
+    double sin = Math.sin(th);
+    List<Crate> out = new ArrayList<>();
+    for (double[] al : AHEAD_AND_LEFT) {
+      double x = start.x() + al[0] * cos - al[1] * sin;
+      double y = start.y() + al[0] * sin + al[1] * cos;
+      out.add(new Crate(x, y, ALONG, ACROSS));
+    }
+    return out;
+  }
+
+  /** Puts the crates for a robot starting at {@code start} into {@code world}. */
+  static List<Crate> place(SimWorld world, ArPose start) {
+    List<Crate> crates = crates(start);
+    for (Crate c : crates) {
+      world.injectBox(c.x(), c.y(), c.along(), c.across(), start.th());
+    }
+    return crates;
+  }
+}
