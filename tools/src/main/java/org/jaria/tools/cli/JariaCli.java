@@ -44,6 +44,8 @@ public final class JariaCli implements Runnable {
   public static CommandLine commandLine() {
     CommandLine cli = new CommandLine(new JariaCli());
     addHelpOptions(cli);
+    cli.setParameterExceptionHandler(CliErrors::badArguments);
+    cli.setExecutionExceptionHandler(CliErrors::failed);
     return cli;
   }
 

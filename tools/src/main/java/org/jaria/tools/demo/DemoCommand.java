@@ -81,17 +81,19 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
       PrintWriter out = spec.commandLine().getOut();
       PrintWriter err = spec.commandLine().getErr();
       if (gui && remote != null) {
-        err.println("demo: --gui shows the embedded simulator; it cannot show a --remote robot");
+        err.println(
+            "jaria demo: --gui shows the embedded simulator; it cannot show a --remote robot");
         return 2;
       }
       if (gui) {
         Optional<String> problem = GuiCheck.problem();
         if (problem.isPresent()) {
-          err.println("demo: --gui: " + problem.get());
+          err.println("jaria demo: --gui: " + problem.get());
           return 1;
         }
       }
       if (remote != null) {
+        checkRemote();
         try (DemoTicker ticker = new DemoTicker("demo-status", seconds)) {
           out.println(stopsAfter(seconds));
           out.flush();

@@ -21,14 +21,14 @@ public final class AppLauncher {
   public static int runUntilClosed(AppCommand command, PrintWriter err) {
     Optional<String> problem = GuiCheck.problem();
     if (problem.isPresent()) {
-      err.println(command.appName() + ": " + problem.get());
+      err.println("jaria " + command.appName() + ": " + problem.get());
       err.flush();
       return 1;
     }
     try {
       FxRuntime.startup();
     } catch (IllegalStateException e) {
-      err.println(command.appName() + ": " + e.getMessage());
+      err.println("jaria " + command.appName() + ": " + e.getMessage());
       err.flush();
       return 1;
     }
@@ -44,7 +44,7 @@ public final class AppLauncher {
               },
               120);
     } catch (RuntimeException e) {
-      err.println(command.appName() + ": " + e.getMessage());
+      err.println("jaria " + command.appName() + ": " + e.getMessage());
       err.flush();
       Platform.exit();
       return 1;

@@ -53,7 +53,7 @@ public final class MapperCommand implements Callable<Integer>, AppCommand {
       try {
         MapSource.resolve(map); // said before a window opens
       } catch (IllegalArgumentException e) {
-        spec.commandLine().getErr().println("mapper: " + e.getMessage());
+        spec.commandLine().getErr().println("jaria mapper: " + e.getMessage());
         return 2;
       }
     }
