@@ -16,6 +16,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import org.jaria.tools.cli.JariaCli;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -28,6 +29,7 @@ import picocli.CommandLine;
  * {@code ./mvnw} line names modules and profiles that exist, and the getting-started {@code java}
  * line runs the sample against a simulator over TCP.
  */
+@Tag("slow")
 class DocsCommandsTest {
 
   private final Path root = Repo.root();

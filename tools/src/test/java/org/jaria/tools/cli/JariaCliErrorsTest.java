@@ -11,6 +11,7 @@ import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
@@ -66,9 +67,10 @@ class JariaCliErrorsTest {
     assertEquals(2, r.status(), r.all());
     assertNoTraceNorUsage(r);
     assertEquals(
-        "jaria sim: map file nothere.map does not exist\n"
-            + "Run 'jaria sim --help' for its options.\n",
-        r.err().replace("\r\n", "\n"));
+        List.of(
+            "jaria sim: map file nothere.map does not exist",
+            "Run 'jaria sim --help' for its options."),
+        r.err().lines().toList());
   }
 
   @Test

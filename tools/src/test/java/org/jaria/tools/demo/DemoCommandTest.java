@@ -21,6 +21,7 @@ import org.jaria.sim.client.SimulatedRobot;
 import org.jaria.testing.SocatPty;
 import org.jaria.tools.cli.JariaCli;
 import org.jaria.tools.examples.GotoActionExample;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
@@ -30,6 +31,7 @@ import picocli.CommandLine;
  * simulator on TCP (real time: these check the wiring and the output, not the robot's skill — the
  * scenario tests do that on virtual time).
  */
+@Tag("slow")
 class DemoCommandTest {
 
   private record Run(int status, String out, String err) {}

@@ -12,6 +12,7 @@ import java.util.HashSet;
 import java.util.Set;
 import org.jaria.acts.image.ImageFiles;
 import org.jaria.acts.image.RgbImage;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
@@ -19,6 +20,7 @@ import org.testfx.framework.junit5.ApplicationExtension;
 import picocli.CommandLine;
 
 /** {@code jaria screenshot} renders each app to a PNG without a display. */
+@Tag("gui")
 @ExtendWith(ApplicationExtension.class)
 class ScreenshotCommandTest {
 
