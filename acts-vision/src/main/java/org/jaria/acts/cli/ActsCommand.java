@@ -41,7 +41,7 @@ import picocli.CommandLine.Spec;
     name = "acts",
     sortOptions = false,
     description = {
-      "ACTS colour-tracking server (headless): tracks trained colour channels in a still image,"
+      "ACTS color-tracking server (headless): tracks trained color channels in a still image,"
           + " a folder of images or a camera and serves the blobs on TCP (ArACTS_1_2 protocol)."
     },
     footer = {

@@ -27,7 +27,7 @@ import picocli.CommandLine.Spec;
     name = "eztrain",
     sortOptions = false,
     description = {
-      "EZ-Train: train ACTS colour channels on a still image or live video, with the ACTS server"
+      "EZ-Train: train ACTS color channels on a still image or live video, with the ACTS server"
           + " running (port 5001) so robot programs see the channels as they are trained.",
       "Keys over the image: 1-4 view modes (Overlay, Thresh, Raw, Visible), A Add, R Remove,"
           + " D Draw, E Erase, P Pick; right click cycles the view; Esc quits."
@@ -53,7 +53,7 @@ public final class EzTrainCommand implements Callable<Integer>, AppCommand {
       names = "--sim-camera",
       description =
           "Start with live video from the simulator's camera: a simulated robot in the hall"
-              + " looking at coloured things.")
+              + " looking at colored things.")
   boolean simCamera;
 
   @Option(
