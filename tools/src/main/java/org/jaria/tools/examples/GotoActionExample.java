@@ -71,25 +71,6 @@ public final class GotoActionExample {
     robot.enableMotors();
     robot.comInt(ArCommands.SOUNDTOG, 0);
 
-    addWanderActions(robot);
-
-    started.accept(robot);
-
-    // wait for the robot's cycle to end (disconnection or stopRunning()) before exiting
-    try {
-      robot.waitForRunExit();
-    } catch (InterruptedException e) {
-      Thread.currentThread().interrupt();
-    }
-    robot.close();
-    return 0;
-  }
-
-  /**
-   * The program's five actions, by priority: recover from stalls, back off the bumpers, avoid what
-   * is near in front, avoid what is farther in front, and otherwise drive at 400 mm/s.
-   */
-  public static void addWanderActions(ArRobot robot) {
     // add a set of actions that combine together to effect the wander behavior
     ArActionStallRecover recover = new ArActionStallRecover();
     ArActionBumpers bumpers = new ArActionBumpers();
@@ -102,5 +83,16 @@ public final class GotoActionExample {
     robot.addAction(avoidFrontNear, 50);
     robot.addAction(avoidFrontFar, 49);
     robot.addAction(constantVelocity, 25);
+
+    started.accept(robot);
+
+    // wait for the robot's cycle to end (disconnection or stopRunning()) before exiting
+    try {
+      robot.waitForRunExit();
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+    }
+    robot.close();
+    return 0;
   }
 }

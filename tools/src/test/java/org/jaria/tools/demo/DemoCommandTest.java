@@ -11,6 +11,10 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.jaria.action.ArActionAvoidFront;
+import org.jaria.action.ArActionBumpers;
+import org.jaria.action.ArActionConstantVelocity;
+import org.jaria.action.ArActionStallRecover;
 import org.jaria.geom.ArPose;
 import org.jaria.range.ArSonarDevice;
 import org.jaria.robot.ArRobot;
@@ -20,7 +24,6 @@ import org.jaria.sim.SimWorld;
 import org.jaria.sim.client.SimulatedRobot;
 import org.jaria.testing.SocatPty;
 import org.jaria.tools.cli.JariaCli;
-import org.jaria.tools.examples.GotoActionExample;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -81,7 +84,7 @@ class DemoCommandTest {
         ArRobot robot = sim.robot();
         robot.addRangeDevice(new ArSonarDevice());
         robot.enableMotors();
-        GotoActionExample.addWanderActions(robot);
+        addWanderActions(robot);
         TurnReporter turns = new TurnReporter();
         List<String> lines = new ArrayList<>();
         int stalledCycles = 0;
@@ -104,6 +107,19 @@ class DemoCommandTest {
         assertTrue(driven > 2000, "it got past the first crate, " + driven + " mm from the start");
       }
     }
+  }
+
+  /**
+   * The five actions {@link org.jaria.tools.examples.GotoActionExample} adds, with its priorities
+   * and settings (that program is quoted line by line next to the thesis's C++, so its actions stay
+   * inline there).
+   */
+  private static void addWanderActions(ArRobot robot) {
+    robot.addAction(new ArActionStallRecover(), 100);
+    robot.addAction(new ArActionBumpers(), 75);
+    robot.addAction(new ArActionAvoidFront("Avoid Front Near", 225, 0), 50);
+    robot.addAction(new ArActionAvoidFront(), 49);
+    robot.addAction(new ArActionConstantVelocity("Constant Velocity", 400), 25);
   }
 
   @Test
