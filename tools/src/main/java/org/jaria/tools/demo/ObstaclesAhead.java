@@ -7,8 +7,10 @@ import org.jaria.sim.SimWorld;
 
 /**
  * The boxes the default demo puts in the robot's way, so that there is something to avoid: three
- * crates ahead of where the robot starts, alternately left and right of its path, each leaving room
- * to pass on the other side (in the office corridor, about a metre).
+ * crates ahead of where the robot starts, alternately left and right of its path, each reaching to
+ * within a few centimetres of the robot's side. Driving straight on, the robot would brush each
+ * one; its sonar sees them coming and the avoidance actions swerve it past, with room on the other
+ * side (in the office corridor, 1.2 m).
  */
 final class ObstaclesAhead {
 
@@ -16,10 +18,10 @@ final class ObstaclesAhead {
   record Crate(double x, double y, double along, double across) {}
 
   /** How far ahead of the start (mm) each crate stands, and its offset to the left of the path. */
-  private static final double[][] AHEAD_AND_LEFT = {{2500, 350}, {6000, -350}, {9500, 350}};
+  private static final double[][] AHEAD_AND_LEFT = {{5000, 500}, {7500, -500}, {10000, 500}};
 
   private static final double ALONG = 500;
-  private static final double ACROSS = 700;
+  private static final double ACROSS = 500;
 
   private ObstaclesAhead() {}
 
