@@ -8,6 +8,8 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
+import javafx.application.Platform;
+import javafx.stage.Window;
 import org.jaria.geom.ArPose;
 import org.jaria.robot.ArRobot;
 import org.jaria.tools.examples.GotoActionExample;
@@ -144,17 +146,20 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
       AtomicInteger status = new AtomicInteger();
       Thread program =
           new Thread(
-              () ->
-                  status.set(
-                      GotoActionExample.run(
-                          sim.connectArgs(),
-                          robot -> {
-                            running.set(robot);
-                            watch(ticker, robot, sim, out);
-                          })),
+              () -> {
+                status.set(
+                    GotoActionExample.run(
+                        sim.connectArgs(),
+                        robot -> {
+                          running.set(robot);
+                          watch(ticker, robot, sim, out);
+                        }));
+                // The demo's time is up (or the robot stopped): the window goes with it.
+                Platform.runLater(() -> List.copyOf(Window.getWindows()).forEach(Window::hide));
+              },
               "demo-program");
       program.start();
-      out.println("Close the window to end the demo.");
+      out.println("Closing the window ends the demo sooner.");
       out.flush();
       int ui = SimViewCommand.showUntilClosed(sim.world, 1.0, err);
       ArRobot robot = running.get();
