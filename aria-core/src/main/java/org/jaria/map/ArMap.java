@@ -62,7 +62,7 @@ public final class ArMap {
   public static final String RESOURCE_DIR = "/org/jaria/maps/";
 
   /** The maps shipped with JAria, for {@link #loadBundled(String)}. */
-  public static final List<String> BUNDLED_MAPS = List.of("office", "hall");
+  public static final List<String> BUNDLED_MAPS = List.of("office", "hall", "columbia");
 
   static final Set<String> POINT_KEYS = Set.of("MinPos", "MaxPos", "NumPoints", "PointsAreSorted");
   static final Set<String> LINE_KEYS =
@@ -158,7 +158,8 @@ public final class ArMap {
 
   /**
    * One of the maps shipped with JAria ({@link #BUNDLED_MAPS}: "office", a 30 × 20 m office floor
-   * with a corridor and nine rooms; "hall", an open 20 × 15 m hall with pillars).
+   * with a corridor and nine rooms; "hall", an open 20 × 15 m hall with pillars; "columbia", a real
+   * building scanned by a Pioneer with a laser, 63,000 points and 470 lines).
    *
    * @throws IllegalArgumentException if there is no bundled map of that name
    */

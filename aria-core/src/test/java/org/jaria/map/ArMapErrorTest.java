@@ -103,6 +103,6 @@ class ArMapErrorTest {
   void bundledMapNamesAreChecked() {
     IllegalArgumentException e =
         assertThrows(IllegalArgumentException.class, () -> ArMap.loadBundled("../secret"));
-    assertTrue(e.getMessage().contains("[office, hall]"), e.getMessage());
+    assertTrue(e.getMessage().contains("[office, hall, columbia]"), e.getMessage());
   }
 }

@@ -16,8 +16,10 @@ import org.jaria.map.ArMap;
 import org.jaria.map.ArMapObject;
 import org.jaria.robot.ArRobot;
 import org.jaria.sim.client.SimulatedRobot;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
+@Tag("slow")
 class ArPathPlanningTaskTest {
 
   private static final ArMap OFFICE = ArMap.loadBundled("office");

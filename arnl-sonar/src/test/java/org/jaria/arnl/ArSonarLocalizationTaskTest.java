@@ -18,8 +18,10 @@ import org.jaria.map.ArMap;
 import org.jaria.robot.ArRobot;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.client.SimulatedRobot;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
+@Tag("slow")
 class ArSonarLocalizationTaskTest {
 
   private static final ArMap OFFICE = ArMap.loadBundled("office");

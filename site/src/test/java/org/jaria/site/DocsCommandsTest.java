@@ -15,11 +15,12 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
-import org.jaria.sim.SimOptions;
-import org.jaria.sim.SimWorld;
 import org.jaria.tools.cli.JariaCli;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import picocli.CommandLine;
 
 /**
@@ -28,6 +29,7 @@ import picocli.CommandLine;
  * {@code ./mvnw} line names modules and profiles that exist, and the getting-started {@code java}
  * line runs the sample against a simulator over TCP.
  */
+@Tag("slow")
 class DocsCommandsTest {
 
   private final Path root = Repo.root();
@@ -168,45 +170,93 @@ class DocsCommandsTest {
   }
 
   /**
-   * The getting-started line {@code java -cp "tools/target/jaria-tools.jar:tools/target/lib/*"
-   * HelloRobot.java -rh localhost}: the sample runs as a single source file against a simulator
-   * listening on TCP (ten times real time, on a free port). Before {@code package} has built the
-   * launcher's jars, this JVM's own class path stands in for them.
+   * The getting-started recipe as a reader follows it, in each guide (English and Spanish): step
+   * 2's {@code ./jaria sim ...} line starts the simulator through the real command line (the same
+   * map; only a free port and ten times real time added), and step 3's {@code java -cp
+   * "tools/target/jaria-tools.jar:tools/target/lib/*" HelloRobot.java -rh localhost} runs the
+   * sample as a single source file against it over TCP and must finish the square. Before {@code
+   * package} has built the launcher's jars, this JVM's own class path stands in for them.
    */
-  @Test
-  void theGettingStartedJavaCommandDrivesTheSimulatorOverTcp() throws Exception {
+  @ParameterizedTest
+  @ValueSource(strings = {"docs/getting-started.md", "docs/es/primeros-pasos.md"})
+  void theGettingStartedRecipeDrivesTheSquareAsWritten(String guide) throws Exception {
+    List<String> simLines = guideLines(guide, "./jaria sim ");
+    List<String> headless = simLines.stream().filter(l -> !l.contains("--gui")).toList();
+    assertEquals(1, headless.size(), guide + " shows one headless simulator line: " + simLines);
     List<String> javaLines =
-        lines("java -cp").stream().filter(l -> l.contains("HelloRobot.java")).toList();
-    assertTrue(!javaLines.isEmpty(), "the guide shows how to run HelloRobot.java");
-    List<String> words = new ArrayList<>(ShellWords.split(javaLines.get(0)));
+        guideLines(guide, "java -cp").stream().filter(l -> l.contains("-rh localhost")).toList();
+    assertEquals(1, javaLines.size(), guide + " shows how to run HelloRobot.java: " + javaLines);
+
     int port;
     try (ServerSocket s = new ServerSocket(0)) {
       port = s.getLocalPort();
     }
-    String cp = words.get(2);
-    boolean built = Files.isRegularFile(root.resolve("tools/target/jaria-tools.jar"));
-    words.set(0, Path.of(System.getProperty("java.home"), "bin", "java").toString());
-    words.set(2, built ? cp.replace("tools/", root + "/tools/") : testClassPath());
-    int src = words.indexOf("HelloRobot.java");
-    words.set(
-        src, root.resolve("site/src/test/java/org/jaria/site/samples/HelloRobot.java").toString());
-    words.add("-rrtp");
-    words.add(String.valueOf(port));
-    try (SimWorld world = SimWorld.bundled("hall", SimOptions.builder().basePort(port).build())) {
-      world.addRobot("p3dx-sh");
-      world.listen();
-      world.startRealTime(10);
+    List<String> sim = new ArrayList<>(ShellWords.split(headless.get(0)));
+    sim.remove(0);
+    sim.addAll(List.of("--port", String.valueOf(port), "--speedup", "10"));
+    StringWriter simOut = new StringWriter();
+    CommandLine simCli = JariaCli.commandLine();
+    simCli.setOut(new PrintWriter(simOut, true));
+    simCli.setErr(new PrintWriter(simOut, true));
+    Thread simThread =
+        new Thread(() -> simCli.execute(sim.toArray(String[]::new)), "guide-simulator");
+    simThread.start();
+    try {
+      waitForPort(port, simOut);
+      List<String> words = new ArrayList<>(ShellWords.split(javaLines.get(0)));
+      String cp = words.get(2);
+      boolean built = Files.isRegularFile(root.resolve("tools/target/jaria-tools.jar"));
+      words.set(0, Path.of(System.getProperty("java.home"), "bin", "java").toString());
+      words.set(2, built ? cp.replace("tools/", root + "/tools/") : testClassPath());
+      int src = words.indexOf("HelloRobot.java");
+      words.set(
+          src,
+          root.resolve("site/src/test/java/org/jaria/site/samples/HelloRobot.java").toString());
+      words.add("-rrtp");
+      words.add(String.valueOf(port));
       Process p = new ProcessBuilder(words).redirectErrorStream(true).start();
       boolean done = p.waitFor(90, TimeUnit.SECONDS);
-      String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
       if (!done) {
         p.destroyForcibly();
       }
-      world.stopRealTime();
+      String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
       assertTrue(done, "HelloRobot finished:\n" + out);
       assertEquals(0, p.exitValue(), out);
       assertTrue(out.contains("Connected to"), out);
       assertTrue(out.contains("Done; the robot believes it is at"), out);
+    } finally {
+      simThread.interrupt(); // what Ctrl-C does to `jaria sim`
+      simThread.join(TimeUnit.SECONDS.toMillis(10));
+    }
+    assertTrue(!simThread.isAlive(), "the simulator stopped");
+  }
+
+  /** The lines of one guide's command blocks that start with {@code prefix}. */
+  private List<String> guideLines(String guide, String prefix) throws IOException {
+    List<String> out = new ArrayList<>();
+    for (MarkdownBlocks.Block b : MarkdownBlocks.all(root)) {
+      if (!root.resolve(b.file()).normalize().equals(root.resolve(guide).normalize())
+          || b.language().equals("java")) {
+        continue;
+      }
+      for (String l : b.text().split("\n", -1)) {
+        if (l.strip().startsWith(prefix)) {
+          out.add(l.strip());
+        }
+      }
+    }
+    return out;
+  }
+
+  /** Waits (up to 30 s) until the simulator the guide started says it listens. */
+  private static void waitForPort(int port, StringWriter log) throws InterruptedException {
+    long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+    while (!log.toString().contains("listening on TCP port " + port)) {
+      if (System.nanoTime() > deadline) {
+        throw new AssertionError("the simulator never listened on port " + port + ":\n" + log);
+      }
+      // Watching another thread's printed output, which has no event to wait on.
+      TimeUnit.MILLISECONDS.sleep(50);
     }
   }
 

@@ -42,7 +42,7 @@ import picocli.CommandLine.Spec;
     name = "acts",
     sortOptions = false,
     description = {
-      "ACTS colour-tracking server (headless): tracks trained colour channels in a still image,"
+      "ACTS color-tracking server (headless): tracks trained color channels in a still image,"
           + " a folder of images or a camera and serves the blobs on TCP (ArACTS_1_2 protocol)."
     },
     footer = {
@@ -50,7 +50,7 @@ import picocli.CommandLine.Spec;
       "Frame grabber drivers: JAria reads cameras through OpenCV (V4L2, DirectShow/MSMF,"
           + " AVFoundation as available); -G, -x, -n and -V are accepted for compatibility and"
           + " ignored.",
-      "Example: jaria acts -c actsconfig -f desk-scene.ppm -p 5001"
+      "Example: jaria acts -c actsconfig -f desk-scene -p 5001"
     })
 public final class ActsCommand implements Callable<Integer> {
 
@@ -69,7 +69,8 @@ public final class ActsCommand implements Callable<Integer> {
       names = "-f",
       paramLabel = "IMAGE",
       description =
-          "Use this image file (PPM, PNG, JPEG...) or folder of images instead of a camera.")
+          "Use this image file (PPM, PNG, JPEG...) or folder of images instead of a camera;"
+              + " desk-scene is the shipped tutorial image.")
   Path imageFile;
 
   @Option(names = "-G", paramLabel = "DRIVER", description = "Grabber driver (ignored: OpenCV).")
@@ -386,6 +387,13 @@ public final class ActsCommand implements Callable<Integer> {
       }
       if (Files.isDirectory(image)) {
         return ImageSequenceSource.ofDirectory(image, w, h, true);
+      }
+      if (org.jaria.acts.image.TestScene.isBundledName(image)) {
+        return new StillImageSource(
+            org.jaria.acts.image.TestScene.load(),
+            w,
+            h,
+            org.jaria.acts.image.TestScene.BUNDLED_NAME);
       }
       return StillImageSource.open(image, w, h);
     }

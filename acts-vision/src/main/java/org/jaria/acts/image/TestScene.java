@@ -90,6 +90,21 @@ public final class TestScene {
     return render().scaled(width, height);
   }
 
+  /** The name the command lines accept for the shipped scene ({@code acts -f desk-scene}). */
+  public static final String BUNDLED_NAME = "desk-scene";
+
+  /**
+   * Whether {@code typed}, given where an image file is expected, means the shipped scene: it names
+   * no existing file, and is {@code desk-scene}, {@code desk-scene.ppm} or {@code desk-scene.png}.
+   */
+  public static boolean isBundledName(java.nio.file.Path typed) {
+    String n = typed.toString();
+    return !java.nio.file.Files.exists(typed)
+        && (n.equals(BUNDLED_NAME)
+            || n.equals(BUNDLED_NAME + ".ppm")
+            || n.equals(BUNDLED_NAME + ".png"));
+  }
+
   /** The shipped PPM copy, read from the class path. */
   public static RgbImage load() {
     try (InputStream in = TestScene.class.getResourceAsStream(PPM_RESOURCE)) {

@@ -53,4 +53,15 @@ class TestSceneTest {
     assertTrue(ImageFiles.read(dir.resolve("desk-scene.ppm")).samePixels(TestScene.render()));
     assertTrue(Files.size(dir.resolve("desk-scene.png")) > 1000);
   }
+
+  /**
+   * {@code acts -f desk-scene} and {@code eztrain -f desk-scene} (README) mean the shipped scene.
+   */
+  @Test
+  void theShippedSceneHasANameTheCommandsAccept() {
+    assertTrue(TestScene.isBundledName(Path.of("desk-scene")));
+    assertTrue(TestScene.isBundledName(Path.of("desk-scene.ppm")));
+    assertTrue(!TestScene.isBundledName(Path.of("desk.ppm")), "another name is a file name");
+    assertTrue(!TestScene.isBundledName(Path.of("/nowhere/desk-scene")), "a path is a file");
+  }
 }

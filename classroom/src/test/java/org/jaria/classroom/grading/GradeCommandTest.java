@@ -13,6 +13,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
@@ -21,6 +22,7 @@ import picocli.CommandLine;
  * The teacher's command end to end: a folder with a good, a bad, a non-compiling and an endlessly
  * looping submission is graded, each in a JVM of its own, and every one gets its grade.
  */
+@Tag("slow")
 class GradeCommandTest {
 
   private static void write(Path dir, String file, String text) throws IOException {

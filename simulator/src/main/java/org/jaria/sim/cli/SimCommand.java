@@ -51,64 +51,65 @@ public final class SimCommand implements Callable<Integer> {
   @Option(
       names = "--robot",
       paramLabel = "MODEL",
-      description = "robot model to add (repeatable): p3dx-sh, p3at-sh, p2dx, amigo, ...")
+      description = "Robot model to add (repeatable): p3dx-sh, p3at-sh, p2dx, amigo, ...")
   List<String> robots = new ArrayList<>();
 
   @Option(
       names = "--robots",
       paramLabel = "N",
-      description = "number of robots (of the last --robot model, p3dx-sh by default)")
+      description = "Number of robots (of the last --robot model, p3dx-sh by default)")
   Integer robotCount;
 
   @Option(names = "--port", description = "TCP port of the first robot (default ${DEFAULT-VALUE})")
   int port = SimOptions.DEFAULT_PORT;
 
-  @Option(names = "--speedup", paramLabel = "X", description = "run X times faster than real time")
+  @Option(names = "--speedup", paramLabel = "X", description = "Run X times faster than real time")
   Double speedup;
 
   @Option(
       names = "--unthrottled",
       description =
-          "no wall-clock pacing: ticks run back to back, as fast as the machine can (simulated"
+          "No wall-clock pacing: ticks run back to back, as fast as the machine can (simulated"
               + " time still passes in whole ticks)")
   boolean unthrottled;
 
   /** The old name of --unthrottled: it never meant lockstep with a client. */
-  @Option(names = "--lockstep", hidden = true, description = "deprecated: use --unthrottled")
+  @Option(names = "--lockstep", hidden = true, description = "Deprecated: use --unthrottled")
   boolean lockstep;
 
   @Option(
       names = "--seconds",
       paramLabel = "S",
-      description = "stop after S seconds of simulated time (default: run until Ctrl-C)")
+      description = "Stop after S seconds of simulated time (default: run until Ctrl-C)")
   Double seconds;
 
-  @Option(names = "--seed", description = "random seed (default ${DEFAULT-VALUE})")
+  @Option(names = "--seed", description = "Random seed (default ${DEFAULT-VALUE})")
   long seed = 1;
 
   @Option(
       names = "--odometry-error",
       paramLabel = "SPEC",
       description =
-          "none, constant:T,R or random:T,R (per metre, per radian), e.g. random:0.02,0.05")
+          "Odometry error: none, constant:T,R or random:T,R (per metre, per radian), e.g."
+              + " random:0.02,0.05")
   String odometryError = "none";
 
   @Option(names = "--sip-cycle", paramLabel = "MS", description = "SIP cycle, ms (default 100)")
   int sipCycle = 100;
 
-  @Option(names = "--watchdog-warn-only", description = "the watchdog warns instead of stopping")
+  @Option(names = "--watchdog-warn-only", description = "The watchdog warns instead of stopping")
   boolean watchdogWarnOnly;
 
-  @Option(names = "--no-specular", description = "sonar sees walls at any angle")
+  @Option(names = "--no-specular", description = "Sonar sees walls at any angle")
   boolean noSpecular;
 
-  @Option(names = "--laser", description = "give every robot a simulated laser (SIM_LRF_ENABLE)")
+  @Option(names = "--laser", description = "Give every robot a simulated laser (SIM_LRF_ENABLE)")
   boolean laser;
 
   @Option(
       names = "--legacy-laser-commands",
       description =
-          "with --laser: commands 35-38 set up the laser as in older simulators (old ARIA"
+          "With --laser: commands 35-38 set up the laser as in older simulators (old ARIA"
               + " clients), not ADSEL/GRIPPERVAL/GRIPREQUEST/GYROCALCW")
   boolean legacyLaserCommands;
 

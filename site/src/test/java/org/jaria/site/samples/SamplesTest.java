@@ -29,19 +29,45 @@ class SamplesTest {
   void helloRobotDrivesASquareAndEndsWhereItStarted() {
     try (SimulatedRobot sim = SimulatedRobot.start("hall", "p3dx-sh", 1)) {
       ArPose start = sim.sim().getTruePose();
+      boolean[] drove = new boolean[1];
       ProgramResult r =
           sim.runProgram(
               robot -> {
                 try {
-                  HelloRobot.square(robot, 1000);
+                  drove[0] = HelloRobot.square(robot, 1000);
                 } catch (InterruptedException e) {
                   Thread.currentThread().interrupt();
                 }
               },
               Duration.ofMinutes(1));
       assertEquals(ProgramResult.FINISHED, r);
+      assertTrue(drove[0], "square() says it drove the whole square");
       double off = sim.sim().getTruePose().findDistanceTo(start);
       assertTrue(off < 150, "back within 150 mm of the start: " + off);
+    }
+  }
+
+  /**
+   * On the office map the robot starts in a corridor and the square's second side runs into a wall:
+   * the program notices the stall and gives up instead of waiting for ever.
+   */
+  @Test
+  void helloRobotGivesUpWhenAWallIsInTheWay() {
+    try (SimulatedRobot sim = SimulatedRobot.start("office", "p3dx-sh", 1)) {
+      boolean[] drove = {true};
+      ProgramResult r =
+          sim.runProgram(
+              robot -> {
+                try {
+                  drove[0] = HelloRobot.square(robot, 1000);
+                } catch (InterruptedException e) {
+                  Thread.currentThread().interrupt();
+                }
+              },
+              Duration.ofMinutes(2));
+      assertEquals(ProgramResult.FINISHED, r, "the program ended by itself");
+      assertFalse(drove[0], "square() reports that it gave up");
+      assertEquals(0, sim.robot().getVel(), 5, "and left the robot stopped");
     }
   }
 

@@ -44,27 +44,40 @@ public final class JariaCli implements Runnable {
   public static CommandLine commandLine() {
     CommandLine cli = new CommandLine(new JariaCli());
     addHelpOptions(cli);
+    cli.setParameterExceptionHandler(CliErrors::badArguments);
+    cli.setExecutionExceptionHandler(CliErrors::failed);
     return cli;
   }
 
   /**
    * Gives every subcommand a {@code --help} (and {@code -h} where the command does not use it for
-   * something else), so {@code jaria demo --help} shows the demo's usage.
+   * something else), so {@code jaria demo --help} shows the demo's usage. A command that has its
+   * own {@code -h} for help (ACTS's and EZ-Train's options) gets {@code --help} as a second name of
+   * that option, so the usage lists one help option, not two.
    */
   private static void addHelpOptions(CommandLine cl) {
     for (CommandLine sub : cl.getSubcommands().values()) {
       CommandLine.Model.CommandSpec spec = sub.getCommandSpec();
       if (spec.findOption("--help") == null) {
-        String[] names =
-            spec.findOption("-h") == null ? new String[] {"-h", "--help"} : new String[] {"--help"};
-        spec.addOption(
-            CommandLine.Model.OptionSpec.builder(names)
-                .usageHelp(true)
-                .description("Show this help message and exit.")
-                .build());
+        CommandLine.Model.OptionSpec shortHelp = spec.findOption("-h");
+        if (shortHelp == null) {
+          spec.addOption(helpOption("-h", "--help"));
+        } else if (shortHelp.usageHelp() && shortHelp.names().length == 1) {
+          spec.remove(shortHelp);
+          spec.addOption(shortHelp.toBuilder().names("-h", "--help").build());
+        } else {
+          spec.addOption(helpOption("--help"));
+        }
       }
       addHelpOptions(sub);
     }
+  }
+
+  private static CommandLine.Model.OptionSpec helpOption(String... names) {
+    return CommandLine.Model.OptionSpec.builder(names)
+        .usageHelp(true)
+        .description("Show this help message and exit.")
+        .build();
   }
 
   /** Runs {@code jaria} with {@code args} and exits with its status. */

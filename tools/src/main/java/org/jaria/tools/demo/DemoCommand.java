@@ -1,13 +1,23 @@
 package org.jaria.tools.demo;
 
 import java.io.PrintWriter;
+import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.concurrent.Callable;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+import javafx.application.Platform;
+import javafx.stage.Window;
 import org.jaria.geom.ArPose;
 import org.jaria.robot.ArRobot;
 import org.jaria.tools.examples.GotoActionExample;
+import org.jaria.tools.fx.GuiCheck;
+import org.jaria.tools.simview.SimViewCommand;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
@@ -32,6 +42,12 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
 
   @Spec CommandSpec spec;
 
+  @Option(
+      names = "--gui",
+      description =
+          "Watch it in the simulator view (needs a display); closing the window ends the demo.")
+  boolean gui;
+
   /** Without a subcommand: wander, with the options given to {@code demo}. */
   @Override
   public Integer call() throws Exception {
@@ -42,6 +58,7 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
     w.seconds = seconds;
     w.seed = seed;
     w.remote = remote;
+    w.gui = gui;
     return w.call();
   }
 
@@ -49,39 +66,131 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
   @Command(
       name = "wander",
       description =
-          "Obstacle avoidance (thesis §6.3): wander with five actions, printing progress.")
+          "Obstacle avoidance (thesis §6.3): wander with five actions past crates put in the"
+              + " robot's way, printing progress and every turn away from something.")
   static final class Wander extends DemoOptions implements Callable<Integer> {
 
     @Spec CommandSpec spec;
 
+    @Option(
+        names = "--gui",
+        description =
+            "Watch it in the simulator view (needs a display); closing the window ends the demo.")
+    boolean gui;
+
     @Override
     public Integer call() throws Exception {
       PrintWriter out = spec.commandLine().getOut();
+      PrintWriter err = spec.commandLine().getErr();
+      if (gui && remote != null) {
+        err.println(
+            "jaria demo: --gui shows the embedded simulator; it cannot show a --remote robot");
+        return 2;
+      }
+      if (gui) {
+        Optional<String> problem = GuiCheck.problem();
+        if (problem.isPresent()) {
+          err.println("jaria demo: --gui: " + problem.get());
+          return 1;
+        }
+      }
       if (remote != null) {
+        checkRemote();
         try (DemoTicker ticker = new DemoTicker("demo-status", seconds)) {
+          out.println(stopsAfter(seconds));
+          out.flush();
           return GotoActionExample.run(remoteArgs(), robot -> watch(ticker, robot, null, out));
         }
       }
       try (EmbeddedSimulator sim = new EmbeddedSimulator(map, model, seed);
           DemoTicker ticker = new DemoTicker("demo-status", seconds)) {
+        ArPose start = sim.robot.getTruePose();
+        List<ObstaclesAhead.Crate> crates = ObstaclesAhead.place(sim.world, start);
         out.printf(
             Locale.ROOT,
-            "Simulator: %s map, a %s on tcp port %d (real time).%n",
+            "Simulator: %s map, a %s on tcp port %d (real time); %d crates put in its way.%n",
             map,
             model,
-            sim.port());
+            sim.port(),
+            crates.size());
+        out.printf(
+            Locale.ROOT,
+            "'pose' is where the robot believes it is (odometry, counted from (0, 0) where it"
+                + " started); 'true' is where the simulator has it on the map, starting at"
+                + " (%.0f, %.0f).%n",
+            start.x(),
+            start.y());
+        out.println(stopsAfter(seconds));
         out.flush();
-        int status =
-            GotoActionExample.run(sim.connectArgs(), robot -> watch(ticker, robot, sim, out));
-        ArPose truth = sim.robot.getTruePose();
-        out.printf(Locale.ROOT, "Finished; the simulator's true pose of the robot is %s.%n", truth);
-        out.flush();
-        return status;
+        if (!gui) {
+          return runWander(sim, ticker, out);
+        }
+        return runWithWindow(sim, ticker, out, err);
       }
     }
 
-    /** Prints a status line every second and stops the robot after the time limit. */
+    private int runWander(EmbeddedSimulator sim, DemoTicker ticker, PrintWriter out) {
+      int status =
+          GotoActionExample.run(sim.connectArgs(), robot -> watch(ticker, robot, sim, out));
+      ArPose truth = sim.robot.getTruePose();
+      out.printf(Locale.ROOT, "Finished; the simulator's true pose of the robot is %s.%n", truth);
+      out.flush();
+      return status;
+    }
+
+    /** The program on a thread of its own while this one shows the window until it closes. */
+    private int runWithWindow(
+        EmbeddedSimulator sim, DemoTicker ticker, PrintWriter out, PrintWriter err)
+        throws InterruptedException {
+      AtomicReference<ArRobot> running = new AtomicReference<>();
+      AtomicInteger status = new AtomicInteger();
+      Thread program =
+          new Thread(
+              () -> {
+                status.set(
+                    GotoActionExample.run(
+                        sim.connectArgs(),
+                        robot -> {
+                          running.set(robot);
+                          watch(ticker, robot, sim, out);
+                        }));
+                // The demo's time is up (or the robot stopped): the window goes with it.
+                Platform.runLater(() -> List.copyOf(Window.getWindows()).forEach(Window::hide));
+              },
+              "demo-program");
+      program.start();
+      out.println("Closing the window ends the demo sooner.");
+      out.flush();
+      int ui = SimViewCommand.showUntilClosed(sim.world, 1.0, err);
+      ArRobot robot = running.get();
+      if (robot != null) {
+        robot.stopRunning();
+      }
+      program.join(TimeUnit.SECONDS.toMillis(10));
+      return ui != 0 ? ui : status.get();
+    }
+
+    /**
+     * Prints a status line every second, and a line whenever the robot turns away from something.
+     */
     void watch(DemoTicker ticker, ArRobot robot, EmbeddedSimulator sim, PrintWriter out) {
+      TurnReporter turns = new TurnReporter();
+      long startNanos = robot.getClock().nanoTime();
+      robot.addUserTask(
+          "demo turn report",
+          40,
+          () -> {
+            String line =
+                turns.update(
+                    (robot.getClock().nanoTime() - startNanos) / 1e9,
+                    robot.getRotVel(),
+                    robot.getClosestSonarRange(0, 90),
+                    robot.getClosestSonarRange(-90, 0));
+            if (line != null) {
+              out.println(line);
+              out.flush();
+            }
+          });
       ticker.start(
           robot,
           second -> {
@@ -89,6 +198,15 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
             out.flush();
           });
     }
+  }
+
+  /** The honest closing time of a demo. */
+  static String stopsAfter(int seconds) {
+    return seconds == 0
+        ? "Runs until Ctrl-C."
+        : "Stops by itself after "
+            + seconds
+            + " s (--seconds N to change, 0 for no limit); Ctrl-C stops it sooner.";
   }
 
   static String statusLine(int second, ArRobot robot, EmbeddedSimulator sim) {

@@ -1,5 +1,9 @@
 package org.jaria.tools.demo;
 
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import org.jaria.clock.Clock;
 import org.jaria.connection.RobotAddress;
 import picocli.CommandLine.Option;
 
@@ -40,5 +44,32 @@ class DemoOptions {
   /** ARIA's connection options for --remote. */
   String[] remoteArgs() {
     return RobotAddress.parse(remote).toArgs();
+  }
+
+  /**
+   * Checks that the {@code --remote} robot can be reached before the program starts, so a wrong
+   * address is said once, in the user's own option names, instead of by every layer that tries.
+   *
+   * @throws IOException saying what failed and what to try
+   */
+  void checkRemote() throws IOException {
+    RobotAddress a = RobotAddress.parse(remote);
+    if (a.isSerial()) {
+      a.open(Clock.system(), "--remote").close();
+      return;
+    }
+    try (Socket s = new Socket()) {
+      s.connect(new InetSocketAddress(a.host(), a.port()), 3000);
+    } catch (IOException e) {
+      throw new IOException(
+          "nothing accepts connections at "
+              + a
+              + " ("
+              + e.getMessage()
+              + "): start a simulator there (./jaria sim --port "
+              + a.port()
+              + ") or give --remote the robot's HOST:PORT",
+          e);
+    }
   }
 }

@@ -40,6 +40,7 @@ final class GotoDemo extends DemoOptions implements Callable<Integer> {
             new WriterOutputStream(spec.commandLine().getOut()), true, StandardCharsets.UTF_8);
     List<ArPose> goals = poses.isEmpty() ? GotoExample.SQUARE : parse(poses);
     if (remote != null) {
+      checkRemote();
       return GotoExample.run(remoteArgs(), goals, out, robot -> {});
     }
     try (EmbeddedSimulator sim = new EmbeddedSimulator(map, model, seed)) {

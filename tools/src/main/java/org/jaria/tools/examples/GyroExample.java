@@ -74,6 +74,29 @@ public final class GyroExample {
     }
   }
 
+  /**
+   * Adds the keydrive action at priority 45. Space belongs to both the turn keys (it stops a turn
+   * started with a motion command) and the keydrive action (it zeroes its speeds); the action would
+   * find the key taken and warn, so it takes its keys first and then space does both.
+   */
+  static void addKeydrive(ArRobot robot, ArKeyHandler keyHandler, ArActionKeydrive keydrive) {
+    Runnable stopTurn = keyHandler.getKeyHandler(ArKeyHandler.SPACE);
+    keyHandler.remKeyHandler(ArKeyHandler.SPACE);
+    robot.addAction(keydrive, 45);
+    Runnable keydriveSpace = keyHandler.getKeyHandler(ArKeyHandler.SPACE);
+    keyHandler.remKeyHandler(ArKeyHandler.SPACE);
+    keyHandler.addKeyHandler(
+        ArKeyHandler.SPACE,
+        () -> {
+          if (keydriveSpace != null) {
+            keydriveSpace.run();
+          }
+          if (stopTurn != null) {
+            stopTurn.run();
+          }
+        });
+  }
+
   /** Runs with the terminal's keys; exits with the program's status. */
   public static void main(String[] args) throws java.io.IOException {
     try (ArKeyHandler keys = ArKeyHandler.forTerminal()) {
@@ -110,7 +133,7 @@ public final class GyroExample {
       return 1;
     }
     robot.comInt(ArCommands.ENABLE, 1);
-    robot.addAction(keydriveAct, 45);
+    addKeydrive(robot, keyHandler, keydriveAct); // robot.addAction(keydriveAct, 45)
     keyHandler.attachKeyHandler(robot, true, () -> {});
     robot.runAsync(true);
     started.accept(robot);

@@ -8,6 +8,7 @@ import java.util.concurrent.Callable;
 import javafx.stage.Stage;
 import org.jaria.acts.color.ChannelBank;
 import org.jaria.acts.config.ActsConfig;
+import org.jaria.acts.image.TestScene;
 import org.jaria.tools.fx.AppCommand;
 import org.jaria.tools.fx.AppEnvironment;
 import org.jaria.tools.fx.AppLauncher;
@@ -26,7 +27,7 @@ import picocli.CommandLine.Spec;
     name = "eztrain",
     sortOptions = false,
     description = {
-      "EZ-Train: train ACTS colour channels on a still image or live video, with the ACTS server"
+      "EZ-Train: train ACTS color channels on a still image or live video, with the ACTS server"
           + " running (port 5001) so robot programs see the channels as they are trained.",
       "Keys over the image: 1-4 view modes (Overlay, Thresh, Raw, Visible), A Add, R Remove,"
           + " D Draw, E Erase, P Pick; right click cycles the view; Esc quits."
@@ -41,7 +42,8 @@ public final class EzTrainCommand implements Callable<Integer>, AppCommand {
   @Option(
       names = "-f",
       paramLabel = "IMAGE",
-      description = "Train on this image (PPM, PNG, JPEG...); default: the tutorial image.")
+      description =
+          "Train on this image (PPM, PNG, JPEG...); default: desk-scene, the tutorial image.")
   Path image;
 
   @Option(names = "-d", paramLabel = "DEVICE", description = "Start with live video from a camera.")
@@ -51,7 +53,7 @@ public final class EzTrainCommand implements Callable<Integer>, AppCommand {
       names = "--sim-camera",
       description =
           "Start with live video from the simulator's camera: a simulated robot in the hall"
-              + " looking at coloured things.")
+              + " looking at colored things.")
   boolean simCamera;
 
   @Option(
@@ -152,7 +154,7 @@ public final class EzTrainCommand implements Callable<Integer>, AppCommand {
       }
       return new EzTrainOptions(
           config,
-          image,
+          image == null || TestScene.isBundledName(image) ? null : image,
           device,
           noServer ? -1 : (port != null ? port : d.port()),
           w,

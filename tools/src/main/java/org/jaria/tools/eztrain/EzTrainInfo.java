@@ -75,7 +75,7 @@ final class EzTrainInfo {
     intro.add("");
     intro.add("Mouse on the image");
     intro.add("  Left drag          Add/Remove: a rectangle; Draw/Erase: a brush stroke");
-    intro.add("  Left click         Pick: print the pixel's colour");
+    intro.add("  Left click         Pick: print the pixel's color");
     intro.add("  Right click        next view mode");
     intro.add("  Middle click       grab a frame (single-frame video)");
     return intro;

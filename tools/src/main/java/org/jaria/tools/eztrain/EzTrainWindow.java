@@ -498,7 +498,7 @@ public final class EzTrainWindow implements DesktopApp {
 
   void clearTraining() {
     int c = state.channel.get();
-    if (prompts.confirm("Clear training", "Remove every colour from channel " + c + "?")) {
+    if (prompts.confirm("Clear training", "Remove every color from channel " + c + "?")) {
       submit("Clearing channel " + c, session::clearTraining);
     }
   }
@@ -577,8 +577,7 @@ public final class EzTrainWindow implements DesktopApp {
     public void rect(TrainTool tool, int x0, int y0, int x1, int y1) {
       boolean add = tool == TrainTool.ADD;
       submit(
-          add ? "Adding colours" : "Removing colours",
-          () -> session.trainRect(add, x0, y0, x1, y1));
+          add ? "Adding colors" : "Removing colors", () -> session.trainRect(add, x0, y0, x1, y1));
     }
 
     @Override

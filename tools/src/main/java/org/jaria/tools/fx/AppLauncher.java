@@ -1,6 +1,7 @@
 package org.jaria.tools.fx;
 
 import java.io.PrintWriter;
+import java.util.Optional;
 import java.util.concurrent.CountDownLatch;
 import javafx.application.Platform;
 import javafx.stage.Stage;
@@ -18,7 +19,19 @@ public final class AppLauncher {
    * @return the command's exit status: 0, or 1 if the app could not start (reported on {@code err})
    */
   public static int runUntilClosed(AppCommand command, PrintWriter err) {
-    FxRuntime.startup();
+    Optional<String> problem = GuiCheck.problem();
+    if (problem.isPresent()) {
+      err.println("jaria " + command.appName() + ": " + problem.get());
+      err.flush();
+      return 1;
+    }
+    try {
+      FxRuntime.startup();
+    } catch (IllegalStateException e) {
+      err.println("jaria " + command.appName() + ": " + e.getMessage());
+      err.flush();
+      return 1;
+    }
     CountDownLatch closed = new CountDownLatch(1);
     DesktopApp app;
     try {
@@ -31,7 +44,7 @@ public final class AppLauncher {
               },
               120);
     } catch (RuntimeException e) {
-      err.println(command.appName() + ": " + e.getMessage());
+      err.println("jaria " + command.appName() + ": " + e.getMessage());
       err.flush();
       Platform.exit();
       return 1;

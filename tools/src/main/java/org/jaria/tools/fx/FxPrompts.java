@@ -12,6 +12,7 @@ import javafx.scene.control.ButtonType;
 import javafx.scene.control.ListView;
 import javafx.scene.control.TextArea;
 import javafx.scene.control.TextInputDialog;
+import javafx.scene.layout.Region;
 import javafx.scene.layout.VBox;
 import javafx.stage.FileChooser;
 import javafx.stage.Window;
@@ -51,9 +52,20 @@ public final class FxPrompts implements Prompts {
     area.setEditable(false);
     area.setStyle("-fx-font-family: monospace;");
     area.setPrefRowCount(Math.min(24, (int) text.lines().count() + 1));
-    area.setPrefColumnCount(64);
+    area.setPrefColumnCount(columnsFor(text));
     a.getDialogPane().setContent(area);
+    a.getDialogPane().setMinWidth(Region.USE_PREF_SIZE);
+    a.setResizable(true);
     a.showAndWait();
+  }
+
+  /**
+   * How many columns a text box needs to show {@code text} without cutting lines off on the right
+   * (its longest line and a margin), within what fits on a screen.
+   */
+  static int columnsFor(String text) {
+    int longest = text.lines().mapToInt(String::length).max().orElse(0);
+    return Math.max(40, Math.min(120, longest + 4));
   }
 
   @Override

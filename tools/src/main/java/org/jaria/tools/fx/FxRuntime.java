@@ -6,6 +6,8 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.logging.Level;
+import java.util.logging.Logger;
 import javafx.application.Platform;
 
 /**
@@ -13,8 +15,8 @@ import javafx.application.Platform;
  *
  * <p>The {@code jaria} launcher puts JavaFX on the class path (not the module path) and starts the
  * apps from picocli commands rather than through {@code Application.launch}, so the toolkit is
- * started here with {@link Platform#startup(Runnable)}. JavaFX then logs "Unsupported JavaFX
- * configuration", which is harmless.
+ * started here with {@link Platform#startup(Runnable)}. JavaFX then warns "Unsupported JavaFX
+ * configuration", which is harmless for this use; {@link #startup()} keeps that warning quiet.
  *
  * <p>{@link #configureHeadless()} selects Monocle's Headless platform with software rendering
  * before the toolkit starts: windows then render into memory, which is how {@code jaria screenshot}
@@ -23,6 +25,12 @@ import javafx.application.Platform;
 public final class FxRuntime {
 
   private static final Object LOCK = new Object();
+
+  /**
+   * JavaFX's own logger (java.util.logging, through System.Logger). Held here so the level set in
+   * {@link #startup()} stays: the logging framework keeps loggers only weakly.
+   */
+  private static final Logger JAVAFX_LOG = Logger.getLogger("javafx");
 
   private FxRuntime() {}
 
@@ -59,6 +67,10 @@ public final class FxRuntime {
   public static void startup() {
     synchronized (LOCK) {
       CountDownLatch started = new CountDownLatch(1);
+      if (JAVAFX_LOG.getLevel() == null) {
+        // Only the class-path warning is logged at WARNING on start-up; errors still show.
+        JAVAFX_LOG.setLevel(Level.SEVERE);
+      }
       try {
         Platform.startup(started::countDown);
       } catch (IllegalStateException alreadyRunning) {
@@ -67,8 +79,12 @@ public final class FxRuntime {
         throw new IllegalStateException(
             "JavaFX cannot open a window here ("
                 + e.getMessage()
-                + "): run it on a desktop (check the DISPLAY variable over ssh), or render the"
-                + " window to a file with `jaria screenshot APP ... -o FILE.png`",
+                + "): "
+                + GuiCheck.problem()
+                    .orElse(
+                        "check that a desktop is running and the GTK 3 libraries are installed"
+                            + " (sudo apt-get install libgtk-3-0), or render the window to a file"
+                            + " with ./jaria screenshot APP ... -o FILE.png"),
             e);
       }
       try {

@@ -39,6 +39,7 @@ public final class MapDocument {
   private long floor;
   private long saved;
   private Path path;
+  private final String untitledName;
 
   /**
    * A document for a loaded map.
@@ -48,10 +49,19 @@ public final class MapDocument {
    * @param ids the number source that numbered the content (continues for new items)
    */
   public MapDocument(MapFile.Loaded loaded, Path path, AtomicLong ids) {
+    this(loaded, path, ids, "Untitled");
+  }
+
+  /**
+   * A document for a loaded map that has no file yet (a bundled map), named {@code untitledName}
+   * until it is saved.
+   */
+  public MapDocument(MapFile.Loaded loaded, Path path, AtomicLong ids, String untitledName) {
     this.file = loaded.file();
     this.content = loaded.content();
     this.path = path;
     this.ids = ids;
+    this.untitledName = untitledName;
   }
 
   /** A new, empty, unsaved map. */
@@ -88,7 +98,7 @@ public final class MapDocument {
 
   /** A short title: the file name, or "Untitled". */
   public String title() {
-    return path == null ? "Untitled" : String.valueOf(path.getFileName());
+    return path == null ? untitledName : String.valueOf(path.getFileName());
   }
 
   /** Whether there are changes since the last save (or load). */

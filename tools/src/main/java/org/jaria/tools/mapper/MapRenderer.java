@@ -1,12 +1,18 @@
 package org.jaria.tools.mapper;
 
+import java.util.ArrayList;
 import java.util.BitSet;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import javafx.geometry.VPos;
 import javafx.scene.canvas.GraphicsContext;
 import javafx.scene.paint.Color;
 import javafx.scene.text.Font;
+import javafx.scene.text.Text;
 import javafx.scene.text.TextAlignment;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.map.ArMapObject;
@@ -38,6 +44,23 @@ public final class MapRenderer {
   private static final int SELECTED_ARGB = 0xFF1E78FF;
 
   private final Font font = Font.font("System", 11);
+
+  /** A label's height in pixels (the font's size and a little room). */
+  private static final double LABEL_HEIGHT = 14;
+
+  /** Label widths by text: measuring text is slow next to drawing it. */
+  private final Map<String, Double> widths = new ConcurrentHashMap<>();
+
+  private double textWidth(String text) {
+    return widths.computeIfAbsent(
+        text,
+        t -> {
+          Text measure = new Text(t);
+          measure.setFont(font);
+          return Math.ceil(measure.getLayoutBounds().getWidth()) + 2;
+        });
+  }
+
   private boolean scaleBar = true;
 
   /** Whether to draw the scale bar in the bottom-left corner (on by default). */
@@ -69,9 +92,39 @@ public final class MapRenderer {
     if (opt.lines()) {
       drawLines(gc, vp, content.lines(), selection);
     }
+    // Markers first, then the names where they do not overlap (selected objects' names first,
+    // so those always show).
+    List<LabelPlacer.Label> selectedLabels = new ArrayList<>();
+    List<LabelPlacer.Label> otherLabels = new ArrayList<>();
     for (MapObjectEntry e : content.objects()) {
       boolean selected = selection != null && selection.contains(e.id());
-      drawObject(gc, vp, e.object(), selected, opt.labels(), 0, 0);
+      drawObject(gc, vp, e.object(), selected, false, 0, 0);
+      ArMapObject o = e.object();
+      if (opt.labels() && !o.name().isEmpty() && !o.hasFromTo()) {
+        double x = vp.toScreenX(o.pose().x());
+        double y = vp.toScreenY(o.pose().y());
+        if (x >= -60 && y >= -60 && x <= vp.width() + 60 && y <= vp.height() + 60) {
+          (selected ? selectedLabels : otherLabels)
+              .add(new LabelPlacer.Label(x, y, textWidth(o.name()), LABEL_HEIGHT, o.name()));
+        }
+      }
+    }
+    selectedLabels.addAll(otherLabels);
+    Set<String> selectedNames = new HashSet<>();
+    for (MapObjectEntry e : content.objects()) {
+      if (selection != null && selection.contains(e.id())) {
+        selectedNames.add(e.object().name());
+      }
+    }
+    gc.setFont(font);
+    gc.setTextAlign(TextAlignment.LEFT);
+    gc.setTextBaseline(VPos.CENTER);
+    for (LabelPlacer.Placed p : LabelPlacer.place(selectedLabels)) {
+      String name = p.label().text();
+      gc.setFill(Color.WHITE);
+      gc.fillText(name, p.left() + 0.8, p.centerY() + 0.8);
+      gc.setFill(selectedNames.contains(name) ? SELECTION : Color.web("#202020"));
+      gc.fillText(name, p.left(), p.centerY());
     }
     if (scaleBar) {
       drawScaleBar(gc, vp);

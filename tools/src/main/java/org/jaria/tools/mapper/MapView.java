@@ -31,6 +31,10 @@ public final class MapView extends Region implements ToolContext {
   private final Canvas canvas = new Canvas(10, 10);
   private final Viewport vp = new Viewport();
   private boolean fitPending;
+
+  /** The viewport's scale and centre right after the last fit; null before the first. */
+  private double[] lastFit;
+
   private final MapRenderer renderer = new MapRenderer();
   private final MapSelection selection;
   private MapDocument document;
@@ -78,11 +82,15 @@ public final class MapView extends Region implements ToolContext {
     if (canvas.getWidth() != w || canvas.getHeight() != h) {
       double cx = vp.centerX();
       double cy = vp.centerY();
+      // A view the user has not zoomed or panned since the map was fitted keeps fitting the
+      // window as it grows (the window often reaches its final size after the map is opened).
+      boolean stillFitted =
+          lastFit != null && lastFit[0] == vp.scale() && lastFit[1] == cx && lastFit[2] == cy;
       canvas.setWidth(w);
       canvas.setHeight(h);
       vp.setSize(w, h);
       vp.setCenter(cx, cy);
-      if (fitPending) {
+      if (fitPending || stillFitted) {
         fit();
       }
       paint();
@@ -299,6 +307,7 @@ public final class MapView extends Region implements ToolContext {
     fitPending = false;
     double[] b = document.content().bounds();
     vp.fit(b[0], b[1], b[2], b[3], 24);
+    lastFit = new double[] {vp.scale(), vp.centerX(), vp.centerY()};
     redraw();
   }
 

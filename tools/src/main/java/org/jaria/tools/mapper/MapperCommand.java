@@ -1,6 +1,5 @@
 package org.jaria.tools.mapper;
 
-import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import javafx.stage.Stage;
 import org.jaria.tools.fx.AppCommand;
@@ -26,8 +25,14 @@ public final class MapperCommand implements Callable<Integer>, AppCommand {
 
   @Spec CommandSpec spec;
 
-  @Parameters(index = "0", arity = "0..1", paramLabel = "FILE", description = "Map to open.")
-  Path file;
+  @Parameters(
+      index = "0",
+      arity = "0..1",
+      paramLabel = "MAP",
+      description =
+          "Map to open: a .map file, or a bundled map (columbia, office, hall; Save then asks"
+              + " where to write it).")
+  String map;
 
   @Override
   public String appName() {
@@ -36,13 +41,22 @@ public final class MapperCommand implements Callable<Integer>, AppCommand {
 
   @Override
   public DesktopApp open(Stage stage, AppEnvironment env) {
+    MapSource source = map == null ? null : MapSource.resolve(map);
     MapperWindow w = new MapperWindow(stage, env);
-    w.show(file);
+    w.showMap(source);
     return w;
   }
 
   @Override
   public Integer call() {
+    if (map != null) {
+      try {
+        MapSource.resolve(map); // said before a window opens
+      } catch (IllegalArgumentException e) {
+        spec.commandLine().getErr().println("jaria mapper: " + e.getMessage());
+        return 2;
+      }
+    }
     return AppLauncher.runUntilClosed(this, spec.commandLine().getErr());
   }
 }

@@ -27,6 +27,7 @@ import javafx.scene.layout.Priority;
 import javafx.scene.layout.Region;
 import javafx.scene.layout.VBox;
 import javafx.stage.Stage;
+import org.jaria.map.ArMap;
 import org.jaria.map.ArMapObject;
 import org.jaria.map.ArMapPoints;
 import org.jaria.map.MapFormatException;
@@ -140,10 +141,17 @@ public final class MapperWindow implements DesktopApp {
 
   /** Shows the window and, if {@code file} is given, opens it. */
   public void show(Path file) {
+    showMap(file == null ? null : MapSource.file(file));
+  }
+
+  /** Shows the window and, if {@code source} is given, opens it (a file or a bundled map). */
+  public void showMap(MapSource source) {
     stage.show();
     view.requestFocus();
-    if (file != null) {
-      open(file);
+    if (source != null && source.file() != null) {
+      open(source.file());
+    } else if (source != null) {
+      openBundled(source.bundledName());
     } else {
       view.fit();
       view.paint();
@@ -303,6 +311,42 @@ public final class MapperWindow implements DesktopApp {
         },
         e -> {
           prompts.error("Cannot open map", openError(file, e));
+          ready.completeExceptionally(e);
+        });
+  }
+
+  /**
+   * Opens one of JAria's bundled maps ({@link ArMap#BUNDLED_MAPS}) as a new, unsaved document: Save
+   * asks where to write it, so the copy inside JAria stays as it is.
+   */
+  public void openBundled(String name) {
+    status("Opening the bundled map " + name);
+    work.submit(
+        "Opening " + name,
+        () -> {
+          AtomicLong ids = new AtomicLong(1);
+          MapFile.Loaded l = MapFile.wrap(ArMap.loadBundled(name), ids::getAndIncrement);
+          MapDocument d = new MapDocument(l, null, ids, name);
+          ArMapPoints p = l.content().points();
+          PointLayer layer = new PointLayer(p.xArray(), p.yArray());
+          return new Opened(d, layer, validator.validate(l.content(), layer));
+        },
+        o -> {
+          setDocument(o.doc(), o.layer(), o.problems());
+          MapContent c = o.doc().content();
+          status(
+              String.format(
+                  Locale.ROOT,
+                  "Opened the bundled map %s: %d points, %d lines, %d objects (Save asks where to"
+                      + " write it)",
+                  name,
+                  c.points().size(),
+                  c.lines().size(),
+                  c.objects().size()));
+          ready.complete(null);
+        },
+        e -> {
+          prompts.error("Cannot open map", e.getMessage());
           ready.completeExceptionally(e);
         });
   }

@@ -63,7 +63,7 @@ public final class SimViewCommand implements Callable<Integer>, AppCommand {
   @Option(
       names = "--odometry-error",
       paramLabel = "SPEC",
-      description = "none, constant:T,R or random:T,R (per metre, per radian)")
+      description = "Odometry error: none, constant:T,R or random:T,R (per metre, per radian).")
   String odometryError = "none";
 
   @Option(names = "--port", description = "TCP port of the first robot (default 8101).")

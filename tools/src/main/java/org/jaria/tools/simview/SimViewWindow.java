@@ -280,7 +280,7 @@ public final class SimViewWindow implements DesktopApp {
         });
     MenuItem train =
         item(
-            "Train Colours on the Robot's Camera (EZ-Train)…",
+            "Train Colors on the Robot's Camera (EZ-Train)…",
             "menu-eztrain",
             "Shortcut+T",
             this::openEzTrain);
@@ -302,7 +302,7 @@ public final class SimViewWindow implements DesktopApp {
             "Mouse on the world",
             "  Wheel              zoom about the pointer",
             "  Right/middle drag  pan (Move tool: also a left drag on empty space)",
-            "  Move tool          drag a robot, an obstacle or a coloured object",
+            "  Move tool          drag a robot, an obstacle or a colored object",
             "  Place robot tool   press where the robot stands, drag towards where it faces",
             "  Add box tool       drag a rectangle");
     prompts.info("Keyboard shortcuts", ShortcutHelp.text(intro, bar));

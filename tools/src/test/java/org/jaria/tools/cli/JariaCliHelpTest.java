@@ -51,4 +51,30 @@ class JariaCliHelpTest {
       assertTrue(err.toString().isEmpty(), "no complaint for jaria " + name + ": " + err);
     }
   }
+
+  /** Every option's help reads the same way: a capital first letter, one help option. */
+  @Test
+  void optionHelpIsConsistentAcrossCommands() {
+    List<List<String>> commands = new ArrayList<>();
+    collect(JariaCli.commandLine(), List.of(), commands);
+    List<String> problems = new ArrayList<>();
+    for (List<String> c : commands) {
+      CommandLine cl = JariaCli.commandLine();
+      for (String name : c) {
+        cl = cl.getSubcommands().get(name);
+      }
+      int helpOptions = 0;
+      for (CommandLine.Model.OptionSpec o : cl.getCommandSpec().options()) {
+        String d = String.join(" ", o.description());
+        if (d.isEmpty() || !Character.isUpperCase(d.codePointAt(0))) {
+          problems.add("jaria " + String.join(" ", c) + " " + o.longestName() + ": '" + d + "'");
+        }
+        helpOptions += o.usageHelp() ? 1 : 0;
+      }
+      if (helpOptions > 1) {
+        problems.add("jaria " + String.join(" ", c) + " lists " + helpOptions + " help options");
+      }
+    }
+    assertEquals(List.of(), problems);
+  }
 }

@@ -3,15 +3,28 @@ package org.jaria.tools.demo;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.jaria.action.ArActionAvoidFront;
+import org.jaria.action.ArActionBumpers;
+import org.jaria.action.ArActionConstantVelocity;
+import org.jaria.action.ArActionStallRecover;
 import org.jaria.geom.ArPose;
+import org.jaria.range.ArSonarDevice;
+import org.jaria.robot.ArRobot;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
+import org.jaria.sim.client.SimulatedRobot;
 import org.jaria.testing.SocatPty;
 import org.jaria.tools.cli.JariaCli;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
@@ -21,6 +34,7 @@ import picocli.CommandLine;
  * simulator on TCP (real time: these check the wiring and the output, not the robot's skill — the
  * scenario tests do that on virtual time).
  */
+@Tag("slow")
 class DemoCommandTest {
 
   private record Run(int status, String out, String err) {}
@@ -42,10 +56,91 @@ class DemoCommandTest {
     assertTrue(r.out().contains("Simulator: office map"), r.out());
     assertTrue(r.out().contains("t=  1s") && r.out().contains("t=  2s"), r.out());
     assertTrue(r.out().contains("true pose"), r.out());
+    assertTrue(r.out().contains("3 crates put in its way"), r.out());
+    assertTrue(r.out().contains("'pose' is where the robot believes it is"), r.out());
+    assertTrue(r.out().contains("Stops by itself after 2 s"), r.out());
     assertTrue(
         Thread.getAllStackTraces().keySet().stream()
             .noneMatch(t -> t.getName().equals("demo-status") && t.isAlive()),
         "the status thread was joined");
+  }
+
+  /**
+   * The default demo's 30 s on virtual time: the crates are in the robot's way, and the wander
+   * program's actions turn it away from them (the reporter prints those turns) without it ever
+   * stalling against one.
+   */
+  @Test
+  void theDefaultDemoTurnsAwayFromTheCratesInItsWay() {
+    try (SimWorld world = SimWorld.bundled("office", SimOptions.builder().seed(1).build())) {
+      SimRobot r = world.addRobot("p3dx-sh");
+      ArPose start = r.getTruePose();
+      List<ObstaclesAhead.Crate> crates = ObstaclesAhead.place(world, start);
+      ObstaclesAhead.Crate first = crates.get(0);
+      assertTrue(
+          Math.abs(first.y() - start.y()) - first.across() / 2 - 190 < 100,
+          "the first crate comes within 10 cm of the robot's side (a P3-DX is 380 mm wide): "
+              + first);
+      try (SimulatedRobot sim = SimulatedRobot.connect(world, r)) {
+        ArRobot robot = sim.robot();
+        robot.addRangeDevice(new ArSonarDevice());
+        robot.enableMotors();
+        addWanderActions(robot);
+        TurnReporter turns = new TurnReporter();
+        List<String> lines = new ArrayList<>();
+        int stalledCycles = 0;
+        double furthest = 0;
+        for (int tenth = 1; tenth <= 300; tenth++) {
+          sim.runMillis(100);
+          String l =
+              turns.update(
+                  tenth / 10.0,
+                  robot.getRotVel(),
+                  robot.getClosestSonarRange(0, 90),
+                  robot.getClosestSonarRange(-90, 0));
+          if (l != null) {
+            lines.add(l);
+          }
+          stalledCycles += r.isStalled() ? 1 : 0;
+          furthest = Math.max(furthest, r.getTruePose().x() - start.x()); // the corridor runs east
+        }
+        assertTrue(lines.size() >= 2, "it turned away from things: " + lines);
+        assertEquals(0, stalledCycles, "never pushed against a crate or a wall: " + lines);
+        assertTrue(
+            furthest > first.x() - start.x(),
+            "it got past the first crate (" + furthest + " mm along the corridor): " + lines);
+      }
+    }
+  }
+
+  /**
+   * The five actions {@link org.jaria.tools.examples.GotoActionExample} adds, with its priorities
+   * and settings (that program is quoted line by line next to the thesis's C++, so its actions stay
+   * inline there).
+   */
+  private static void addWanderActions(ArRobot robot) {
+    robot.addAction(new ArActionStallRecover(), 100);
+    robot.addAction(new ArActionBumpers(), 75);
+    robot.addAction(new ArActionAvoidFront("Avoid Front Near", 225, 0), 50);
+    robot.addAction(new ArActionAvoidFront(), 49);
+    robot.addAction(new ArActionConstantVelocity("Constant Velocity", 400), 25);
+  }
+
+  @Test
+  void gyroDemoPressesItsKeysWithoutAKeyConflict() {
+    PrintStream realErr = System.err;
+    ByteArrayOutputStream logged = new ByteArrayOutputStream();
+    System.setErr(new PrintStream(logged, true, StandardCharsets.UTF_8)); // slf4j-simple's output
+    Run r;
+    try {
+      r = jaria("demo", "gyro", "--seconds", "5");
+    } finally {
+      System.setErr(realErr);
+    }
+    String log = logged.toString(StandardCharsets.UTF_8);
+    assertEquals(0, r.status(), r.out() + r.err() + log);
+    assertTrue(r.out().contains("gyro"), r.out());
+    assertTrue(!log.contains("keydrive will not work"), log);
   }
 
   @Test

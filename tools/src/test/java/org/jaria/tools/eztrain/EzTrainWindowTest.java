@@ -42,6 +42,7 @@ import org.jaria.tools.fx.TestImages;
 import org.jaria.tools.simvision.TrainingScene;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
@@ -55,6 +56,7 @@ import org.testfx.util.WaitForAsyncUtils;
  * drag a rectangle over the red book, look at the Thresh view and the blob stats, save the channel
  * and load it again; a robot program sees the blobs through the ACTS server meanwhile.
  */
+@Tag("gui")
 @ExtendWith(ApplicationExtension.class)
 class EzTrainWindowTest {
 

@@ -8,11 +8,13 @@ import java.util.BitSet;
 import java.util.Random;
 import javafx.scene.image.PixelFormat;
 import javafx.scene.image.WritableImage;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.testfx.framework.junit5.ApplicationExtension;
 
 /** The culled, bucketed point renderer draws exactly what a brute-force loop would. */
+@Tag("gui")
 @ExtendWith(ApplicationExtension.class)
 class PointLayerTest {
 

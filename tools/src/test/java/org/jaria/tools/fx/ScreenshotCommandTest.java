@@ -12,6 +12,7 @@ import java.util.HashSet;
 import java.util.Set;
 import org.jaria.acts.image.ImageFiles;
 import org.jaria.acts.image.RgbImage;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
@@ -19,6 +20,7 @@ import org.testfx.framework.junit5.ApplicationExtension;
 import picocli.CommandLine;
 
 /** {@code jaria screenshot} renders each app to a PNG without a display. */
+@Tag("gui")
 @ExtendWith(ApplicationExtension.class)
 class ScreenshotCommandTest {
 
@@ -42,12 +44,13 @@ class ScreenshotCommandTest {
     return c.size();
   }
 
+  /** The README's line: {@code ./jaria screenshot mapper columbia -o mapper.png}. */
   @Test
-  void mapperWithColumbia() throws Exception {
-    Path map = TestFiles.columbiaCopy(dir);
+  void mapperWithTheBundledColumbiaMap() throws Exception {
     Path png = dir.resolve("mapper.png");
     assertEquals(
-        0, run("mapper", map.toString(), "-o", png.toString(), "--size", "800x600"), err::toString);
+        0, run("mapper", "columbia", "-o", png.toString(), "--size", "800x600"), err::toString);
+    assertTrue(out.toString().contains("wrote"), out::toString);
     RgbImage img = ImageFiles.read(png);
     assertEquals(800, img.width());
     assertEquals(600, img.height());
@@ -85,7 +88,8 @@ class ScreenshotCommandTest {
     assertEquals(2, run("mapper", "-o", png.toString(), "--size", "big"));
     assertTrue(err.toString().contains("--size"), err::toString);
     assertEquals(1, run("mapper", dir.resolve("missing.map").toString(), "-o", png.toString()));
-    assertTrue(err.toString().contains("does not exist"), err::toString);
+    assertTrue(err.toString().contains("no map file"), err::toString);
+    assertTrue(err.toString().contains("bundled: office, hall, columbia"), err::toString);
     assertFalse(Files.exists(png));
   }
 }

@@ -24,6 +24,7 @@ import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
 import org.jaria.tools.cli.JariaCli;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
@@ -33,6 +34,7 @@ import picocli.CommandLine;
  * real Pioneer), serving a picture as the camera's video, through the real command line and a real
  * client (real time: a few seconds).
  */
+@Tag("slow")
 class GuiServerCommandTest {
 
   /** Output that lets the test wait for the line saying where the server listens. */

@@ -192,7 +192,7 @@ class MapFileTest {
     files.add(TestFiles.referenceMapCopy(dir, "triangle.map"));
     for (String bundled : ArMap.BUNDLED_MAPS) {
       try (var in = ArMap.class.getResourceAsStream(ArMap.RESOURCE_DIR + bundled + ".map")) {
-        Path f = dir.resolve(bundled + ".map");
+        Path f = dir.resolve("bundled-" + bundled + ".map");
         Files.copy(in, f);
         files.add(f);
       }

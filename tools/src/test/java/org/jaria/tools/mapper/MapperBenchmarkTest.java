@@ -4,11 +4,13 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.jaria.map.ArMap;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.testfx.framework.junit5.ApplicationExtension;
 
 /** {@code jaria bench mapper} runs and prints its table (no timing is checked here). */
+@Tag("gui")
 @ExtendWith(ApplicationExtension.class)
 class MapperBenchmarkTest {
 

@@ -27,6 +27,7 @@ import org.jaria.tools.fx.ScriptedPrompts;
 import org.jaria.tools.fx.TestFiles;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
@@ -36,6 +37,7 @@ import org.testfx.framework.junit5.Start;
 import org.testfx.util.WaitForAsyncUtils;
 
 /** The map editor driven like a user: open a real map, draw, save, reload. */
+@Tag("gui")
 @ExtendWith(ApplicationExtension.class)
 class MapperWindowTest {
 

@@ -26,6 +26,7 @@ import org.jaria.tools.fx.ScriptedPrompts;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.testfx.api.FxRobot;
@@ -40,6 +41,7 @@ import org.testfx.util.WaitForAsyncUtils;
  * drives with the keyboard, edits the configuration, shows the camera, and refuses a wrong password
  * with a clear message. Several monitors watch at once.
  */
+@Tag("gui")
 @ExtendWith(ApplicationExtension.class)
 class MonitorWindowTest {
 

@@ -28,6 +28,7 @@ import org.jaria.tools.fx.ScriptedPrompts;
 import org.jaria.tools.fx.TestImages;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.testfx.api.FxRobot;
@@ -37,6 +38,7 @@ import org.testfx.util.WaitForAsyncUtils;
 import picocli.CommandLine;
 
 /** The simulator view driven like a user: step it, place a robot, drag an obstacle, run it. */
+@Tag("gui")
 @ExtendWith(ApplicationExtension.class)
 class SimViewWindowTest {
 
