@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
 import org.jaria.connection.ArDeviceConnection;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.laser.LmsCommands;
@@ -38,7 +39,7 @@ public final class Lms200Emulator extends EmulatedDevice {
   private boolean installMode;
   private boolean streaming;
   private long nextScanAt;
-  private long scansSent;
+  private final AtomicLong scansSent = new AtomicLong();
 
   /**
    * An LMS-200 on {@code connection}.
@@ -122,10 +123,7 @@ public final class Lms200Emulator extends EmulatedDevice {
     boolean ok = t.dataLength() == 4;
     int w = ok ? t.u16(0) : 0;
     int inc = ok ? t.u16(2) : 0;
-    ok =
-        ok
-            && (w == 180 || w == 100)
-            && (inc == 100 || inc == 50 || (inc == 25 && w == 100));
+    ok = ok && (w == 180 || w == 100) && (inc == 100 || inc == 50 || (inc == 25 && w == 100));
     if (ok) {
       degrees = w;
       incrementHundredths = inc;
@@ -182,12 +180,12 @@ public final class Lms200Emulator extends EmulatedDevice {
       nextScanAt = now + periodNanos; // fell behind: do not burst to catch up
     }
     byte[] bytes = scanTelegram().encode();
-    if (faults.unplugAfterScans() >= 0 && scansSent >= faults.unplugAfterScans()) {
+    if (faults.unplugAfterScans() >= 0 && scansSent.get() >= faults.unplugAfterScans()) {
       unplugMidway(bytes);
       return;
     }
     send(bytes, bytes.length);
-    scansSent++;
+    scansSent.incrementAndGet();
   }
 
   /** The scan telegram for what the sensor sees now. */
@@ -211,6 +209,6 @@ public final class Lms200Emulator extends EmulatedDevice {
 
   /** Scans sent so far (read from the device's thread, or after it ended). */
   public long getScansSent() {
-    return scansSent;
+    return scansSent.get();
   }
 }
