@@ -8,6 +8,7 @@ import org.jaria.robot.ArRobot;
 import org.jaria.tools.examples.GotoActionExample;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
@@ -54,16 +55,29 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
 
     @Spec CommandSpec spec;
 
+    @Option(
+        names = "--laser",
+        paramLabel = "lms2xx|urg",
+        description =
+            "Also avoid with a laser: the simulator's, presented as a real LMS-200 or URG on a"
+                + " loopback port, or with --remote the one on --laser-port.")
+    String laser;
+
+    @Option(names = "--laser-port", description = "The laser's serial device with --remote.")
+    String laserPort;
+
     @Override
     public Integer call() throws Exception {
       PrintWriter out = spec.commandLine().getOut();
       if (remote != null) {
-        try (DemoTicker ticker = new DemoTicker("demo-status", seconds)) {
-          return GotoActionExample.run(remoteArgs(), robot -> watch(ticker, robot, null, out));
+        try (DemoTicker ticker = new DemoTicker("demo-status", seconds);
+            DemoLaser l = laser == null ? null : new DemoLaser(laser, laserPort, null)) {
+          return GotoActionExample.run(remoteArgs(), robot -> watch(ticker, robot, null, l, out));
         }
       }
       try (EmbeddedSimulator sim = new EmbeddedSimulator(map, model, seed);
-          DemoTicker ticker = new DemoTicker("demo-status", seconds)) {
+          DemoTicker ticker = new DemoTicker("demo-status", seconds);
+          DemoLaser l = laser == null ? null : new DemoLaser(laser, null, sim)) {
         out.printf(
             Locale.ROOT,
             "Simulator: %s map, a %s on tcp port %d (real time).%n",
@@ -72,7 +86,7 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
             sim.port());
         out.flush();
         int status =
-            GotoActionExample.run(sim.connectArgs(), robot -> watch(ticker, robot, sim, out));
+            GotoActionExample.run(sim.connectArgs(), robot -> watch(ticker, robot, sim, l, out));
         ArPose truth = sim.robot.getTruePose();
         out.printf(Locale.ROOT, "Finished; the simulator's true pose of the robot is %s.%n", truth);
         out.flush();
@@ -81,11 +95,17 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
     }
 
     /** Prints a status line every second and stops the robot after the time limit. */
-    void watch(DemoTicker ticker, ArRobot robot, EmbeddedSimulator sim, PrintWriter out) {
+    void watch(
+        DemoTicker ticker, ArRobot robot, EmbeddedSimulator sim, DemoLaser l, PrintWriter out) {
+      if (l != null) {
+        l.attach(robot, out);
+      }
       ticker.start(
           robot,
           second -> {
-            out.println(statusLine(second, robot, sim));
+            out.println(
+                statusLine(second, robot, sim)
+                    + (l == null ? "" : "  front laser " + l.closest(-45, 45) + "mm"));
             out.flush();
           });
     }
