@@ -62,7 +62,9 @@ class LaserConnectorTest {
           assertSame(laser, robot.findRangeDevice(laser.getName()), "a range device of the robot");
           assertEquals(robot.getRobotParams().getLaserX(), laser.getSensorPosition().x());
           assertTrue(laser.waitForScans(2, 20_000));
-          assertTrue(lms.getScansSent() >= 2);
+          // The emulator counts a scan once its write returned, so the last one received may not be
+          // counted yet.
+          assertTrue(lms.getScansSent() >= 1);
           // From the robot's centre: the wall ahead at 3 m, the wall on the left at 2 m.
           assertEquals(3000, laser.currentReadingPolar(-2, 2), 2.0);
           assertEquals(2000, laser.currentReadingPolar(85, 95), 2.0);

@@ -85,7 +85,9 @@ class Lms200EmulatorTest {
       assertEquals(38400, port.getBaud(), "the driver switched the port after the laser did");
       assertEquals(38400, device.getBaud(), "and so did the laser");
       assertTrue(laser.waitForScans(3, PATIENCE_MS), "three scans arrived");
-      assertTrue(lms.getScansSent() >= 3);
+      // The emulator counts a scan once its write returned, so the last one received may not be
+      // counted yet.
+      assertTrue(lms.getScansSent() >= 2);
       LaserScan s = laser.getLaserScan();
       assertEquals(361, s.size());
       ArPose mount = laserPose();

@@ -84,7 +84,9 @@ class UrgEmulatorTest {
       assertEquals("SCIP 2.0", laser.getVersion().get("PROT"));
       assertEquals(5600, laser.getMaxRange());
       assertTrue(laser.waitForScans(3, PATIENCE_MS));
-      assertTrue(urg.getScansSent() >= 3);
+      // The emulator counts a scan once its write returned, so the last one received may not be
+      // counted yet.
+      assertTrue(urg.getScansSent() >= 2);
       LaserScan s = laser.getLaserScan();
       assertEquals(513, s.size(), "steps 128..640");
       assertEquals(-90, s.getAngle(0), 1e-9);

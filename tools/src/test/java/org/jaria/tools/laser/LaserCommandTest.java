@@ -73,7 +73,9 @@ class LaserCommandTest {
               && r.out().contains(String.format(java.util.Locale.ROOT, "ahead %.0f mm", ahead)),
           r.out());
       assertTrue(r.out().contains("3 scans; dropped 0"), r.out());
-      assertTrue(lms.getScansSent() >= 3);
+      // The emulator counts a scan once its write returned, so the last one received may not be
+      // counted yet.
+      assertTrue(lms.getScansSent() >= 2);
     }
   }
 
@@ -91,7 +93,7 @@ class LaserCommandTest {
       assertEquals(0, r.status(), r.err());
       assertTrue(r.out().contains("scan 2: 513 readings"), r.out());
       assertTrue(r.out().contains("URG-04LX"), r.out());
-      assertTrue(urg.getScansSent() >= 2);
+      assertTrue(urg.getScansSent() >= 1);
     }
   }
 
