@@ -90,6 +90,7 @@ public final class ArnlBenchmark {
               g.medianSeconds(),
               g.p95Seconds()));
     }
+    sb.append(LaserLocalizationBench.report(quick));
 
     int pairs = quick ? 20 : 100;
     PlanningBench.Result p = PlanningBench.run(pairs);

@@ -18,6 +18,7 @@ import picocli.CommandLine.Command;
     subcommands = {
       VersionCommand.class,
       PacketsCommand.class,
+      org.jaria.tools.laser.LaserCommand.class,
       MapCommand.class,
       org.jaria.tools.simview.SimGuiCommand.class,
       org.jaria.tools.simview.SimViewCommand.class,

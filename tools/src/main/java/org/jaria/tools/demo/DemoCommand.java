@@ -78,6 +78,17 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
             "Watch it in the simulator view (needs a display); closing the window ends the demo.")
     boolean gui;
 
+    @Option(
+        names = "--laser",
+        paramLabel = "lms2xx|urg",
+        description =
+            "Also avoid with a laser: the simulator's, presented as a real LMS-200 or URG on a"
+                + " loopback port, or with --remote the one on --laser-port.")
+    String laser;
+
+    @Option(names = "--laser-port", description = "The laser's serial device with --remote.")
+    String laserPort;
+
     @Override
     public Integer call() throws Exception {
       PrintWriter out = spec.commandLine().getOut();
@@ -96,14 +107,16 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
       }
       if (remote != null) {
         checkRemote();
-        try (DemoTicker ticker = new DemoTicker("demo-status", seconds)) {
+        try (DemoTicker ticker = new DemoTicker("demo-status", seconds);
+            DemoLaser l = laser == null ? null : new DemoLaser(laser, laserPort, null)) {
           out.println(stopsAfter(seconds));
           out.flush();
-          return GotoActionExample.run(remoteArgs(), robot -> watch(ticker, robot, null, out));
+          return GotoActionExample.run(remoteArgs(), robot -> watch(ticker, robot, null, l, out));
         }
       }
       try (EmbeddedSimulator sim = new EmbeddedSimulator(map, model, seed);
-          DemoTicker ticker = new DemoTicker("demo-status", seconds)) {
+          DemoTicker ticker = new DemoTicker("demo-status", seconds);
+          DemoLaser l = laser == null ? null : new DemoLaser(laser, null, sim)) {
         ArPose start = sim.robot.getTruePose();
         List<ObstaclesAhead.Crate> crates = ObstaclesAhead.place(sim.world, start);
         out.printf(
@@ -123,15 +136,16 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
         out.println(stopsAfter(seconds));
         out.flush();
         if (!gui) {
-          return runWander(sim, ticker, out);
+          return runWander(sim, ticker, l, out);
         }
-        return runWithWindow(sim, ticker, out, err);
+        return runWithWindow(sim, ticker, l, out, err);
       }
     }
 
-    private int runWander(EmbeddedSimulator sim, DemoTicker ticker, PrintWriter out) {
+    private int runWander(
+        EmbeddedSimulator sim, DemoTicker ticker, DemoLaser l, PrintWriter out) {
       int status =
-          GotoActionExample.run(sim.connectArgs(), robot -> watch(ticker, robot, sim, out));
+          GotoActionExample.run(sim.connectArgs(), robot -> watch(ticker, robot, sim, l, out));
       ArPose truth = sim.robot.getTruePose();
       out.printf(Locale.ROOT, "Finished; the simulator's true pose of the robot is %s.%n", truth);
       out.flush();
@@ -140,7 +154,7 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
 
     /** The program on a thread of its own while this one shows the window until it closes. */
     private int runWithWindow(
-        EmbeddedSimulator sim, DemoTicker ticker, PrintWriter out, PrintWriter err)
+        EmbeddedSimulator sim, DemoTicker ticker, DemoLaser l, PrintWriter out, PrintWriter err)
         throws InterruptedException {
       AtomicReference<ArRobot> running = new AtomicReference<>();
       AtomicInteger status = new AtomicInteger();
@@ -152,7 +166,7 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
                         sim.connectArgs(),
                         robot -> {
                           running.set(robot);
-                          watch(ticker, robot, sim, out);
+                          watch(ticker, robot, sim, l, out);
                         }));
                 // The demo's time is up (or the robot stopped): the window goes with it.
                 Platform.runLater(() -> List.copyOf(Window.getWindows()).forEach(Window::hide));
@@ -173,7 +187,11 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
     /**
      * Prints a status line every second, and a line whenever the robot turns away from something.
      */
-    void watch(DemoTicker ticker, ArRobot robot, EmbeddedSimulator sim, PrintWriter out) {
+    void watch(
+        DemoTicker ticker, ArRobot robot, EmbeddedSimulator sim, DemoLaser l, PrintWriter out) {
+      if (l != null) {
+        l.attach(robot, out);
+      }
       TurnReporter turns = new TurnReporter();
       long startNanos = robot.getClock().nanoTime();
       robot.addUserTask(
@@ -194,7 +212,9 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
       ticker.start(
           robot,
           second -> {
-            out.println(statusLine(second, robot, sim));
+            out.println(
+                statusLine(second, robot, sim)
+                    + (l == null ? "" : "  front laser " + l.closest(-45, 45) + "mm"));
             out.flush();
           });
     }

@@ -1,0 +1,244 @@
+package org.jaria.laser;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.concurrent.TimeUnit;
+import org.jaria.connection.ArDeviceConnection;
+import org.jaria.connection.ArSerialConnection;
+import org.jaria.protocol.DropReason;
+
+/**
+ * A SICK LMS-200 family laser (LMS-200, 291, ...) over its binary telegrams (ARIA's {@code
+ * ArLMS2xx}). Connecting switches the serial rate from the laser's power-up 9600 baud to the chosen
+ * one, sets the field of view and increment, enters installation mode to set the units and
+ * reflector bits, then starts continuous output; each scan telegram becomes one scan.
+ *
+ * <p>Every set-up step is sent up to three times, so a telegram damaged on the line costs a retry,
+ * not the connection. If the laser does not answer at 9600 baud it is tried at the chosen rate (it
+ * still runs there when a program restarts without power-cycling it).
+ */
+public class ArLMS2xx extends ArLaser {
+
+  /** Set-up steps sent before giving up. */
+  private static final int TRIES = 3;
+
+  private final LmsSettings settings;
+  private final LmsReceiver receiver;
+  private final byte[] buf = new byte[2048];
+  private final Deque<LmsTelegram> inbox = new ArrayDeque<>();
+  private volatile long answerTimeoutMs = 2000;
+  private volatile int[] lastReflectance = new int[0];
+
+  /** An LMS-200 with ARIA's default settings (180° by 1°, mm, 38400 baud). */
+  public ArLMS2xx() {
+    this("lms2xx_1", LmsSettings.DEFAULT);
+  }
+
+  /** An LMS-200 set up as {@code settings} says. */
+  public ArLMS2xx(String name, LmsSettings settings) {
+    super(name, settings.maxRangeMm());
+    this.settings = settings;
+    this.receiver = new LmsReceiver(true, getDropCounters());
+  }
+
+  /** How the laser is set up. */
+  public LmsSettings getSettings() {
+    return settings;
+  }
+
+  /** How long to wait for each answer during the set-up, ms (ARIA waits up to 10 s). */
+  public void setAnswerTimeoutMs(long ms) {
+    answerTimeoutMs = ms;
+  }
+
+  /** Reflectance (0–7) of each reading of the last scan. */
+  public int[] getLastReflectance() {
+    return lastReflectance.clone();
+  }
+
+  @Override
+  protected int startingBaud(ArSerialConnection serial) {
+    return LmsSettings.POWER_UP_BAUD;
+  }
+
+  @Override
+  protected void handshake(ArDeviceConnection c) throws IOException, InterruptedException {
+    receiver.reset();
+    inbox.clear();
+    if (c instanceof ArSerialConnection serial) {
+      switchBaud(c, serial);
+    } else {
+      ask(c, LmsSettings.modeChange(LmsCommands.MODE_STOP), LmsCommands.MODE_ANSWER, "stop");
+    }
+    LmsTelegram v = ask(c, settings.variant(), LmsCommands.VARIANT_ANSWER, "field of view");
+    if (v.dataLength() < 1 || v.u8(0) != 1) {
+      throw new IOException(
+          "the laser refused "
+              + settings.degrees()
+              + "° by "
+              + settings.increment()
+              + "°: use 180 or 100 degrees by 1, 0.5 (or 0.25 with 100)");
+    }
+    LmsTelegram install =
+        ask(
+            c,
+            LmsSettings.modeChange(
+                LmsCommands.MODE_INSTALL, LmsCommands.PASSWORD.getBytes(StandardCharsets.US_ASCII)),
+            LmsCommands.MODE_ANSWER,
+            "installation mode");
+    checkMode(install, "installation mode");
+    ask(c, settings.configuration(), LmsCommands.CONFIGURE_ANSWER, "units and reflector bits");
+    LmsTelegram start =
+        ask(
+            c,
+            LmsSettings.modeChange(LmsCommands.MODE_CONTINUOUS),
+            LmsCommands.MODE_ANSWER,
+            "continuous output");
+    checkMode(start, "continuous output");
+  }
+
+  private void switchBaud(ArDeviceConnection c, ArSerialConnection serial)
+      throws IOException, InterruptedException {
+    int target = settings.baud();
+    if (target == serial.getBaud()) {
+      ask(c, LmsSettings.modeChange(LmsCommands.MODE_STOP), LmsCommands.MODE_ANSWER, "stop");
+      return;
+    }
+    LmsTelegram answer = tryAsk(c, LmsSettings.baudChange(target), LmsCommands.MODE_ANSWER);
+    serial.setBaud(target);
+    if (answer == null) {
+      // Perhaps it already runs at the target rate (not power-cycled since the last program).
+      LmsTelegram stop =
+          tryAsk(c, LmsSettings.modeChange(LmsCommands.MODE_STOP), LmsCommands.MODE_ANSWER);
+      if (stop == null) {
+        throw new IOException(
+            "no answer at "
+                + LmsSettings.POWER_UP_BAUD
+                + " or "
+                + target
+                + " baud: is the laser powered (it takes about 30 s to start) and on this port?");
+      }
+    }
+  }
+
+  private static void checkMode(LmsTelegram t, String what) throws IOException {
+    int status = t.dataLength() < 1 ? -1 : t.u8(0);
+    if (status != 0) {
+      String why =
+          switch (status) {
+            case 1 -> "wrong password";
+            case 2 -> "LMI fault";
+            default -> "status " + status;
+          };
+      throw new IOException("the laser refused " + what + " (" + why + ")");
+    }
+  }
+
+  /** Sends {@code t} until the answer {@code answer} arrives (up to {@link #TRIES} times). */
+  private LmsTelegram ask(ArDeviceConnection c, LmsTelegram t, int answer, String what)
+      throws IOException, InterruptedException {
+    LmsTelegram got = tryAsk(c, t, answer);
+    if (got == null) {
+      throw new IOException(
+          "no answer to the "
+              + what
+              + " request after "
+              + TRIES
+              + " tries of "
+              + answerTimeoutMs
+              + " ms: check the laser's power, cable and baud rate");
+    }
+    return got;
+  }
+
+  private LmsTelegram tryAsk(ArDeviceConnection c, LmsTelegram t, int answer)
+      throws IOException, InterruptedException {
+    byte[] bytes = t.encode();
+    for (int i = 0; i < TRIES; i++) {
+      c.write(bytes, 0, bytes.length);
+      LmsTelegram got = await(c, answer);
+      if (got != null) {
+        return got;
+      }
+    }
+    return null;
+  }
+
+  /** Reads until a telegram with code {@code answer} arrives (others are dropped) or time is up. */
+  private LmsTelegram await(ArDeviceConnection c, int answer)
+      throws IOException, InterruptedException {
+    long deadline = c.clock().nanoTime() + TimeUnit.MILLISECONDS.toNanos(answerTimeoutMs);
+    while (true) {
+      while (!inbox.isEmpty()) {
+        LmsTelegram t = inbox.poll();
+        if (t.command() == answer) {
+          return t;
+        }
+        if (t.command() == LmsCommands.NOT_ACKNOWLEDGED) {
+          return null;
+        }
+      }
+      long left = TimeUnit.NANOSECONDS.toMillis(deadline - c.clock().nanoTime());
+      if (left <= 0) {
+        return null;
+      }
+      if (Thread.interrupted()) {
+        throw new InterruptedException();
+      }
+      int n = c.read(buf, 0, buf.length, Math.min(left, 100));
+      if (n < 0) {
+        throw new IOException("the connection closed");
+      }
+      receiver.feed(buf, 0, n, inbox::add);
+    }
+  }
+
+  @Override
+  protected void pump(ArDeviceConnection c, long waitMs) throws IOException {
+    int n = c.read(buf, 0, buf.length, waitMs);
+    if (n < 0) {
+      throw new IOException("the connection closed");
+    }
+    receiver.feed(buf, 0, n, inbox::add);
+    while (!inbox.isEmpty()) {
+      LmsTelegram t = inbox.poll();
+      if (t.command() == LmsCommands.SCAN) {
+        takeScan(t);
+      }
+    }
+  }
+
+  private void takeScan(LmsTelegram t) {
+    LmsScanData d;
+    try {
+      d = LmsScanData.decode(t, settings.reflectorBits());
+    } catch (IllegalArgumentException e) {
+      getDropCounters().drop(DropReason.MALFORMED, e.getMessage());
+      return;
+    }
+    if (d.size() != settings.readingCount()) {
+      getDropCounters()
+          .drop(
+              DropReason.MALFORMED,
+              "scan of " + d.size() + " readings, expected " + settings.readingCount());
+      return;
+    }
+    double[] angles = new double[d.size()];
+    double[] ranges = new double[d.size()];
+    double first = -settings.degrees() / 2.0;
+    for (int i = 0; i < angles.length; i++) {
+      angles[i] = first + i * settings.increment();
+      ranges[i] = d.distance(i);
+    }
+    lastReflectance = d.reflectance();
+    publish(angles, ranges);
+  }
+
+  @Override
+  protected void stopMeasuring(ArDeviceConnection c) throws IOException {
+    byte[] stop = LmsSettings.modeChange(LmsCommands.MODE_STOP).encode();
+    c.write(stop, 0, stop.length);
+  }
+}

@@ -1,0 +1,184 @@
+package org.jaria.sim.devices;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.List;
+import org.jaria.action.LaserScan;
+import org.jaria.clock.Clock;
+import org.jaria.connection.ArSerialConnection;
+import org.jaria.connection.ArTcpConnection;
+import org.jaria.geom.ArLineSegment;
+import org.jaria.geom.ArPose;
+import org.jaria.laser.ArLMS2xx;
+import org.jaria.laser.ArSick;
+import org.jaria.laser.LmsSettings;
+import org.jaria.sim.RobotOptions;
+import org.jaria.sim.SimOptions;
+import org.jaria.sim.SimRobot;
+import org.jaria.sim.SimWorld;
+import org.jaria.testing.SocatPty;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The LMS-200 driver against a simulated robot's laser presented as a real LMS-200 on a serial
+ * pseudo-terminal (socat) or a TCP port: the whole set-up conversation, the baud switch, scans that
+ * match the world, and the faults of real lasers.
+ */
+class Lms200EmulatorTest {
+
+  /** Bound on every wait: generous, so a slow machine is not a failure; never a pacing device. */
+  private static final long PATIENCE_MS = 20_000;
+
+  @TempDir Path dir;
+  private SimWorld world;
+  private SimRobot robot;
+
+  @BeforeEach
+  void world() {
+    // A 6 m x 4 m room; the robot at its centre facing +x, so the wall ahead is 3 m away.
+    List<ArLineSegment> walls =
+        List.of(
+            new ArLineSegment(-3000, -2000, 3000, -2000),
+            new ArLineSegment(3000, -2000, 3000, 2000),
+            new ArLineSegment(3000, 2000, -3000, 2000),
+            new ArLineSegment(-3000, 2000, -3000, -2000));
+    world = SimWorld.ofLines(walls, new ArPose(0, 0, 0), SimOptions.defaults());
+    robot = world.addRobot(RobotOptions.of("p3dx-sh").withLaser(true).withStartPose(ArPose.ORIGIN));
+  }
+
+  @AfterEach
+  void close() {
+    world.close();
+  }
+
+  private ArPose laserPose() {
+    var m = robot.getModel();
+    return new ArPose(m.getLaserX(), m.getLaserY(), m.getLaserTh());
+  }
+
+  private static double at(LaserScan s, double angle) {
+    for (int i = 0; i < s.size(); i++) {
+      if (Math.abs(s.getAngle(i) - angle) < 1e-9) {
+        return s.getRange(i);
+      }
+    }
+    throw new AssertionError("no reading at " + angle);
+  }
+
+  @Test
+  void connectsThroughAPtySwitchesTo38400AndReadsTheWorld() throws Exception {
+    try (SocatPty pty = new SocatPty(dir);
+        ArSerialConnection device = new ArSerialConnection(pty.b.toString(), 9600, Clock.system());
+        Lms200Emulator lms =
+            Lms200Emulator.start(device, LaserSensor.of(robot), DeviceFaults.NONE, 20);
+        ArSick laser = new ArSick("sick", new LmsSettings(180, 0.5, "1mm", 1, 38400))) {
+      ArSerialConnection port = new ArSerialConnection(pty.a.toString(), 9600, Clock.system());
+      laser.setDeviceConnection(port);
+      assertTrue(laser.blockingConnect(), laser.getConnectFailure());
+      assertEquals(38400, port.getBaud(), "the driver switched the port after the laser did");
+      assertEquals(38400, device.getBaud(), "and so did the laser");
+      assertTrue(laser.waitForScans(3, PATIENCE_MS), "three scans arrived");
+      // The emulator counts a scan once its write returned, so the last one received may not be
+      // counted yet.
+      assertTrue(lms.getScansSent() >= 2);
+      LaserScan s = laser.getLaserScan();
+      assertEquals(361, s.size());
+      ArPose mount = laserPose();
+      // Ahead: the wall at x = 3000, seen from the laser's mounting point.
+      assertEquals(3000 - mount.x(), at(s, 0), 1.0);
+      // Left: the wall at y = 2000.
+      assertEquals(2000 - mount.y(), at(s, 90), 1.0);
+      assertEquals(2000 + mount.y(), at(s, -90), 1.0);
+      // Polar query of the range device: the closest obstacle in front, from the robot's centre.
+      laser.setSensorPosition(mount.x(), mount.y(), mount.th());
+      assertTrue(laser.waitForScans(laser.getScanCount() + 1, PATIENCE_MS));
+      assertEquals(2000, laser.currentReadingPolar(80, 100), 2.0);
+      assertEquals(0, laser.getDropCounters().total(), "a clean line damages nothing");
+      laser.disconnect();
+      assertFalse(laser.isConnected());
+    }
+  }
+
+  @Test
+  void slowAnswersAndLostBytesCostRetriesNotTheConnection() throws Exception {
+    DeviceFaults faults = DeviceFaults.NONE.withAnswerDelayMs(300).withDropEveryNthByte(500);
+    try (SocatPty pty = new SocatPty(dir);
+        ArSerialConnection device = new ArSerialConnection(pty.b.toString(), 9600, Clock.system());
+        Lms200Emulator lms = Lms200Emulator.start(device, LaserSensor.of(robot), faults, 20);
+        ArLMS2xx laser = new ArLMS2xx()) {
+      laser.setDeviceConnection(new ArSerialConnection(pty.a.toString(), 9600, Clock.system()));
+      assertTrue(laser.blockingConnect(), laser.getConnectFailure());
+      assertTrue(laser.waitForScans(10, PATIENCE_MS), "scans keep coming despite lost bytes");
+      assertTrue(laser.getDropCounters().total() > 0, "the damaged scans were counted and dropped");
+      assertEquals(181, laser.getLaserScan().size());
+      assertTrue(lms.isRunning());
+      assertEquals(3000 - laserPose().x(), at(laser.getLaserScan(), 0), 1.0);
+    }
+  }
+
+  @Test
+  void aLaserUnpluggedMidScanIsReportedNotWaitedFor() throws Exception {
+    try (SocatPty pty = new SocatPty(dir);
+        ArSerialConnection device = new ArSerialConnection(pty.b.toString(), 9600, Clock.system());
+        Lms200Emulator lms =
+            Lms200Emulator.start(
+                device, LaserSensor.of(robot), DeviceFaults.NONE.withUnplugAfterScans(3), 20);
+        ArLMS2xx laser = new ArLMS2xx()) {
+      laser.setConnectionTimeoutMs(1000);
+      laser.setDeviceConnection(new ArSerialConnection(pty.a.toString(), 9600, Clock.system()));
+      boolean[] told = new boolean[1];
+      laser.addDisconnectOnErrorCB(() -> told[0] = true);
+      assertTrue(laser.blockingConnect(), laser.getConnectFailure());
+      assertTrue(lms.join(PATIENCE_MS), "the emulator was unplugged");
+      assertTrue(lms.wasUnplugged());
+      assertTrue(laser.waitForDisconnect(PATIENCE_MS), "the driver noticed");
+      assertEquals(3, laser.getScanCount(), "the half scan was not taken");
+      assertTrue(told[0], "the disconnect-on-error callbacks ran");
+      String why = laser.getConnectFailure();
+      assertTrue(why.contains("lost"), why);
+    }
+  }
+
+  @Test
+  void reconnectsOverTcpAfterAnUnplug() throws Exception {
+    try (DeviceTcpServer server =
+            new DeviceTcpServer(
+                0,
+                (c, i) ->
+                    new Lms200Emulator(
+                        c,
+                        LaserSensor.of(robot),
+                        i == 0 ? DeviceFaults.NONE.withUnplugAfterScans(2) : DeviceFaults.NONE,
+                        20));
+        ArLMS2xx laser = new ArLMS2xx()) {
+      laser.setConnectionTimeoutMs(1000);
+      laser.setDeviceConnection(new ArTcpConnection("127.0.0.1", server.getPort()));
+      assertTrue(laser.blockingConnect(), laser.getConnectFailure());
+      assertTrue(laser.waitForDisconnect(PATIENCE_MS), "lost after the unplug");
+      assertEquals(2, laser.getScanCount());
+      assertTrue(laser.blockingConnect(), "reconnects: " + laser.getConnectFailure());
+      assertTrue(laser.waitForScans(5, PATIENCE_MS), "scans resume");
+      assertNotNull(laser.getLaserScan());
+      assertEquals(2, server.getDevices().size());
+    }
+  }
+
+  @Test
+  void noLaserOnThePortFailsWithAClearMessage() throws Exception {
+    try (SocatPty pty = new SocatPty(dir);
+        ArLMS2xx laser = new ArLMS2xx()) {
+      laser.setAnswerTimeoutMs(200);
+      laser.setDeviceConnection(new ArSerialConnection(pty.a.toString(), 9600, Clock.system()));
+      assertFalse(laser.blockingConnect());
+      String why = laser.getConnectFailure();
+      assertTrue(why.contains("no answer at 9600 or 38400 baud"), why);
+    }
+  }
+}
