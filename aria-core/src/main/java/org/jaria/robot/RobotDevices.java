@@ -152,17 +152,7 @@ public abstract class RobotDevices extends RobotMotion {
    * correction. Called on the cycle thread for every SIP.
    */
   public void setEncoderCorrectionCallback(HeadingCorrection correction) {
-    processor.setHeadingCorrection(correction == null ? null : correction::correctedDeltaTh);
-  }
-
-  /** Corrects one odometry heading change (see {@link #setEncoderCorrectionCallback}). */
-  @FunctionalInterface
-  public interface HeadingCorrection {
-    /**
-     * The heading change to use, degrees, given the odometry's change in x, y (mm) and heading
-     * (degrees) since the last SIP, and the clock time of this SIP.
-     */
-    double correctedDeltaTh(double deltaX, double deltaY, double deltaTh, long timeNanos);
+    processor.setHeadingCorrection(correction);
   }
 
   // ================================================================ actions

@@ -24,13 +24,6 @@ final class SipProcessor {
 
   private static final Logger log = LoggerFactory.getLogger(SipProcessor.class);
 
-  /** Corrects each odometry heading change, e.g. with a gyro (ARIA's encoder correction). */
-  @FunctionalInterface
-  interface HeadingCorrection {
-    /** Returns the heading change to use, degrees, given the raw odometry deltas. */
-    double correctedDeltaTh(double deltaX, double deltaY, double deltaTh, long timeNanos);
-  }
-
   private ArRobotParams params;
   private final List<ArSensorReading> sonars = new ArrayList<>();
   private boolean first = true;
@@ -111,7 +104,8 @@ final class SipProcessor {
     rawEncoderPose =
         new ArPose(rawEncoderPose.x() + dx, rawEncoderPose.y() + dy, rawEncoderPose.th() + dth);
     HeadingCorrection c = headingCorrection;
-    if (c != null && !first) {
+    // As in ARIA, the correction sees every SIP, the first one (with zero deltas) included.
+    if (c != null) {
       dth = c.correctedDeltaTh(dx, dy, dth, nowNanos);
       // Rotate the position delta from the raw heading frame into the corrected one.
       double rot = Math.toRadians(ArMath.subAngle(encoderPose.th() + dth, rawEncoderPose.th()));
@@ -156,37 +150,35 @@ final class SipProcessor {
             ? sip.getRotVel() / 10.0
             : Math.toDegrees((rightVel - leftVel) / 2.0 * p.getDiffConvFactor());
     last =
-        new RobotStatus(
-            counter,
-            nowNanos,
-            globalPose,
-            encoderPose,
-            rawEncoderPose,
-            (leftVel + rightVel) / 2.0,
-            rotVel,
-            leftVel,
-            rightVel,
-            battery,
-            realBattery,
-            sip.getStallAndBumpers(),
-            control,
-            sip.getFlags(),
-            2 * sip.getCompass(),
-            n > 1 ? sip.getAnPort() : 0,
-            n > 2 ? sip.getAnalog() : 0,
-            n > 3 ? sip.getDigIn() : 0,
-            n > 4 ? sip.getDigOut() : 0,
-            n > 0 ? sip.getGripState() : 0,
-            sip.has(StandardSip.Optional.CHARGE_STATE) ? sip.getChargeState() : -1,
-            sip.has(StandardSip.Optional.FAULT_FLAGS) ? sip.getFaultFlags() : 0,
-            sip.isMoving(),
-            odometerDistance,
-            odometerDegrees,
-            sonars);
+        RobotStatus.builder()
+            .counter(counter)
+            .timeNanos(nowNanos)
+            .pose(globalPose)
+            .encoderPose(encoderPose)
+            .rawEncoderPose(rawEncoderPose)
+            .vel((leftVel + rightVel) / 2.0)
+            .rotVel(rotVel)
+            .wheelVels(leftVel, rightVel)
+            .batteryVoltage(battery)
+            .realBatteryVoltage(realBattery)
+            .stallValue(sip.getStallAndBumpers())
+            .control(control)
+            .flags(sip.getFlags())
+            .compass(2 * sip.getCompass())
+            .anPort(n > 1 ? sip.getAnPort() : 0)
+            .analog(n > 2 ? sip.getAnalog() : 0)
+            .digIn(n > 3 ? sip.getDigIn() : 0)
+            .digOut(n > 4 ? sip.getDigOut() : 0)
+            .gripState(n > 0 ? sip.getGripState() : 0)
+            .chargeState(sip.has(StandardSip.Optional.CHARGE_STATE) ? sip.getChargeState() : -1)
+            .faultFlags(sip.has(StandardSip.Optional.FAULT_FLAGS) ? sip.getFaultFlags() : 0)
+            .moving(sip.isMoving())
+            .odometer(odometerDistance, odometerDegrees)
+            .sonars(sonars)
+            .build();
     return last;
   }
 
-  /** A 15-bit counter difference, corrected for wrap-around. */
   /**
    * A heading change in angle units (4096 per turn), folded into -2048..2047: the SIP reports
    * -180..+180 degrees, so crossing 180 would otherwise look like a whole turn the other way.
@@ -196,6 +188,10 @@ final class SipProcessor {
     return d;
   }
 
+  /**
+   * A difference of two 15-bit position counters (x, y), corrected for wrap-around: the SIP's
+   * counters roll over at 32768, and no robot moves 4096 counts in one cycle.
+   */
   static int wrap15(int delta) {
     if (delta > 0x1000) {
       return delta - 0x8000;
