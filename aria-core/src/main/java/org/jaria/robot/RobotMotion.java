@@ -17,12 +17,12 @@ import org.jaria.protocol.ArRobotPacket;
 public abstract class RobotMotion extends RobotState {
 
   final ArRobotPacketSender sender;
-  final MotionReflector motion;
+  final StateReflector motion;
 
   RobotMotion(Clock clock, ArRobotParams params) {
     super(clock, params);
     this.sender = new ArRobotPacketSender(clock);
-    this.motion = new MotionReflector(clock, sender, this::getStatus);
+    this.motion = new StateReflector(clock, sender, this::getStatus);
   }
 
   // ---------------------------------------------------------------- motion commands
