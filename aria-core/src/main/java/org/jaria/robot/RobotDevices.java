@@ -1,5 +1,6 @@
 package org.jaria.robot;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -24,7 +25,11 @@ public abstract class RobotDevices extends RobotMotion {
   final CopyOnWriteArrayList<ArRangeDevice> rangeDevices = new CopyOnWriteArrayList<>();
   private final CopyOnWriteArrayList<ArResolver.PrioritizedAction> actions =
       new CopyOnWriteArrayList<>();
+  private final Object desiredLock = new Object();
+
+  @GuardedBy("desiredLock")
   private final ArActionDesired actionDesired = new ArActionDesired();
+
   private volatile ArResolver resolver = new ArPriorityResolver();
 
   RobotDevices(Clock clock, ArRobotParams params) {
@@ -221,7 +226,7 @@ public abstract class RobotDevices extends RobotMotion {
   /** The actions' combined desire in the last cycle (a copy). */
   public ArActionDesired getActionDesired() {
     ArActionDesired copy = new ArActionDesired();
-    synchronized (actionDesired) {
+    synchronized (desiredLock) {
       copy.copyFrom(actionDesired);
     }
     return copy;
@@ -229,7 +234,7 @@ public abstract class RobotDevices extends RobotMotion {
 
   /** Runs the resolver over the actions (when connected); returns this cycle's desire. */
   ArActionDesired resolveActions(ArRobot robot, boolean connected) {
-    synchronized (actionDesired) {
+    synchronized (desiredLock) {
       actionDesired.reset();
       if (connected && !actions.isEmpty()) {
         ArActionDesired d = resolver.resolve(actions, robot);

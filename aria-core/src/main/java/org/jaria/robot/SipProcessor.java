@@ -1,5 +1,6 @@
 package org.jaria.robot;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.ArrayList;
 import java.util.List;
 import org.jaria.geom.ArMath;
@@ -18,26 +19,56 @@ import org.slf4j.LoggerFactory;
  *
  * <p>SIPs are processed on the robot's cycle thread; {@link #moveTo} and {@link
  * #setEncoderTransform} may come from another thread (a localization task), so every method is
- * synchronized. They are short, and contention is rare.
+ * synchronized and every field is guarded by this object's monitor. The methods are short, and
+ * contention is rare.
  */
 final class SipProcessor {
 
   private static final Logger log = LoggerFactory.getLogger(SipProcessor.class);
 
+  @GuardedBy("this")
   private ArRobotParams params;
+
+  @GuardedBy("this")
   private final List<ArSensorReading> sonars = new ArrayList<>();
+
+  @GuardedBy("this")
   private boolean first = true;
+
+  @GuardedBy("this")
   private int lastX;
+
+  @GuardedBy("this")
   private int lastY;
+
+  @GuardedBy("this")
   private int lastTh;
+
+  @GuardedBy("this")
   private ArPose rawEncoderPose = ArPose.ORIGIN;
+
+  @GuardedBy("this")
   private ArPose encoderPose = ArPose.ORIGIN;
+
+  @GuardedBy("this")
   private ArTransform encoderTransform = ArTransform.IDENTITY;
+
+  @GuardedBy("this")
   private ArPose globalPose = ArPose.ORIGIN;
+
+  @GuardedBy("this")
   private double odometerDistance;
+
+  @GuardedBy("this")
   private double odometerDegrees;
+
+  @GuardedBy("this")
   private HeadingCorrection headingCorrection;
+
+  @GuardedBy("this")
   private boolean warnedExtraSonar;
+
+  @GuardedBy("this")
   private RobotStatus last;
 
   SipProcessor(ArRobotParams params) {
