@@ -2,18 +2,18 @@ package org.jaria.robot;
 
 import java.nio.file.Path;
 import java.util.List;
-import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.ReentrantLock;
+import org.jaria.action.ArAction;
 import org.jaria.action.ArActionDesired;
 import org.jaria.clock.Clock;
 import org.jaria.connection.ArDeviceConnection;
 import org.jaria.params.ArRobotParams;
 import org.jaria.protocol.ArCommands;
-import org.jaria.protocol.ArRobotPacket;
 import org.jaria.protocol.DropCounters;
 import org.jaria.protocol.packets.ArConfigPacket;
+import org.jaria.range.ArRangeDevice;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -53,15 +53,9 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
   final ReentrantLock robotLock = new ReentrantLock();
   final TaskList sensorInterpTasks = new TaskList("sensor interpretation");
   final TaskList userTasks = new TaskList("user");
-  private final CopyOnWriteArrayList<ArPacketHandler> packetHandlers = new CopyOnWriteArrayList<>();
-  final Callbacks connectCBs = new Callbacks("connect");
-  final Callbacks failedConnectCBs = new Callbacks("failed connect");
-  final Callbacks disconnectNormallyCBs = new Callbacks("disconnect normally");
-  final Callbacks disconnectOnErrorCBs = new Callbacks("disconnect on error");
+  private final PacketRouter router = new PacketRouter();
   final Callbacks runExitCBs = new Callbacks("run exit");
-  final DropCounters drops;
-  final PacketIntake intake;
-  final RobotConnection connection;
+  final RobotLink link;
   private final RunLoop runLoop;
   private final AtomicLong counter = new AtomicLong();
   private volatile long cycleTimeMs = 100;
@@ -88,19 +82,44 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
    *     kept and re-sent by the cycle (ARIA's constructor flag)
    */
   public ArRobot(String name, Clock clock, boolean doStateReflection) {
-    super(clock, ArRobotParams.defaults());
+    super(clock, ArRobotParams.defaults(), new DropCounters(name));
     this.name = name;
-    this.drops = new DropCounters(name);
-    this.intake = new PacketIntake(drops);
-    this.connection = new RobotConnection(this);
     this.runLoop = new RunLoop(this);
+    this.link =
+        new RobotLink(
+            clock,
+            sender,
+            getDropCounters(),
+            router,
+            robotLock,
+            this::getCycleTime,
+            runLoop::isRunning,
+            new LinkEvents());
     motion.setDoStateReflection(doStateReflection);
-    addInternalPacketHandlers();
+    router.add(p -> handleSip(p, counter.get()), ArListPos.LAST);
+    router.add(this::handleEncoderPacket, ArListPos.LAST);
+    router.add(this::handleIoPacket, ArListPos.LAST);
   }
 
-  @Override
-  DropCounters dropCounters() {
-    return drops;
+  /** What the robot does when its link changes. */
+  private final class LinkEvents implements RobotLink.Events {
+    @Override
+    public void connecting() {
+      resetState();
+      motion.reset();
+    }
+
+    @Override
+    public void identified(ArRobotParams p) {
+      setParams(p);
+      motion.configure(
+          p.hasSettableVelMaxes(), p.hasSettableAccsDecs(), p.hasMoveCommand(), p.getVel2Divisor());
+    }
+
+    @Override
+    public void configured(ArConfigPacket config, ArRobotParams p) {
+      LimitsFromConfig.apply(ArRobot.this, config, p);
+    }
   }
 
   /** The robot's name as given to the constructor. */
@@ -112,12 +131,12 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
 
   /** Sets the connection to the robot (TCP, serial or pipe); it is opened when connecting. */
   public void setDeviceConnection(ArDeviceConnection c) {
-    connection.setDeviceConnection(c);
+    link.setDeviceConnection(c);
   }
 
   /** The connection to the robot, or null. */
   public ArDeviceConnection getDeviceConnection() {
-    return connection.getDeviceConnection();
+    return link.getDeviceConnection();
   }
 
   /**
@@ -128,7 +147,7 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
    * @return whether the robot is connected
    */
   public boolean blockingConnect() {
-    return connection.blockingConnect();
+    return link.blockingConnect();
   }
 
   /**
@@ -138,47 +157,47 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
    * @return false if there is no connection to use
    */
   public boolean asyncConnect() {
-    return connection.asyncConnect();
+    return link.asyncConnect();
   }
 
   /** Whether the robot is connected. */
   public boolean isConnected() {
-    return connection.isConnected();
+    return link.isConnected();
   }
 
   /** Whether a connection attempt is under way. */
   public boolean isConnecting() {
-    return connection.isConnecting();
+    return link.isConnecting();
   }
 
   /** Why the last connection attempt failed, or an empty string. */
   public String getConnectFailure() {
-    return connection.failure();
+    return link.failure();
   }
 
   /** Sends CLOSE and closes the connection; the disconnect-normally callbacks run. */
   public boolean disconnect() {
-    return connection.disconnect();
+    return link.disconnect();
   }
 
   /** The robot's name from the handshake. */
   public String getRobotName() {
-    return connection.robotName();
+    return link.robotName();
   }
 
   /** The robot's type from the handshake, e.g. "Pioneer". */
   public String getRobotType() {
-    return connection.robotType();
+    return link.robotType();
   }
 
   /** The robot's subtype from the handshake, lower-cased, e.g. "p3dx-sh". */
   public String getRobotSubType() {
-    return connection.robotSubType();
+    return link.robotSubType();
   }
 
   /** The CONFIGpac received when connecting, or null. */
   public ArConfigPacket getOrigRobotConfig() {
-    return connection.config();
+    return link.config();
   }
 
   /** The parameters in use (from the robot's subtype and name once connected). */
@@ -191,29 +210,24 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
    * {@code $JARIA_PARAMS}, else {@code ~/.jaria/params}. Null uses only the bundled files.
    */
   public void setParamsDirectory(Path dir) {
-    connection.setParamsDirectory(dir);
+    link.setParamsDirectory(dir);
   }
 
   /** Where user parameter files are looked for (see {@link #setParamsDirectory}); may be null. */
   public Path getParamsDirectory() {
-    return connection.paramsDirectory();
+    return link.paramsDirectory();
   }
 
   /**
    * How long without any packet before the connection counts as lost, ms (default 8000; 0 never).
    */
   public void setConnectionTimeoutTime(long ms) {
-    connection.setTimeoutMs(ms);
+    link.setTimeoutMs(ms);
   }
 
   /** The connection-lost timeout, ms. */
   public long getConnectionTimeoutTime() {
-    return connection.timeoutMs();
-  }
-
-  /** Packets dropped on the way in, by reason. */
-  public DropCounters getDropCounters() {
-    return drops;
+    return link.timeoutMs();
   }
 
   /** Commands sent since the robot was created. */
@@ -228,42 +242,42 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
 
   /** Runs when a connection is made. */
   public void addConnectCB(Runnable cb) {
-    connectCBs.add(cb);
+    link.connectCBs.add(cb);
   }
 
   /** Removes a connect callback. */
   public void remConnectCB(Runnable cb) {
-    connectCBs.remove(cb);
+    link.connectCBs.remove(cb);
   }
 
   /** Runs when a connection attempt fails. */
   public void addFailedConnectCB(Runnable cb) {
-    failedConnectCBs.add(cb);
+    link.failedConnectCBs.add(cb);
   }
 
   /** Removes a failed-connect callback. */
   public void remFailedConnectCB(Runnable cb) {
-    failedConnectCBs.remove(cb);
+    link.failedConnectCBs.remove(cb);
   }
 
   /** Runs when the program disconnects on purpose. */
   public void addDisconnectNormallyCB(Runnable cb) {
-    disconnectNormallyCBs.add(cb);
+    link.disconnectNormallyCBs.add(cb);
   }
 
   /** Removes a disconnect-normally callback. */
   public void remDisconnectNormallyCB(Runnable cb) {
-    disconnectNormallyCBs.remove(cb);
+    link.disconnectNormallyCBs.remove(cb);
   }
 
   /** Runs when the connection is lost (no packets, broken link, controller reset). */
   public void addDisconnectOnErrorCB(Runnable cb) {
-    disconnectOnErrorCBs.add(cb);
+    link.disconnectOnErrorCBs.add(cb);
   }
 
   /** Removes a disconnect-on-error callback. */
   public void remDisconnectOnErrorCB(Runnable cb) {
-    disconnectOnErrorCBs.remove(cb);
+    link.disconnectOnErrorCBs.remove(cb);
   }
 
   /** Runs when {@link #run} / {@link #runAsync} ends. */
@@ -315,12 +329,12 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
   public void loopOnce() {
     long start = clock.nanoTime();
     long realStart = System.nanoTime();
-    if (connection.stepConnecting(start)) {
+    if (link.stepConnecting(start)) {
       counter.incrementAndGet();
       return;
     }
     if (isConnected()) {
-      connection.readAvailable(start);
+      link.readAvailable(start);
     }
     boolean locked;
     try {
@@ -334,8 +348,8 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
       return;
     }
     try {
-      dispatchQueuedPackets();
-      connection.checkTimeout(clock.nanoTime());
+      link.handOnQueued();
+      link.checkTimeout(clock.nanoTime());
       sensorInterpTasks.runAll();
       ArActionDesired desired = resolveActions(this, isConnected());
       if (isConnected()) {
@@ -366,9 +380,9 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
    */
   public boolean pollForSip() {
     if (isConnected()) {
-      connection.readAvailable(clock.nanoTime());
+      link.readAvailable(clock.nanoTime());
     }
-    return intake.hasSip();
+    return link.hasSip();
   }
 
   private void keepAliveWithoutLock(long now) {
@@ -388,30 +402,19 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
     }
   }
 
-  void dispatchQueuedPackets() {
-    ArRobotPacket p;
-    while ((p = intake.poll()) != null) {
-      dispatch(p);
-    }
+  /** Adds a range device (sonar, bumpers, laser ...) and tells it its robot. */
+  public void addRangeDevice(ArRangeDevice device) {
+    device.setRobot(this);
+    rangeDevices.addIfAbsent(device);
   }
 
-  /** Hands one packet to the handler list; the first handler to accept it wins. */
-  void dispatch(ArRobotPacket p) {
-    for (ArPacketHandler h : packetHandlers) {
-      p.resetRead();
-      if (h.handle(p)) {
-        return;
-      }
-    }
-    log.debug("no packet handler wanted packet 0x{}", Integer.toHexString(p.getID()));
-  }
-
-  private void addInternalPacketHandlers() {
-    packetHandlers.add(connection::handleControllerReset);
-    packetHandlers.add(p -> handleSip(p, counter.get()));
-    packetHandlers.add(connection::handleConfig);
-    packetHandlers.add(this::handleEncoderPacket);
-    packetHandlers.add(this::handleIoPacket);
+  /**
+   * Adds an action with a priority (higher goes first; ARIA's examples use 1..100). The action is
+   * told its robot. Adding the same action again only changes its priority.
+   */
+  public void addAction(ArAction action, int priority) {
+    insertAction(action, priority);
+    action.setRobot(this);
   }
 
   /** Adds a packet handler at the end of the list (after the robot's own handlers). */
@@ -421,16 +424,12 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
 
   /** Adds a packet handler at the front (asked before the robot's own) or the end. */
   public void addPacketHandler(ArPacketHandler h, ArListPos pos) {
-    if (pos == ArListPos.FIRST) {
-      packetHandlers.add(0, h);
-    } else {
-      packetHandlers.add(h);
-    }
+    router.add(h, pos);
   }
 
   /** Removes a packet handler. */
   public void remPacketHandler(ArPacketHandler h) {
-    packetHandlers.remove(h);
+    router.remove(h);
   }
 
   /**
@@ -603,6 +602,6 @@ public class ArRobot extends RobotDevices implements AutoCloseable {
         lastCycleNanos / 1e6,
         lockWarnings.get(),
         overrunWarnings.get(),
-        drops);
+        getDropCounters());
   }
 }

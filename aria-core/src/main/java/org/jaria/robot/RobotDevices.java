@@ -13,6 +13,7 @@ import org.jaria.clock.Clock;
 import org.jaria.geom.ArPose;
 import org.jaria.geom.ArTransform;
 import org.jaria.params.ArRobotParams;
+import org.jaria.protocol.DropCounters;
 import org.jaria.range.ArRangeDevice;
 
 /**
@@ -32,8 +33,8 @@ public abstract class RobotDevices extends RobotMotion {
 
   private volatile ArResolver resolver = new ArPriorityResolver();
 
-  RobotDevices(Clock clock, ArRobotParams params) {
-    super(clock, params);
+  RobotDevices(Clock clock, ArRobotParams params, DropCounters drops) {
+    super(clock, params, drops);
   }
 
   // ================================================================ pose transform
@@ -81,12 +82,6 @@ public abstract class RobotDevices extends RobotMotion {
   }
 
   // ================================================================ range devices
-
-  /** Adds a range device (sonar, bumpers, laser ...) and tells it its robot. */
-  public void addRangeDevice(ArRangeDevice device) {
-    device.setRobot((ArRobot) this);
-    rangeDevices.addIfAbsent(device);
-  }
 
   /** Removes a range device. */
   public void remRangeDevice(ArRangeDevice device) {
@@ -162,11 +157,8 @@ public abstract class RobotDevices extends RobotMotion {
 
   // ================================================================ actions
 
-  /**
-   * Adds an action with a priority (higher goes first; ARIA's examples use 1..100). The action is
-   * told its robot. Adding the same action again only changes its priority.
-   */
-  public void addAction(ArAction action, int priority) {
+  /** Adds {@code action} to the list (or changes its priority), keeping it sorted. */
+  void insertAction(ArAction action, int priority) {
     synchronized (actions) {
       actions.removeIf(p -> p.action() == action);
       List<ArResolver.PrioritizedAction> copy = new ArrayList<>(actions);
@@ -175,7 +167,6 @@ public abstract class RobotDevices extends RobotMotion {
       actions.clear();
       actions.addAll(copy);
     }
-    action.setRobot((ArRobot) this);
   }
 
   /** Removes an action. */

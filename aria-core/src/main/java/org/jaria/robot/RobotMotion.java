@@ -4,6 +4,7 @@ import org.jaria.clock.Clock;
 import org.jaria.params.ArRobotParams;
 import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
+import org.jaria.protocol.DropCounters;
 
 /**
  * Commanding the robot: motion commands (kept and re-sent by state reflection), direct commands
@@ -19,8 +20,8 @@ public abstract class RobotMotion extends RobotState {
   final ArRobotPacketSender sender;
   final StateReflector motion;
 
-  RobotMotion(Clock clock, ArRobotParams params) {
-    super(clock, params);
+  RobotMotion(Clock clock, ArRobotParams params, DropCounters drops) {
+    super(clock, params, drops);
     this.sender = new ArRobotPacketSender(clock);
     this.motion = new StateReflector(clock, sender, this::getStatus);
   }

@@ -6,6 +6,7 @@ import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
 import org.jaria.params.ArRobotParams;
 import org.jaria.protocol.ArRobotPacket;
+import org.jaria.protocol.DropCounters;
 import org.jaria.protocol.DropReason;
 import org.jaria.protocol.packets.EncoderPacket;
 import org.jaria.protocol.packets.IoPacket;
@@ -27,13 +28,15 @@ public abstract class RobotState {
 
   volatile ArRobotParams params;
   final SipProcessor processor;
+  private final DropCounters drops;
   private final StandardSip sip = new StandardSip();
   private volatile RobotStatus status;
   private volatile EncoderPacket encoders = new EncoderPacket(0, 0);
   private volatile IoPacket io = new IoPacket(new int[0], new int[0], new int[0]);
 
-  RobotState(Clock clock, ArRobotParams params) {
+  RobotState(Clock clock, ArRobotParams params, DropCounters drops) {
     this.clock = clock;
+    this.drops = drops;
     this.params = params;
     this.processor = new SipProcessor(params);
     this.status = processor.last();
@@ -65,7 +68,7 @@ public abstract class RobotState {
       return false;
     }
     if (!sip.decode(p)) {
-      dropCounters().drop(DropReason.MALFORMED, "short standard SIP");
+      drops.drop(DropReason.MALFORMED, "short standard SIP");
       return true;
     }
     publish(processor.process(sip, counter, clock.nanoTime()));
@@ -78,7 +81,7 @@ public abstract class RobotState {
     }
     EncoderPacket e = EncoderPacket.decode(p);
     if (e == null) {
-      dropCounters().drop(DropReason.MALFORMED, "short ENCODERpac");
+      drops.drop(DropReason.MALFORMED, "short ENCODERpac");
     } else {
       encoders = e;
     }
@@ -91,14 +94,17 @@ public abstract class RobotState {
     }
     IoPacket q = IoPacket.decode(p);
     if (q == null) {
-      dropCounters().drop(DropReason.MALFORMED, "short IOpac");
+      drops.drop(DropReason.MALFORMED, "short IOpac");
     } else {
       io = q;
     }
     return true;
   }
 
-  abstract org.jaria.protocol.DropCounters dropCounters();
+  /** Packets dropped on the way in, by reason. */
+  public DropCounters getDropCounters() {
+    return drops;
+  }
 
   /** Everything the last SIP said, as one consistent snapshot. */
   public RobotStatus getStatus() {
