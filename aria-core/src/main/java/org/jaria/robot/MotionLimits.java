@@ -64,26 +64,37 @@ final class MotionLimits {
   @GuardedBy("this")
   private double rotDecel;
 
+  /** The limits as one value, made again after a change (they change rarely; cycles read often). */
+  @GuardedBy("this")
+  private Values values;
+
   synchronized void configure(boolean velMaxes, boolean accsDecs) {
+    values = null;
     settableVelMaxes = velMaxes;
     settableAccsDecs = accsDecs;
   }
 
   /** The limits now, as one value. */
   synchronized Values values() {
-    return new Values(
-        settableVelMaxes,
-        settableAccsDecs,
-        absMaxRotVel,
-        transVelMax,
-        rotVelMax,
-        transAccel,
-        transDecel,
-        rotAccel,
-        rotDecel);
+    if (values != null) {
+      return values;
+    }
+    values =
+        new Values(
+            settableVelMaxes,
+            settableAccsDecs,
+            absMaxRotVel,
+            transVelMax,
+            rotVelMax,
+            transAccel,
+            transDecel,
+            rotAccel,
+            rotDecel);
+    return values;
   }
 
   synchronized void setAbsoluteMaxTransVel(double v) {
+    values = null;
     absMaxTransVel = Math.abs(v);
     if (transVelMax > absMaxTransVel) {
       transVelMax = absMaxTransVel;
@@ -95,6 +106,7 @@ final class MotionLimits {
   }
 
   synchronized void setAbsoluteMaxRotVel(double v) {
+    values = null;
     absMaxRotVel = Math.abs(v);
     if (rotVelMax > absMaxRotVel) {
       rotVelMax = absMaxRotVel;
@@ -106,6 +118,7 @@ final class MotionLimits {
   }
 
   synchronized boolean setTransVelMax(double v) {
+    values = null;
     if (v <= 0 || v > absMaxTransVel) {
       return false;
     }
@@ -118,6 +131,7 @@ final class MotionLimits {
   }
 
   synchronized boolean setRotVelMax(double v) {
+    values = null;
     if (v <= 0 || v > absMaxRotVel) {
       return false;
     }
@@ -130,6 +144,7 @@ final class MotionLimits {
   }
 
   synchronized void setTransAccel(double a) {
+    values = null;
     transAccel = Math.abs(a);
   }
 
@@ -138,6 +153,7 @@ final class MotionLimits {
   }
 
   synchronized void setTransDecel(double a) {
+    values = null;
     transDecel = Math.abs(a);
   }
 
@@ -146,6 +162,7 @@ final class MotionLimits {
   }
 
   synchronized void setRotAccel(double a) {
+    values = null;
     rotAccel = Math.abs(a);
   }
 
@@ -154,6 +171,7 @@ final class MotionLimits {
   }
 
   synchronized void setRotDecel(double a) {
+    values = null;
     rotDecel = Math.abs(a);
   }
 

@@ -111,7 +111,8 @@ final class StateReflection {
     private final ArActionDesired d;
     private final RobotStatus s;
     private final double encTh;
-    private final List<MotionCommand> out = new ArrayList<>(4);
+    private final ReflectionMemory before;
+    private List<MotionCommand> out = List.of();
     private DirectMotion direct;
     private boolean trying;
 
@@ -151,6 +152,7 @@ final class StateReflection {
       s = in.status();
       encTh = in.encoderTransformTh();
       direct = in.direct();
+      before = m;
       sentTrans = m.sentAt().trans();
       sentRot = m.sentAt().rot();
       sentPulse = m.sentAt().pulse();
@@ -199,30 +201,60 @@ final class StateReflection {
         }
       }
       if (now - sentRot > refresh && now - sentTrans > refresh && now - sentPulse > refresh) {
-        out.add(MotionCommand.of(ArCommands.PULSE));
+        add(MotionCommand.of(ArCommands.PULSE));
         sentPulse = now;
       }
-      ReflectionMemory after =
-          new ReflectionMemory(
-              new SentAt(sentTrans, sentRot, sentPulse),
-              new SentLimits(
-                  sentTransVelMax,
-                  sentRotVelMax,
-                  sentTransAccel,
-                  sentTransDecel,
-                  sentRotAccel,
-                  sentRotDecel),
-              new LastDirect(
-                  lastTransVal,
-                  lastTransVal2,
-                  lastTransType,
-                  lastRotVal,
-                  lastRotType,
-                  transWasDirect,
-                  rotWasDirect),
-              new LastAction(
-                  actTransVal, actTransSet, actRotVal, actRotStopped, actRotHeading, actRotSet));
-      return new CycleCommands(List.copyOf(out), direct, after, trying);
+      ReflectionMemory after = remembered();
+      return new CycleCommands(out.isEmpty() ? List.of() : List.copyOf(out), direct, after, trying);
+    }
+
+    /**
+     * What to remember for the next cycle; the parts that did not change are the old values
+     * themselves (most cycles change little, and this runs ten times a second per robot).
+     */
+    private ReflectionMemory remembered() {
+      boolean same = true;
+      SentAt at = before.sentAt();
+      if (at.trans() != sentTrans || at.rot() != sentRot || at.pulse() != sentPulse) {
+        at = new SentAt(sentTrans, sentRot, sentPulse);
+        same = false;
+      }
+      SentLimits l =
+          new SentLimits(
+              sentTransVelMax,
+              sentRotVelMax,
+              sentTransAccel,
+              sentTransDecel,
+              sentRotAccel,
+              sentRotDecel);
+      if (l.equals(before.limits())) {
+        l = before.limits();
+      } else {
+        same = false;
+      }
+      LastDirect ld =
+          new LastDirect(
+              lastTransVal,
+              lastTransVal2,
+              lastTransType,
+              lastRotVal,
+              lastRotType,
+              transWasDirect,
+              rotWasDirect);
+      if (ld.equals(before.direct())) {
+        ld = before.direct();
+      } else {
+        same = false;
+      }
+      LastAction la =
+          new LastAction(
+              actTransVal, actTransSet, actRotVal, actRotStopped, actRotHeading, actRotSet);
+      if (la.equals(before.action())) {
+        la = before.action();
+      } else {
+        same = false;
+      }
+      return same ? before : new ReflectionMemory(at, l, ld, la);
     }
 
     private boolean hasPrecedence(boolean set, long setTime) {
@@ -231,7 +263,14 @@ final class StateReflection {
     }
 
     private void send(ArCommands c, int argument) {
-      out.add(MotionCommand.of(c, argument));
+      add(MotionCommand.of(c, argument));
+    }
+
+    private void add(MotionCommand c) {
+      if (out.isEmpty()) {
+        out = new ArrayList<>(4);
+      }
+      out.add(c);
     }
 
     // -------------------------------------------------------------- limits
@@ -308,7 +347,7 @@ final class StateReflection {
           val = vel2Byte(direct.transVal(), settings.vel2Divisor());
           val2 = vel2Byte(direct.transVal2(), settings.vel2Divisor());
           if (lastTransVal != val || lastTransVal2 != val2 || lastTransType != type || refreshDue) {
-            out.add(MotionCommand.twoBytes(ArCommands.VEL2, val, val2));
+            add(MotionCommand.twoBytes(ArCommands.VEL2, val, val2));
             sentTrans = now;
           }
           trying |= val != 0 || val2 != 0;
@@ -345,7 +384,7 @@ final class StateReflection {
         direct = direct.withTrans(TransType.DIST, direct.transVal());
         trying = true;
       } else if (refreshDue) {
-        out.add(MotionCommand.of(ArCommands.PULSE));
+        add(MotionCommand.of(ArCommands.PULSE));
         sentPulse = now;
         sentTrans = now;
       }

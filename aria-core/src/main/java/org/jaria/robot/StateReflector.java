@@ -40,6 +40,10 @@ final class StateReflector {
   @GuardedBy("this")
   private double vel2Divisor = 20;
 
+  /** The settings as one value; null after a change, made again by the next cycle. */
+  @GuardedBy("this")
+  private StateReflection.Settings settings;
+
   @GuardedBy("this")
   private DirectMotion direct = DirectMotion.NONE;
 
@@ -68,14 +72,17 @@ final class StateReflector {
     limits.configure(velMaxes, accsDecs);
     hasMoveCommand = moveCommand;
     vel2Divisor = vel2Div <= 0 ? 20 : vel2Div;
+    settings = null;
   }
 
   synchronized void setDoStateReflection(boolean on) {
     doStateReflection = on;
+    settings = null;
   }
 
   synchronized void setRefreshMillis(long ms) {
     refreshNanos = TimeUnit.MILLISECONDS.toNanos(ms);
+    settings = null;
   }
 
   synchronized long getRefreshMillis() {
@@ -84,6 +91,7 @@ final class StateReflector {
 
   synchronized void setDirectMotionPrecedenceTime(long ms) {
     precedenceMs = Math.max(0, ms);
+    settings = null;
   }
 
   synchronized long getDirectMotionPrecedenceTime() {
@@ -244,20 +252,20 @@ final class StateReflector {
    * strength anywhere if there are no actions).
    */
   synchronized void reflect(ArActionDesired desired, double encoderTransformTh) {
+    MotionLimits.Values v = limits.values();
+    if (settings == null || !settings.limits().equals(v)) {
+      settings =
+          new StateReflection.Settings(
+              doStateReflection,
+              refreshNanos,
+              TimeUnit.MILLISECONDS.toNanos(precedenceMs),
+              hasMoveCommand,
+              vel2Divisor,
+              v);
+    }
     StateReflection.Inputs in =
         new StateReflection.Inputs(
-            clock.nanoTime(),
-            direct,
-            desired,
-            status.get(),
-            encoderTransformTh,
-            new StateReflection.Settings(
-                doStateReflection,
-                refreshNanos,
-                TimeUnit.MILLISECONDS.toNanos(precedenceMs),
-                hasMoveCommand,
-                vel2Divisor,
-                limits.values()));
+            clock.nanoTime(), direct, desired, status.get(), encoderTransformTh, settings);
     CycleCommands c = StateReflection.decide(in, memory);
     direct = c.direct();
     memory = c.memory();
