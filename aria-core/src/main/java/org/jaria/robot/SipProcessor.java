@@ -71,6 +71,10 @@ final class SipProcessor {
   @GuardedBy("this")
   private RobotStatus last;
 
+  /** Reused for every SIP: every field is set each time. */
+  @GuardedBy("this")
+  private final RobotStatus.Builder builder = RobotStatus.builder();
+
   SipProcessor(ArRobotParams params) {
     setParams(params);
   }
@@ -181,7 +185,7 @@ final class SipProcessor {
             ? sip.getRotVel() / 10.0
             : Math.toDegrees((rightVel - leftVel) / 2.0 * p.getDiffConvFactor());
     last =
-        RobotStatus.builder()
+        builder
             .counter(counter)
             .timeNanos(nowNanos)
             .pose(globalPose)

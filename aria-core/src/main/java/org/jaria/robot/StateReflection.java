@@ -213,48 +213,61 @@ final class StateReflection {
      * themselves (most cycles change little, and this runs ten times a second per robot).
      */
     private ReflectionMemory remembered() {
-      boolean same = true;
       SentAt at = before.sentAt();
-      if (at.trans() != sentTrans || at.rot() != sentRot || at.pulse() != sentPulse) {
-        at = new SentAt(sentTrans, sentRot, sentPulse);
-        same = false;
+      boolean sameAt = at.trans() == sentTrans && at.rot() == sentRot && at.pulse() == sentPulse;
+      SentLimits l = before.limits();
+      boolean sameLimits =
+          l.transVelMax() == sentTransVelMax
+              && l.rotVelMax() == sentRotVelMax
+              && l.transAccel() == sentTransAccel
+              && l.transDecel() == sentTransDecel
+              && l.rotAccel() == sentRotAccel
+              && l.rotDecel() == sentRotDecel;
+      LastDirect ld = before.direct();
+      boolean sameDirect =
+          ld.transVal() == lastTransVal
+              && ld.transVal2() == lastTransVal2
+              && ld.transType() == lastTransType
+              && ld.rotVal() == lastRotVal
+              && ld.rotType() == lastRotType
+              && ld.transWasDirect() == transWasDirect
+              && ld.rotWasDirect() == rotWasDirect;
+      LastAction la = before.action();
+      boolean sameAction =
+          la.transVal() == actTransVal
+              && la.transSet() == actTransSet
+              && la.rotVal() == actRotVal
+              && la.rotStopped() == actRotStopped
+              && la.rotHeading() == actRotHeading
+              && la.rotSet() == actRotSet;
+      if (sameAt && sameLimits && sameDirect && sameAction) {
+        return before;
       }
-      SentLimits l =
-          new SentLimits(
-              sentTransVelMax,
-              sentRotVelMax,
-              sentTransAccel,
-              sentTransDecel,
-              sentRotAccel,
-              sentRotDecel);
-      if (l.equals(before.limits())) {
-        l = before.limits();
-      } else {
-        same = false;
-      }
-      LastDirect ld =
-          new LastDirect(
-              lastTransVal,
-              lastTransVal2,
-              lastTransType,
-              lastRotVal,
-              lastRotType,
-              transWasDirect,
-              rotWasDirect);
-      if (ld.equals(before.direct())) {
-        ld = before.direct();
-      } else {
-        same = false;
-      }
-      LastAction la =
-          new LastAction(
-              actTransVal, actTransSet, actRotVal, actRotStopped, actRotHeading, actRotSet);
-      if (la.equals(before.action())) {
-        la = before.action();
-      } else {
-        same = false;
-      }
-      return same ? before : new ReflectionMemory(at, l, ld, la);
+      return new ReflectionMemory(
+          sameAt ? at : new SentAt(sentTrans, sentRot, sentPulse),
+          sameLimits
+              ? l
+              : new SentLimits(
+                  sentTransVelMax,
+                  sentRotVelMax,
+                  sentTransAccel,
+                  sentTransDecel,
+                  sentRotAccel,
+                  sentRotDecel),
+          sameDirect
+              ? ld
+              : new LastDirect(
+                  lastTransVal,
+                  lastTransVal2,
+                  lastTransType,
+                  lastRotVal,
+                  lastRotType,
+                  transWasDirect,
+                  rotWasDirect),
+          sameAction
+              ? la
+              : new LastAction(
+                  actTransVal, actTransSet, actRotVal, actRotStopped, actRotHeading, actRotSet));
     }
 
     private boolean hasPrecedence(boolean set, long setTime) {
