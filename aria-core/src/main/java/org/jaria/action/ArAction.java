@@ -1,5 +1,6 @@
 package org.jaria.action;
 
+import java.util.function.Supplier;
 import org.jaria.robot.ArRobot;
 
 /**
@@ -11,6 +12,12 @@ import org.jaria.robot.ArRobot;
  * cares about — and return it; return {@code null} to want nothing this cycle. {@code fire} runs on
  * the robot's cycle thread with the robot locked, so it may read the robot freely but must return
  * quickly.
+ *
+ * <p><b>Locking.</b> The robot's lock is the only lock an action needs: {@code fire} always runs
+ * holding it, so an action's setters and getters, which other threads call, take the same lock with
+ * {@link #locked(Runnable)} or {@link #lockedGet(Supplier)} and can never run in the middle of a
+ * {@code fire}. Fields an action shares between {@code fire} and such methods need no lock of their
+ * own (ARIA's convention too: lock the robot to change a running action).
  *
  * <pre>{@code
  * class Forward extends ArAction {
@@ -59,6 +66,39 @@ public abstract class ArAction {
   /** The robot this action drives, or null before it is added. */
   public ArRobot getRobot() {
     return robot;
+  }
+
+  /**
+   * Runs {@code body} holding the robot's lock, the lock the cycle holds while actions fire (or, if
+   * the action has no robot yet, so nothing fires it, just runs it). The lock is reentrant, so
+   * {@code body} may be called from {@code fire} or from code that already holds the robot's lock.
+   */
+  protected final void locked(Runnable body) {
+    ArRobot r = robot;
+    if (r == null) {
+      body.run();
+      return;
+    }
+    r.lock();
+    try {
+      body.run();
+    } finally {
+      r.unlock();
+    }
+  }
+
+  /** As {@link #locked(Runnable)}, for a body that returns a value. */
+  protected final <T> T lockedGet(Supplier<T> body) {
+    ArRobot r = robot;
+    if (r == null) {
+      return body.get();
+    }
+    r.lock();
+    try {
+      return body.get();
+    } finally {
+      r.unlock();
+    }
   }
 
   /** Makes the action take part. Actions start active. */

@@ -114,7 +114,7 @@ public class ArActionAvoidFront extends ArAction {
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     ArRobot robot = getRobot();
     if (currentDesired.getDeltaHeadingStrength() >= 1.0) {
       // A higher priority has taken the heading: start afresh next time.

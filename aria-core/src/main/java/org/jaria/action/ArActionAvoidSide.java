@@ -49,7 +49,7 @@ public class ArActionAvoidSide extends ArAction {
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     ArRobot robot = getRobot();
     double leftDist = RobotSensing.polarDistance(robot, 60, 120) - robot.getRobotRadius();
     double rightDist = RobotSensing.polarDistance(robot, -120, -60) - robot.getRobotRadius();

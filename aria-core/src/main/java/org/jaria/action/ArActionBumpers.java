@@ -59,9 +59,7 @@ public class ArActionBumpers extends ArAction {
 
   @Override
   public void activate() {
-    synchronized (this) {
-      firing = false;
-    }
+    locked(() -> firing = false);
     super.activate();
   }
 
@@ -94,7 +92,7 @@ public class ArActionBumpers extends ArAction {
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     ArRobot robot = getRobot();
     ArRobotParams p = robot.getRobotParams();
     int frontBump = p.haveFrontBumpers() ? robot.getFrontBumpers() : 0;

@@ -93,7 +93,7 @@ public class ArActionDeceleratingLimiter extends ArAction {
    * @param useEStop send an emergency stop if something is inside the clearance
    * @param maxEmergencyDecel hardest deceleration ever asked for, mm/s² (0: the robot's top)
    */
-  public synchronized void setParameters(
+  public void setParameters(
       double clearance,
       double sideClearanceAtSlowSpeed,
       double paddingAtSlowSpeed,
@@ -104,16 +104,19 @@ public class ArActionDeceleratingLimiter extends ArAction {
       double preferredDecel,
       boolean useEStop,
       double maxEmergencyDecel) {
-    this.clearance = clearance;
-    this.sideClearanceAtSlowSpeed = sideClearanceAtSlowSpeed;
-    this.paddingAtSlowSpeed = paddingAtSlowSpeed;
-    this.slowSpeed = slowSpeed;
-    this.sideClearanceAtFastSpeed = sideClearanceAtFastSpeed;
-    this.paddingAtFastSpeed = paddingAtFastSpeed;
-    this.fastSpeed = fastSpeed;
-    this.preferredDecel = preferredDecel;
-    this.useEStop = useEStop;
-    this.maxEmergencyDecel = maxEmergencyDecel;
+    locked(
+        () -> {
+          this.clearance = clearance;
+          this.sideClearanceAtSlowSpeed = sideClearanceAtSlowSpeed;
+          this.paddingAtSlowSpeed = paddingAtSlowSpeed;
+          this.slowSpeed = slowSpeed;
+          this.sideClearanceAtFastSpeed = sideClearanceAtFastSpeed;
+          this.paddingAtFastSpeed = paddingAtFastSpeed;
+          this.fastSpeed = fastSpeed;
+          this.preferredDecel = preferredDecel;
+          this.useEStop = useEStop;
+          this.maxEmergencyDecel = maxEmergencyDecel;
+        });
   }
 
   /** Whether the action limits forward motion. */
@@ -142,7 +145,7 @@ public class ArActionDeceleratingLimiter extends ArAction {
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     ArRobot robot = getRobot();
     boolean forwards = type == LimiterType.FORWARDS;
     desired.reset();
@@ -257,7 +260,7 @@ public class ArActionDeceleratingLimiter extends ArAction {
   }
 
   /** Whether the last cycle stopped the robot for a reading inside the clearance. */
-  public synchronized boolean getLastStopped() {
-    return lastStopped;
+  public boolean getLastStopped() {
+    return lockedGet(() -> lastStopped);
   }
 }

@@ -52,13 +52,13 @@ public class ArActionDriveDistance extends ArAction {
   }
 
   /** Whether the distance has been covered. */
-  public synchronized boolean haveAchievedDistance() {
-    return state == State.STATE_ACHIEVED_DISTANCE;
+  public boolean haveAchievedDistance() {
+    return lockedGet(() -> state == State.STATE_ACHIEVED_DISTANCE);
   }
 
   /** Forgets the distance: the action asks for nothing. */
-  public synchronized void cancelDistance() {
-    state = State.STATE_NO_DISTANCE;
+  public void cancelDistance() {
+    locked(() -> state = State.STATE_NO_DISTANCE);
   }
 
   /** Drives {@code distance} mm (negative: backwards), counted with the odometry. */
@@ -72,43 +72,46 @@ public class ArActionDriveDistance extends ArAction {
    * @param useEncoders count with the odometry pose (true) or the corrected global pose
    * @throws IllegalStateException if the action has not been added to a robot
    */
-  public synchronized void setDistance(double distance, boolean useEncoders) {
-    ArRobot robot = requireRobot();
-    this.distance = distance;
-    this.useEncoders = useEncoders;
-    this.lastPose = useEncoders ? robot.getEncoderPose() : robot.getPose();
-    this.distTravelled = 0;
-    this.state = State.STATE_GOING_DISTANCE;
+  public void setDistance(double distance, boolean useEncoders) {
+    locked(
+        () -> {
+          ArRobot robot = requireRobot();
+          this.distance = distance;
+          this.useEncoders = useEncoders;
+          this.lastPose = useEncoders ? robot.getEncoderPose() : robot.getPose();
+          this.distTravelled = 0;
+          this.state = State.STATE_GOING_DISTANCE;
+        });
   }
 
   /** Whether the distance is counted with the odometry pose. */
-  public synchronized boolean usingEncoders() {
-    return useEncoders;
+  public boolean usingEncoders() {
+    return lockedGet(() -> useEncoders);
   }
 
   /** The state. */
-  public synchronized State getState() {
-    return state;
+  public State getState() {
+    return lockedGet(() -> state);
   }
 
   /** Top speed, mm/s. */
-  public synchronized double getSpeed() {
-    return speed;
+  public double getSpeed() {
+    return lockedGet(() -> speed);
   }
 
   /** Sets the top speed, mm/s (ARIA's default 400). */
-  public synchronized void setSpeed(double speed) {
-    this.speed = speed;
+  public void setSpeed(double speed) {
+    locked(() -> this.speed = speed);
   }
 
   /** Deceleration of the braking profile, mm/s². */
-  public synchronized double getDeceleration() {
-    return deceleration;
+  public double getDeceleration() {
+    return lockedGet(() -> deceleration);
   }
 
   /** Sets the deceleration of the braking profile, mm/s² (ARIA's default 200). */
-  public synchronized void setDeceleration(double deceleration) {
-    this.deceleration = deceleration;
+  public void setDeceleration(double deceleration) {
+    locked(() -> this.deceleration = deceleration);
   }
 
   private ArRobot requireRobot() {
@@ -121,7 +124,7 @@ public class ArActionDriveDistance extends ArAction {
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     if (state != State.STATE_GOING_DISTANCE) {
       return null;
     }

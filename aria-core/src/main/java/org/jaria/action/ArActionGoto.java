@@ -80,20 +80,26 @@ public class ArActionGoto extends ArAction {
   }
 
   /** Whether the goal (the last goal of a route) has been reached. */
-  public synchronized boolean haveAchievedGoal() {
-    return state == State.STATE_ACHIEVED_GOAL;
+  public boolean haveAchievedGoal() {
+    return lockedGet(() -> state == State.STATE_ACHIEVED_GOAL);
   }
 
   /** Forgets the goal (and any route): the action asks for nothing. */
-  public synchronized void cancelGoal() {
-    state = State.STATE_NO_GOAL;
-    route.clear();
+  public void cancelGoal() {
+    locked(
+        () -> {
+          state = State.STATE_NO_GOAL;
+          route.clear();
+        });
   }
 
   /** Sets a new goal and drives there (any route is forgotten). */
-  public synchronized void setGoal(ArPose newGoal) {
-    route.clear();
-    startGoal(newGoal);
+  public void setGoal(ArPose newGoal) {
+    locked(
+        () -> {
+          route.clear();
+          startGoal(newGoal);
+        });
   }
 
   private void startGoal(ArPose newGoal) {
@@ -106,54 +112,57 @@ public class ArActionGoto extends ArAction {
    * Drives through {@code goals} in order; {@link #haveAchievedGoal()} becomes true at the last. An
    * empty list cancels the goal.
    */
-  public synchronized void setGoals(List<ArPose> goals) {
-    route.clear();
-    route.addAll(goals);
-    routeIndex = 0;
-    if (route.isEmpty()) {
-      state = State.STATE_NO_GOAL;
-    } else {
-      startGoal(route.get(0));
-    }
+  public void setGoals(List<ArPose> goals) {
+    locked(
+        () -> {
+          route.clear();
+          route.addAll(goals);
+          routeIndex = 0;
+          if (route.isEmpty()) {
+            state = State.STATE_NO_GOAL;
+          } else {
+            startGoal(route.get(0));
+          }
+        });
   }
 
   /** Index in the route of the goal being driven to (0 when a single goal was set). */
-  public synchronized int getGoalIndex() {
-    return routeIndex;
+  public int getGoalIndex() {
+    return lockedGet(() -> routeIndex);
   }
 
   /** The goal being driven to (or last driven to). */
-  public synchronized ArPose getGoal() {
-    return goal;
+  public ArPose getGoal() {
+    return lockedGet(() -> goal);
   }
 
   /** The state. */
-  public synchronized State getState() {
-    return state;
+  public State getState() {
+    return lockedGet(() -> state);
   }
 
   /** How close counts as arrived, mm. */
-  public synchronized double getCloseDist() {
-    return closeDist;
+  public double getCloseDist() {
+    return lockedGet(() -> closeDist);
   }
 
   /** Sets how close counts as arrived, mm. */
-  public synchronized void setCloseDist(double closeDist) {
-    this.closeDist = closeDist;
+  public void setCloseDist(double closeDist) {
+    locked(() -> this.closeDist = closeDist);
   }
 
   /** Top speed, mm/s. */
-  public synchronized double getSpeed() {
-    return speed;
+  public double getSpeed() {
+    return lockedGet(() -> speed);
   }
 
   /** Sets the top speed, mm/s. */
-  public synchronized void setSpeed(double speed) {
-    this.speed = speed;
+  public void setSpeed(double speed) {
+    locked(() -> this.speed = speed);
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     if (state != State.STATE_GOING_TO_GOAL) {
       return null;
     }

@@ -68,13 +68,13 @@ public class ArActionGotoStraight extends ArAction {
   }
 
   /** Whether the goal has been reached. */
-  public synchronized boolean haveAchievedGoal() {
-    return state == State.STATE_ACHIEVED_GOAL;
+  public boolean haveAchievedGoal() {
+    return lockedGet(() -> state == State.STATE_ACHIEVED_GOAL);
   }
 
   /** Forgets the goal: the action asks for nothing. */
-  public synchronized void cancelGoal() {
-    state = State.STATE_NO_GOAL;
+  public void cancelGoal() {
+    locked(() -> state = State.STATE_NO_GOAL);
   }
 
   /** Drives forwards to a global goal, in just-distance mode. */
@@ -91,16 +91,19 @@ public class ArActionGotoStraight extends ArAction {
    *     distance)
    * @throws IllegalStateException if the action has not been added to a robot
    */
-  public synchronized void setGoal(ArPose goal, boolean backwards, boolean justDistance) {
-    ArRobot robot = requireRobot();
-    this.goal = goal;
-    this.useEncoderGoal = false;
-    this.backing = backwards;
-    this.lastPose = robot.getPose();
-    this.dist = lastPose.findDistanceTo(goal);
-    this.justDist = justDistance;
-    this.distTravelled = 0;
-    this.state = State.STATE_GOING_TO_GOAL;
+  public void setGoal(ArPose goal, boolean backwards, boolean justDistance) {
+    locked(
+        () -> {
+          ArRobot robot = requireRobot();
+          this.goal = goal;
+          this.useEncoderGoal = false;
+          this.backing = backwards;
+          this.lastPose = robot.getPose();
+          this.dist = lastPose.findDistanceTo(goal);
+          this.justDist = justDistance;
+          this.distTravelled = 0;
+          this.state = State.STATE_GOING_TO_GOAL;
+        });
   }
 
   /** Drives to a goal {@code dist} mm away in the direction {@code deltaHeading} from the robot. */
@@ -112,9 +115,9 @@ public class ArActionGotoStraight extends ArAction {
    * Drives to a goal {@code dist} mm away, {@code deltaHeading} degrees off the robot's heading
    * (taken now, in global coordinates).
    */
-  public synchronized void setGoalRel(
+  public void setGoalRel(
       double dist, double deltaHeading, boolean backwards, boolean justDistance) {
-    setGoal(relativeGoal(dist, deltaHeading), backwards, justDistance);
+    locked(() -> setGoal(relativeGoal(dist, deltaHeading), backwards, justDistance));
   }
 
   /** Drives forwards to a goal in odometry coordinates, in just-distance mode. */
@@ -126,27 +129,32 @@ public class ArActionGotoStraight extends ArAction {
    * Drives to a goal in odometry coordinates: it stays where it is on the floor when localization
    * corrects the robot's global pose.
    */
-  public synchronized void setEncoderGoal(
-      ArPose encoderGoal, boolean backwards, boolean justDistance) {
-    ArRobot robot = requireRobot();
-    this.encoderGoal = encoderGoal;
-    this.useEncoderGoal = true;
-    this.backing = backwards;
-    this.lastPose = robot.getEncoderPose();
-    this.dist = lastPose.findDistanceTo(encoderGoal);
-    this.justDist = justDistance;
-    this.distTravelled = 0;
-    this.state = State.STATE_GOING_TO_GOAL;
+  public void setEncoderGoal(ArPose encoderGoal, boolean backwards, boolean justDistance) {
+    locked(
+        () -> {
+          ArRobot robot = requireRobot();
+          this.encoderGoal = encoderGoal;
+          this.useEncoderGoal = true;
+          this.backing = backwards;
+          this.lastPose = robot.getEncoderPose();
+          this.dist = lastPose.findDistanceTo(encoderGoal);
+          this.justDist = justDistance;
+          this.distTravelled = 0;
+          this.state = State.STATE_GOING_TO_GOAL;
+        });
   }
 
   /** As {@link #setGoalRel}, but the goal is kept in odometry coordinates. */
-  public synchronized void setEncoderGoalRel(
+  public void setEncoderGoalRel(
       double dist, double deltaHeading, boolean backwards, boolean justDistance) {
-    ArPose global = relativeGoal(dist, deltaHeading);
-    setEncoderGoal(
-        requireRobot().getEncoderTransform().inverse().doTransform(global),
-        backwards,
-        justDistance);
+    locked(
+        () -> {
+          ArPose global = relativeGoal(dist, deltaHeading);
+          setEncoderGoal(
+              requireRobot().getEncoderTransform().inverse().doTransform(global),
+              backwards,
+              justDistance);
+        });
   }
 
   private ArPose relativeGoal(double dist, double deltaHeading) {
@@ -166,70 +174,70 @@ public class ArActionGotoStraight extends ArAction {
   }
 
   /** The global goal. */
-  public synchronized ArPose getGoal() {
-    return goal;
+  public ArPose getGoal() {
+    return lockedGet(() -> goal);
   }
 
   /** The odometry goal. */
-  public synchronized ArPose getEncoderGoal() {
-    return encoderGoal;
+  public ArPose getEncoderGoal() {
+    return lockedGet(() -> encoderGoal);
   }
 
   /** Whether the goal is in odometry coordinates. */
-  public synchronized boolean usingEncoderGoal() {
-    return useEncoderGoal;
+  public boolean usingEncoderGoal() {
+    return lockedGet(() -> useEncoderGoal);
   }
 
   /** Whether the robot reverses to the goal. */
-  public synchronized boolean getBacking() {
-    return backing;
+  public boolean getBacking() {
+    return lockedGet(() -> backing);
   }
 
   /** The state. */
-  public synchronized State getState() {
-    return state;
+  public State getState() {
+    return lockedGet(() -> state);
   }
 
   /** Top speed, mm/s. */
-  public synchronized double getSpeed() {
-    return speed;
+  public double getSpeed() {
+    return lockedGet(() -> speed);
   }
 
   /** Sets the top speed, mm/s. */
-  public synchronized void setSpeed(double speed) {
-    this.speed = speed;
+  public void setSpeed(double speed) {
+    locked(() -> this.speed = speed);
   }
 
   /** How close counts as arrived when not in just-distance mode, mm (default 100). */
-  public synchronized double getCloseDist() {
-    return closeDist;
+  public double getCloseDist() {
+    return lockedGet(() -> closeDist);
   }
 
   /** Sets how close counts as arrived when not in just-distance mode, mm. */
-  public synchronized void setCloseDist(double closeDist) {
-    this.closeDist = closeDist;
+  public void setCloseDist(double closeDist) {
+    locked(() -> this.closeDist = closeDist);
   }
 
   /**
    * Turns in place, without driving, while the goal is more than {@code threshAngle} degrees off
    * the heading (default 360: never). Below about 20° the robot may never get there.
    */
-  public synchronized void setTurnThreshold(double threshAngle) {
-    turnThresh = threshAngle;
+  public void setTurnThreshold(double threshAngle) {
+    locked(() -> turnThresh = threshAngle);
   }
 
   /** Maximum rotational velocity while turning in place, deg/s (0: the robot's). */
-  public synchronized void setTurnSpeed(double degPerSec) {
-    maxTurnSpeed = degPerSec;
+  public void setTurnSpeed(double degPerSec) {
+    locked(() -> maxTurnSpeed = degPerSec);
   }
 
   /** Maximum rotational velocity while driving, deg/s (0: the robot's). */
-  public synchronized void setMaxRotVel(double degPerSec) {
-    maxRotVel = degPerSec;
+  public void setMaxRotVel(double degPerSec) {
+    locked(() -> maxRotVel = degPerSec);
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     if (state != State.STATE_GOING_TO_GOAL) {
       return null;
     }

@@ -1,5 +1,6 @@
 package org.jaria.action;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
@@ -24,6 +25,9 @@ import org.jaria.robot.ArRobot;
 public class ArActionGroup {
 
   private final ArRobot robot;
+  private final Object lock = new Object();
+
+  @GuardedBy("lock")
   private final List<ArAction> actions = new ArrayList<>();
 
   /** A group whose actions go to {@code robot}. */
@@ -42,7 +46,7 @@ public class ArActionGroup {
    */
   public void addAction(ArAction action, int priority) {
     Objects.requireNonNull(action, "action");
-    synchronized (actions) {
+    synchronized (lock) {
       if (!actions.contains(action)) {
         actions.add(action);
       }
@@ -52,7 +56,7 @@ public class ArActionGroup {
 
   /** Removes {@code action} from the group and from the robot. */
   public void remAction(ArAction action) {
-    synchronized (actions) {
+    synchronized (lock) {
       actions.remove(action);
     }
     robot.remAction(action);
@@ -80,7 +84,7 @@ public class ArActionGroup {
 
   /** The group's actions, in the order they were added (a copy). */
   public List<ArAction> getActionList() {
-    synchronized (actions) {
+    synchronized (lock) {
       return List.copyOf(actions);
     }
   }

@@ -67,14 +67,17 @@ public class ArActionIRs extends ArAction {
   }
 
   @Override
-  public synchronized void setRobot(ArRobot r) {
+  public void setRobot(ArRobot r) {
     super.setRobot(r);
-    cycleCounters = new int[Math.max(0, r.getRobotParams().getNumIR())];
-    java.util.Arrays.fill(cycleCounters, 1);
+    locked(
+        () -> {
+          cycleCounters = new int[Math.max(0, r.getRobotParams().getNumIR())];
+          java.util.Arrays.fill(cycleCounters, 1);
+        });
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     ArRobot robot = getRobot();
     long now = robot.getClock().nanoTime();
     desired.reset();

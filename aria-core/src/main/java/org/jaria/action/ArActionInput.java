@@ -33,37 +33,52 @@ public class ArActionInput extends ArAction {
   }
 
   /** Asks for this velocity, mm/s, from now on. */
-  public synchronized void setVel(double vel) {
-    usingVel = true;
-    velSet = vel;
+  public void setVel(double vel) {
+    locked(
+        () -> {
+          usingVel = true;
+          velSet = vel;
+        });
   }
 
   /** Asks for this rotational velocity, deg/s, from now on. */
-  public synchronized void setRotVel(double rotVel) {
-    rotRegime = RotRegime.ROTVEL;
-    rotVal = rotVel;
+  public void setRotVel(double rotVel) {
+    locked(
+        () -> {
+          rotRegime = RotRegime.ROTVEL;
+          rotVal = rotVel;
+        });
   }
 
   /** Asks once for a change of heading of {@code delta} degrees from the current heading. */
-  public synchronized void deltaHeadingFromCurrent(double delta) {
-    rotRegime = RotRegime.DELTAHEADING;
-    rotVal = delta;
+  public void deltaHeadingFromCurrent(double delta) {
+    locked(
+        () -> {
+          rotRegime = RotRegime.DELTAHEADING;
+          rotVal = delta;
+        });
   }
 
   /** Asks for this absolute heading, degrees, from now on. */
-  public synchronized void setHeading(double heading) {
-    rotRegime = RotRegime.SETHEADING;
-    rotVal = heading;
+  public void setHeading(double heading) {
+    locked(
+        () -> {
+          rotRegime = RotRegime.SETHEADING;
+          rotVal = heading;
+        });
   }
 
   /** Stops asking for anything. */
-  public synchronized void clear() {
-    usingVel = false;
-    rotRegime = RotRegime.NONE;
+  public void clear() {
+    locked(
+        () -> {
+          usingVel = false;
+          rotRegime = RotRegime.NONE;
+        });
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     desired.reset();
     if (usingVel) {
       desired.setVel(velSet);

@@ -128,7 +128,7 @@ public class ArActionJoydrive extends ArAction {
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     desired.reset();
     if (!joyHandler.haveJoystick()) {
       return null;

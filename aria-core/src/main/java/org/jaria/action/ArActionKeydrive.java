@@ -89,13 +89,16 @@ public class ArActionKeydrive extends ArAction {
   }
 
   /** Binds Up, Down, Left, Right and Space to this action (logging any already taken). */
-  public synchronized void takeKeys() {
-    bind(ArKeyHandler.UP, upCb, "up");
-    bind(ArKeyHandler.DOWN, downCb, "down");
-    bind(ArKeyHandler.LEFT, leftCb, "left");
-    bind(ArKeyHandler.RIGHT, rightCb, "right");
-    bind(ArKeyHandler.SPACE, spaceCb, "space");
-    haveKeys = true;
+  public void takeKeys() {
+    locked(
+        () -> {
+          bind(ArKeyHandler.UP, upCb, "up");
+          bind(ArKeyHandler.DOWN, downCb, "down");
+          bind(ArKeyHandler.LEFT, leftCb, "left");
+          bind(ArKeyHandler.RIGHT, rightCb, "right");
+          bind(ArKeyHandler.SPACE, spaceCb, "space");
+          haveKeys = true;
+        });
   }
 
   private void bind(int key, Runnable cb, String what) {
@@ -108,11 +111,14 @@ public class ArActionKeydrive extends ArAction {
   }
 
   /** Unbinds this action's keys. */
-  public synchronized void giveUpKeys() {
-    for (Runnable cb : new Runnable[] {upCb, downCb, leftCb, rightCb, spaceCb}) {
-      keyHandler.remKeyHandler(cb);
-    }
-    haveKeys = false;
+  public void giveUpKeys() {
+    locked(
+        () -> {
+          for (Runnable cb : new Runnable[] {upCb, downCb, leftCb, rightCb, spaceCb}) {
+            keyHandler.remKeyHandler(cb);
+          }
+          haveKeys = false;
+        });
   }
 
   @Override
@@ -129,53 +135,63 @@ public class ArActionKeydrive extends ArAction {
       giveUpKeys();
     }
     super.deactivate();
-    synchronized (this) {
-      desiredSpeed = 0;
-      turnAmount = 0;
-    }
+    locked(
+        () -> {
+          desiredSpeed = 0;
+          turnAmount = 0;
+        });
   }
 
   /** Sets the fastest speed (mm/s) and the largest turn (degrees per cycle). */
-  public synchronized void setSpeeds(double transVelMax, double turnAmountMax) {
-    this.transVelMax = transVelMax;
-    this.turnAmountMax = turnAmountMax;
+  public void setSpeeds(double transVelMax, double turnAmountMax) {
+    locked(
+        () -> {
+          this.transVelMax = transVelMax;
+          this.turnAmountMax = turnAmountMax;
+        });
   }
 
   /** Sets the speed change (mm/s) and turn (degrees) per key press. */
-  public synchronized void setIncrements(double velIncrement, double turnIncrement) {
-    this.velIncrement = velIncrement;
-    this.turnIncrement = turnIncrement;
+  public void setIncrements(double velIncrement, double turnIncrement) {
+    locked(
+        () -> {
+          this.velIncrement = velIncrement;
+          this.turnIncrement = turnIncrement;
+        });
   }
 
   /** What the Up key does: faster (or less fast backwards). */
-  public synchronized void up() {
-    deltaVel += velIncrement;
+  public void up() {
+    locked(() -> deltaVel += velIncrement);
   }
 
   /** What the Down key does: slower (or faster backwards). */
-  public synchronized void down() {
-    deltaVel -= velIncrement;
+  public void down() {
+    locked(() -> deltaVel -= velIncrement);
   }
 
   /** What the Left key does: turn left. */
-  public synchronized void left() {
-    turnAmount = Math.min(turnAmount + turnIncrement, turnAmountMax);
+  public void left() {
+    locked(() -> turnAmount = Math.min(turnAmount + turnIncrement, turnAmountMax));
   }
 
   /** What the Right key does: turn right. */
-  public synchronized void right() {
-    turnAmount = Math.max(turnAmount - turnIncrement, -turnAmountMax);
+  public void right() {
+    locked(() -> turnAmount = Math.max(turnAmount - turnIncrement, -turnAmountMax));
   }
 
   /** What Space does: stop. */
-  public synchronized void space() {
-    speedReset = false;
-    desiredSpeed = 0;
-    turnAmount = 0;
+  public void space() {
+    locked(
+        () -> {
+          speedReset = false;
+          desiredSpeed = 0;
+          turnAmount = 0;
+        });
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     ArRobot robot = getRobot();
     desired.reset();
     if (Math.abs(currentDesired.getVelStrength() - 1.0) < 1e-13) {

@@ -46,7 +46,7 @@ public class ArActionLimiterBackwards extends ArAction {
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     ArRobot robot = getRobot();
     double slowStopDist = Math.max(stopDist, slowDist);
     double halfWidth = robot.getRobotWidth() / 2.0 * widthRatio;

@@ -55,16 +55,19 @@ public class ArActionLimiterForwards extends ArAction {
   }
 
   /** Sets the parameters, as the constructor (ARIA's defaults: 250, 1000, 200, 1). */
-  public synchronized void setParameters(
+  public void setParameters(
       double stopDistance, double slowDistance, double slowSpeed, double widthRatio) {
-    this.stopDist = stopDistance;
-    this.slowDist = slowDistance;
-    this.slowSpeed = slowSpeed;
-    this.widthRatio = widthRatio;
+    locked(
+        () -> {
+          this.stopDist = stopDistance;
+          this.slowDist = slowDistance;
+          this.slowSpeed = slowSpeed;
+          this.widthRatio = widthRatio;
+        });
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     ArRobot robot = getRobot();
     double checkDist = Math.max(stopDist, slowDist);
     double halfWidth = robot.getRobotWidth() / 2.0 * widthRatio;

@@ -38,7 +38,7 @@ public class ArActionLimiterRot extends ArAction {
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     if (!checkRadius) {
       return null;
     }

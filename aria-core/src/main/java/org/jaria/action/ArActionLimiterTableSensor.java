@@ -22,7 +22,7 @@ public class ArActionLimiterTableSensor extends ArAction {
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     ArRobot robot = getRobot();
     desired.reset();
     if (RobotSensing.hasTableSensingIR(robot)

@@ -53,7 +53,7 @@ public class ArActionMovementParameters extends ArAction {
    * @param rotAccel rotational acceleration, deg/s²
    * @param rotDecel rotational deceleration, deg/s²
    */
-  public synchronized void setParameters(
+  public void setParameters(
       double maxVel,
       double maxNegVel,
       double transAccel,
@@ -61,37 +61,40 @@ public class ArActionMovementParameters extends ArAction {
       double rotVelMax,
       double rotAccel,
       double rotDecel) {
-    this.maxVel = maxVel;
-    this.maxNegVel = maxNegVel;
-    this.transAccel = transAccel;
-    this.transDecel = transDecel;
-    this.maxRotVel = rotVelMax;
-    this.rotAccel = rotAccel;
-    this.rotDecel = rotDecel;
+    locked(
+        () -> {
+          this.maxVel = maxVel;
+          this.maxNegVel = maxNegVel;
+          this.transAccel = transAccel;
+          this.transDecel = transDecel;
+          this.maxRotVel = rotVelMax;
+          this.rotAccel = rotAccel;
+          this.rotDecel = rotDecel;
+        });
   }
 
   /** Enables the action (separately from activation). */
-  public synchronized void enable() {
-    enabled = true;
+  public void enable() {
+    locked(() -> enabled = true);
   }
 
   /** Enables the action for the next cycle only. */
-  public synchronized void enableOnce() {
-    enableOnce = true;
+  public void enableOnce() {
+    locked(() -> enableOnce = true);
   }
 
   /** Disables the action (separately from activation). */
-  public synchronized void disable() {
-    enabled = false;
+  public void disable() {
+    locked(() -> enabled = false);
   }
 
   /** Whether the action is enabled. */
-  public synchronized boolean isEnabled() {
-    return enabled;
+  public boolean isEnabled() {
+    return lockedGet(() -> enabled);
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     desired.reset();
     if (!enabled && !enableOnce) {
       return null;

@@ -54,25 +54,28 @@ public class ArActionRatioInput extends ArAction {
   }
 
   /** Sets all three ratios, each pulled into its range. */
-  public synchronized void setRatios(double transRatio, double rotRatio, double throttleRatio) {
-    setTransRatio(transRatio);
-    setRotRatio(rotRatio);
-    setThrottleRatio(throttleRatio);
+  public void setRatios(double transRatio, double rotRatio, double throttleRatio) {
+    locked(
+        () -> {
+          setTransRatio(transRatio);
+          setRotRatio(rotRatio);
+          setThrottleRatio(throttleRatio);
+        });
   }
 
   /** Sets the translation ratio, −100 (full backwards) to 100 (full forwards). */
-  public synchronized void setTransRatio(double ratio) {
-    transRatio = clamp(ratio, -100, 100);
+  public void setTransRatio(double ratio) {
+    locked(() -> transRatio = clamp(ratio, -100, 100));
   }
 
   /** Sets the rotation ratio, −100 (full right) to 100 (full left). */
-  public synchronized void setRotRatio(double ratio) {
-    rotRatio = clamp(ratio, -100, 100);
+  public void setRotRatio(double ratio) {
+    locked(() -> rotRatio = clamp(ratio, -100, 100));
   }
 
   /** Sets the throttle, 0 (stopped) to 100 (full). */
-  public synchronized void setThrottleRatio(double ratio) {
-    throttleRatio = clamp(ratio, 0, 100);
+  public void setThrottleRatio(double ratio) {
+    locked(() -> throttleRatio = clamp(ratio, 0, 100));
   }
 
   private static double clamp(double v, double lo, double hi) {
@@ -83,18 +86,18 @@ public class ArActionRatioInput extends ArAction {
   }
 
   /** The translation ratio. */
-  public synchronized double getTransRatio() {
-    return transRatio;
+  public double getTransRatio() {
+    return lockedGet(() -> transRatio);
   }
 
   /** The rotation ratio. */
-  public synchronized double getRotRatio() {
-    return rotRatio;
+  public double getRotRatio() {
+    return lockedGet(() -> rotRatio);
   }
 
   /** The throttle. */
-  public synchronized double getThrottleRatio() {
-    return throttleRatio;
+  public double getThrottleRatio() {
+    return lockedGet(() -> throttleRatio);
   }
 
   /**
@@ -106,34 +109,40 @@ public class ArActionRatioInput extends ArAction {
    * @param rotAtFullBackwards rotational velocity at full rotation when going full backwards
    * @param rotAtStopped rotational velocity at full rotation when stopped, deg/s
    */
-  public synchronized void setParameters(
+  public void setParameters(
       double fullThrottleForwards,
       double fullThrottleBackwards,
       double rotAtFullForwards,
       double rotAtFullBackwards,
       double rotAtStopped) {
-    this.fullThrottleForwards = fullThrottleForwards;
-    this.fullThrottleBackwards = fullThrottleBackwards;
-    this.rotAtFullForwards = rotAtFullForwards;
-    this.rotAtFullBackwards = rotAtFullBackwards;
-    this.rotAtStopped = rotAtStopped;
+    locked(
+        () -> {
+          this.fullThrottleForwards = fullThrottleForwards;
+          this.fullThrottleBackwards = fullThrottleBackwards;
+          this.rotAtFullForwards = rotAtFullForwards;
+          this.rotAtFullBackwards = rotAtFullBackwards;
+          this.rotAtStopped = rotAtStopped;
+        });
   }
 
   /**
    * Adds a callback run at the start of every fire, to set the ratios. Callbacks run from the
    * lowest priority number to the highest, so higher numbers have the last word.
    */
-  public synchronized void addFireCallback(int priority, Runnable callback) {
-    int i = 0;
-    while (i < fireCallbacks.size() && fireCallbacks.get(i).priority() <= priority) {
-      i++;
-    }
-    fireCallbacks.add(i, new FireCallback(priority, callback));
+  public void addFireCallback(int priority, Runnable callback) {
+    locked(
+        () -> {
+          int i = 0;
+          while (i < fireCallbacks.size() && fireCallbacks.get(i).priority() <= priority) {
+            i++;
+          }
+          fireCallbacks.add(i, new FireCallback(priority, callback));
+        });
   }
 
   /** Removes a fire callback. */
-  public synchronized void remFireCallback(Runnable callback) {
-    fireCallbacks.removeIf(f -> f.callback() == callback);
+  public void remFireCallback(Runnable callback) {
+    locked(() -> fireCallbacks.removeIf(f -> f.callback() == callback));
   }
 
   /** Adds a callback run when the action is activated. */
@@ -170,11 +179,12 @@ public class ArActionRatioInput extends ArAction {
   @Override
   public void activate() {
     if (!isActive()) {
-      synchronized (this) {
-        transRatio = 0;
-        rotRatio = 0;
-        throttleRatio = 0;
-      }
+      locked(
+          () -> {
+            transRatio = 0;
+            rotRatio = 0;
+            throttleRatio = 0;
+          });
       activateCallbacks.forEach(Runnable::run);
     }
     super.activate();
@@ -187,18 +197,19 @@ public class ArActionRatioInput extends ArAction {
   @Override
   public void deactivate() {
     if (isActive()) {
-      synchronized (this) {
-        transRatio = 0;
-        rotRatio = 0;
-        throttleRatio = 0;
-      }
+      locked(
+          () -> {
+            transRatio = 0;
+            rotRatio = 0;
+            throttleRatio = 0;
+          });
       deactivateCallbacks.forEach(Runnable::run);
     }
     super.deactivate();
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     for (FireCallback f : List.copyOf(fireCallbacks)) {
       f.callback().run();
     }

@@ -106,7 +106,7 @@ public class ArActionRobotJoydrive extends ArAction {
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     ArRobot robot = getRobot();
     JoystickPacket j = last;
     desired.reset();

@@ -95,9 +95,7 @@ public class ArActionStallRecover extends ArAction {
 
   @Override
   public void activate() {
-    synchronized (this) {
-      going = false;
-    }
+    locked(() -> going = false);
     super.activate();
   }
 
@@ -112,12 +110,12 @@ public class ArActionStallRecover extends ArAction {
   }
 
   /** Whether a recovery manoeuvre is under way. */
-  public synchronized boolean isRecovering() {
-    return going;
+  public boolean isRecovering() {
+    return lockedGet(() -> going);
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     if (!enabled) {
       return null;
     }

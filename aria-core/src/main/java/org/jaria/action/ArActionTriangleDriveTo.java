@@ -142,78 +142,80 @@ public class ArActionTriangleDriveTo extends ArAction {
   }
 
   /** Sets the parameters as the constructor does. */
-  public synchronized void setParameters(
+  public void setParameters(
       double finalDistFromVertex,
       double approachDistFromVertex,
       double speed,
       double closeDist,
       double acquireTurnSpeed) {
-    this.finalDistFromVertex = finalDistFromVertex;
-    this.approachDistFromVertex = approachDistFromVertex;
-    this.speed = speed;
-    this.closeDist = closeDist;
-    this.acquireTurnSpeed = acquireTurnSpeed;
+    locked(
+        () -> {
+          this.finalDistFromVertex = finalDistFromVertex;
+          this.approachDistFromVertex = approachDistFromVertex;
+          this.speed = speed;
+          this.closeDist = closeDist;
+          this.acquireTurnSpeed = acquireTurnSpeed;
+        });
   }
 
   /** Sets where laser scans come from. */
-  public synchronized void setLaserScanSource(LaserScanSource source) {
-    this.laser = source;
+  public void setLaserScanSource(LaserScanSource source) {
+    locked(() -> this.laser = source);
   }
 
   /** Sets the line finder (to tune its tolerances). */
-  public synchronized void setLineFinder(ArLineFinder finder) {
-    this.lineFinder = finder;
+  public void setLineFinder(ArLineFinder finder) {
+    locked(() -> this.lineFinder = finder);
   }
 
   /** The line finder used. */
-  public synchronized ArLineFinder getLineFinder() {
-    return lineFinder;
+  public ArLineFinder getLineFinder() {
+    return lockedGet(() -> lineFinder);
   }
 
   /** Sets the target's shape (ARIA's defaults: 254, 135, 254). */
-  public synchronized void setTriangleParams(
-      double line1Length, double angleBetween, double line2Length) {
-    finder.setTriangleParams(line1Length, angleBetween, line2Length);
+  public void setTriangleParams(double line1Length, double angleBetween, double line2Length) {
+    locked(() -> finder.setTriangleParams(line1Length, angleBetween, line2Length));
   }
 
   /** Sets whether to turn in place looking for a target not seen (default false: fail). */
-  public synchronized void setAcquire(boolean acquire) {
-    this.acquire = acquire;
+  public void setAcquire(boolean acquire) {
+    locked(() -> this.acquire = acquire);
   }
 
   /** Whether it turns in place looking for the target. */
-  public synchronized boolean getAcquire() {
-    return acquire;
+  public boolean getAcquire() {
+    return lockedGet(() -> acquire);
   }
 
   /** Sets the final distance from the vertex, mm. */
-  public synchronized void setFinalDistFromVertex(double dist) {
-    finalDistFromVertex = dist;
+  public void setFinalDistFromVertex(double dist) {
+    locked(() -> finalDistFromVertex = dist);
   }
 
   /** The final distance from the vertex, mm. */
-  public synchronized double getFinalDistFromVertex() {
-    return finalDistFromVertex;
+  public double getFinalDistFromVertex() {
+    return lockedGet(() -> finalDistFromVertex);
   }
 
   /** Sets whether to drive at the vertex itself rather than the final point. */
-  public synchronized void setGotoVertex(boolean gotoVertex) {
-    this.gotoVertex = gotoVertex;
+  public void setGotoVertex(boolean gotoVertex) {
+    locked(() -> this.gotoVertex = gotoVertex);
   }
 
   /** Whether it drives at the vertex itself. */
-  public synchronized boolean getGotoVertex() {
-    return gotoVertex;
+  public boolean getGotoVertex() {
+    return lockedGet(() -> gotoVertex);
   }
 
   /** Sets whether the vertex is moved to the closest laser reading near it (default false). */
-  public synchronized void setAdjustVertex(boolean adjustVertex) {
-    this.adjustVertex = adjustVertex;
+  public void setAdjustVertex(boolean adjustVertex) {
+    locked(() -> this.adjustVertex = adjustVertex);
   }
 
   /** Whether the vertex is adjusted to the closest laser reading. */
-  public synchronized boolean getAdjustVertex() {
-    return adjustVertex;
+  public boolean getAdjustVertex() {
+    return lockedGet(() -> adjustVertex);
   }
 
   /**
@@ -221,92 +223,102 @@ public class ArActionTriangleDriveTo extends ArAction {
    * sides are too close to see well), mm (default 250), and whether that applies when driving at
    * the vertex too.
    */
-  public synchronized void setIgnoreTriangleDist(double dist, boolean useIgnoreInGotoVertexMode) {
-    ignoreTriangleDist = dist;
-    useIgnoreInGoto = useIgnoreInGotoVertexMode;
+  public void setIgnoreTriangleDist(double dist, boolean useIgnoreInGotoVertexMode) {
+    locked(
+        () -> {
+          ignoreTriangleDist = dist;
+          useIgnoreInGoto = useIgnoreInGotoVertexMode;
+        });
   }
 
   /** The distance within which the target is no longer looked for, mm. */
-  public synchronized double getIgnoreTriangleDist() {
-    return ignoreTriangleDist;
+  public double getIgnoreTriangleDist() {
+    return lockedGet(() -> ignoreTriangleDist);
   }
 
   /** Sets how long to carry on without seeing the vertex, ms (default 4000). */
-  public synchronized void setVertexUnseenStopMSecs(int ms) {
-    vertexUnseenStopMSecs = ms;
+  public void setVertexUnseenStopMSecs(int ms) {
+    locked(() -> vertexUnseenStopMSecs = ms);
   }
 
   /** How long it carries on without seeing the vertex, ms. */
-  public synchronized int getVertexUnseenStopMSecs() {
-    return vertexUnseenStopMSecs;
+  public int getVertexUnseenStopMSecs() {
+    return lockedGet(() -> vertexUnseenStopMSecs);
   }
 
   /** Sets the largest gap between points of one line, mm (0: the line finder's default). */
-  public synchronized void setMaxDistBetweenLinePoints(int mm) {
-    maxDistBetweenLinePoints = mm;
+  public void setMaxDistBetweenLinePoints(int mm) {
+    locked(() -> maxDistBetweenLinePoints = mm);
   }
 
   /** Ignores targets farther than this from the robot's line of travel, mm (0: no limit). */
-  public synchronized void setMaxLateralDist(int mm) {
-    finder.setMaxLateralDist(mm);
+  public void setMaxLateralDist(int mm) {
+    locked(() -> finder.setMaxLateralDist(mm));
   }
 
   /** Ignores targets misaligned with the robot by more than this, degrees (0: no limit). */
-  public synchronized void setMaxAngleMisalignment(int degrees) {
-    finder.setMaxAngleMisalignment(degrees);
+  public void setMaxAngleMisalignment(int degrees) {
+    locked(() -> finder.setMaxAngleMisalignment(degrees));
   }
 
   /**
    * Shifts the vertex used: by ({@code localXOffset}, {@code localYOffset}) mm in the vertex's own
    * frame (x along its facing) and turns it by {@code thOffset} degrees.
    */
-  public synchronized void setVertexOffset(int localXOffset, int localYOffset, double thOffset) {
-    this.localXOffset = localXOffset;
-    this.localYOffset = localYOffset;
-    this.thOffset = thOffset;
+  public void setVertexOffset(int localXOffset, int localYOffset, double thOffset) {
+    locked(
+        () -> {
+          this.localXOffset = localXOffset;
+          this.localYOffset = localYOffset;
+          this.thOffset = thOffset;
+        });
   }
 
   /** The state. */
-  public synchronized State getState() {
-    return state;
+  public State getState() {
+    return lockedGet(() -> state);
   }
 
   /** Whether the vertex has been seen since the last activation or search. */
-  public synchronized boolean getVertexSeen() {
-    return vertexSeen;
+  public boolean getVertexSeen() {
+    return lockedGet(() -> vertexSeen);
   }
 
   /** The vertex in global coordinates (meaningful once seen). */
-  public synchronized ArPose getVertex() {
-    ArRobot r = getRobot();
-    return r == null ? vertex : r.getEncoderTransform().doTransform(vertex);
+  public ArPose getVertex() {
+    return lockedGet(
+        () -> {
+          ArRobot r = getRobot();
+          return r == null ? vertex : r.getEncoderTransform().doTransform(vertex);
+        });
   }
 
   /** The lines found in the last scan examined. */
-  public synchronized List<ArLineFinderSegment> getLines() {
-    return lines;
+  public List<ArLineFinderSegment> getLines() {
+    return lockedGet(() -> lines);
   }
 
   /** Starts driving to the target (or fails at once without a laser). */
   @Override
   public void activate() {
     super.activate();
-    synchronized (this) {
-      vertexSeen = false;
-      ArRobot r = getRobot();
-      vertexSeenLastNanos = r == null ? 0 : r.getClock().nanoTime();
-      originalAngle = r == null ? Double.NaN : r.getTh();
-      linesCounter = -1;
-      if (laser == null && r != null) {
-        laser = robotsLaser(r);
-      }
-      state = laser != null ? State.STATE_ACQUIRE : State.STATE_FAILED;
-      if (laser == null) {
-        log.warn(
-            "{}: no laser: add one to the robot (addRangeDevice) or call setLaserScanSource",
-            getName());
-      }
-    }
+    locked(
+        () -> {
+          vertexSeen = false;
+          ArRobot r = getRobot();
+          vertexSeenLastNanos = r == null ? 0 : r.getClock().nanoTime();
+          originalAngle = r == null ? Double.NaN : r.getTh();
+          linesCounter = -1;
+          if (laser == null && r != null) {
+            laser = robotsLaser(r);
+          }
+          state = laser != null ? State.STATE_ACQUIRE : State.STATE_FAILED;
+          if (laser == null) {
+            log.warn(
+                "{}: no laser: add one to the robot (addRangeDevice) or call setLaserScanSource",
+                getName());
+          }
+        });
   }
 
   private static LaserScanSource robotsLaser(ArRobot r) {
@@ -321,9 +333,7 @@ public class ArActionTriangleDriveTo extends ArAction {
   @Override
   public void deactivate() {
     super.deactivate();
-    synchronized (this) {
-      state = State.STATE_INACTIVE;
-    }
+    locked(() -> state = State.STATE_INACTIVE);
   }
 
   private ArPose poseFromVertex(ArRobot robot, double distFromVertex) {
@@ -397,7 +407,7 @@ public class ArActionTriangleDriveTo extends ArAction {
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     ArRobot robot = getRobot();
     if (Double.isNaN(originalAngle)) {
       originalAngle = robot.getTh();

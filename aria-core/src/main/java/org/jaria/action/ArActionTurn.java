@@ -39,7 +39,7 @@ public class ArActionTurn extends ArAction {
   }
 
   @Override
-  public synchronized ArActionDesired fire(ArActionDesired currentDesired) {
+  public ArActionDesired fire(ArActionDesired currentDesired) {
     ArRobot robot = getRobot();
     desired.reset();
     double vel = robot.getVel();

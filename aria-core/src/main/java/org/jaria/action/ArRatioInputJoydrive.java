@@ -1,5 +1,6 @@
 package org.jaria.action;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import org.jaria.input.ArJoyHandler;
 import org.jaria.robot.ArRobot;
 
@@ -15,6 +16,8 @@ public class ArRatioInputJoydrive {
   private final ArJoyHandler joyHandler;
   private final Runnable fireCb = this::fireCallback;
   private volatile boolean stopIfNoButtonPressed;
+
+  @GuardedBy("this")
   private boolean firedLast;
 
   /** Joystick input at ARIA's defaults: priority 50, no stop without button, OS calibration. */

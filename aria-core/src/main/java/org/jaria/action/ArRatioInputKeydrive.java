@@ -1,5 +1,6 @@
 package org.jaria.action;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import org.jaria.input.ArKeyHandler;
 import org.jaria.robot.ArListPos;
 import org.jaria.robot.ArRobot;
@@ -30,8 +31,14 @@ public class ArRatioInputKeydrive {
   private final Runnable activateCb = this::activate;
   private final Runnable deactivateCb = this::deactivate;
   private final double velIncrement;
+
+  @GuardedBy("this")
   private double transRatio;
+
+  @GuardedBy("this")
   private double rotRatio;
+
+  @GuardedBy("this")
   private boolean haveKeys;
 
   /** Keyboard input at ARIA's defaults: fire-callback priority 25, 5 % per press. */

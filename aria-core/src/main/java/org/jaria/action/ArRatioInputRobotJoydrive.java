@@ -1,5 +1,6 @@
 package org.jaria.action;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import org.jaria.input.ArJoyHandler;
 import org.jaria.input.ArRobotJoyHandler;
 import org.jaria.robot.ArRobot;
@@ -17,6 +18,8 @@ public class ArRatioInputRobotJoydrive {
   private final ArRobotJoyHandler joy;
   private final Runnable fireCb = this::fireCallback;
   private final boolean requireDeadmanPushed;
+
+  @GuardedBy("this")
   private boolean deadZoneLast;
 
   /** Robot-joystick input at ARIA's defaults: priority 75, deadman required. */

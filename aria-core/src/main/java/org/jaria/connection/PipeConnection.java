@@ -1,5 +1,6 @@
 package org.jaria.connection;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.io.IOException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
@@ -27,9 +28,17 @@ public final class PipeConnection implements ArDeviceConnection {
   private static final class Channel {
     final ReentrantLock lock = new ReentrantLock();
     final Condition readable = lock.newCondition();
+
+    @GuardedBy("lock")
     byte[] data = new byte[4096];
+
+    @GuardedBy("lock")
     int head;
+
+    @GuardedBy("lock")
     int size;
+
+    @GuardedBy("lock")
     boolean closed;
   }
 
@@ -170,6 +179,7 @@ public final class PipeConnection implements ArDeviceConnection {
     }
   }
 
+  @GuardedBy("c.lock")
   private static void grow(Channel c, int need) {
     int cap = c.data.length;
     while (cap < need) {

@@ -1,5 +1,6 @@
 package org.jaria.range;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.concurrent.TimeUnit;
 import org.jaria.geom.ArTransform;
 import org.jaria.params.ArRobotParams;
@@ -70,6 +71,7 @@ public class ArBumpers extends ArRangeDevice {
     }
   }
 
+  @GuardedBy("this")
   private void add(ArTransform toGlobal, double angleDeg, double length, double width, long now) {
     double a = Math.toRadians(angleDeg);
     // A point on the ellipse through the robot's front (or rear) and sides.

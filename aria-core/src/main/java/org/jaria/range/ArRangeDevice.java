@@ -1,5 +1,6 @@
 package org.jaria.range;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.List;
 import org.jaria.geom.ArPose;
 import org.jaria.geom.ArTransform;
@@ -20,10 +21,12 @@ public abstract class ArRangeDevice {
   private final String name;
   private volatile double maxRange;
 
-  /** What the device sees now. Guarded by {@code this}. */
+  /** What the device sees now. Hold this device's monitor to use it. */
+  @GuardedBy("this")
   protected final ArRangeBuffer currentBuffer;
 
-  /** What the device has seen recently. Guarded by {@code this}. */
+  /** What the device has seen recently. Hold this device's monitor to use it. */
+  @GuardedBy("this")
   protected final ArRangeBuffer cumulativeBuffer;
 
   /** The robot the device belongs to, once added with {@link ArRobot#addRangeDevice}. */

@@ -1,5 +1,6 @@
 package org.jaria.range;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.concurrent.TimeUnit;
 import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
@@ -96,6 +97,7 @@ public class ArSonarDevice extends ArRangeDevice {
   }
 
   /** Cleans what this reading sees through, then adds the reading if it is an obstacle. */
+  @GuardedBy("this")
   private void addCumulative(ArSensorReading s) {
     ArPose taken = s.poseTaken();
     double r = Math.toRadians(taken.th());

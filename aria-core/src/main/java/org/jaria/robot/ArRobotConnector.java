@@ -108,7 +108,7 @@ public class ArRobotConnector {
     }
     ArDeviceConnection conn = chooseConnection();
     if (conn == null) {
-      robot.connection.openFailed(lastOpenFailure);
+      robot.link.openFailed(lastOpenFailure);
       return false;
     }
     robot.setDeviceConnection(conn);

@@ -1,5 +1,6 @@
 package org.jaria.robot;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.io.IOException;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
@@ -23,7 +24,10 @@ public final class ArRobotPacketSender {
   private static final Logger log = LoggerFactory.getLogger(ArRobotPacketSender.class);
 
   private final Clock clock;
+
+  @GuardedBy("this")
   private final ArRobotPacket packet = new ArRobotPacket();
+
   private final AtomicLong packetsSent = new AtomicLong();
   private volatile ArDeviceConnection connection;
   private volatile long lastSentNanos;

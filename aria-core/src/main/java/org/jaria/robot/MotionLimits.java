@@ -1,47 +1,100 @@
 package org.jaria.robot;
 
-import org.jaria.protocol.ArCommands;
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 
 /**
- * The robot's speed and acceleration limits as the program set them (SETV, SETRV, SETA, SETRA), the
- * top values the robot allows, and what was last sent, so each limit goes out only when it changes.
- * Thread-safe: every method holds this object's monitor.
+ * The robot's speed and acceleration limits as the program set them (ARIA's {@code setTransVelMax}
+ * ...), the top values the robot allows, and whether the robot lets them be set at all. Only the
+ * settings: what was last sent is state reflection's memory ({@link ReflectionMemory}). Setters may
+ * be called from any thread; state reflection reads one consistent {@link #values()} per cycle.
  */
 final class MotionLimits {
 
+  /**
+   * The limits at one moment.
+   *
+   * @param settableVelMaxes whether the robot takes SETV and SETRV
+   * @param settableAccsDecs whether the robot takes SETA and SETRA
+   * @param absMaxRotVel the top rotational velocity the robot allows, deg/s
+   * @param transVelMax maximum translational velocity, mm/s
+   * @param rotVelMax maximum rotational velocity, deg/s
+   * @param transAccel translational acceleration, mm/s²
+   * @param transDecel translational deceleration, mm/s²
+   * @param rotAccel rotational acceleration, deg/s²
+   * @param rotDecel rotational deceleration, deg/s²
+   */
+  record Values(
+      boolean settableVelMaxes,
+      boolean settableAccsDecs,
+      double absMaxRotVel,
+      double transVelMax,
+      double rotVelMax,
+      double transAccel,
+      double transDecel,
+      double rotAccel,
+      double rotDecel) {}
+
+  @GuardedBy("this")
   private boolean settableVelMaxes = true;
+
+  @GuardedBy("this")
   private boolean settableAccsDecs = true;
+
+  @GuardedBy("this")
   private double absMaxTransVel = 5000;
+
+  @GuardedBy("this")
   private double absMaxRotVel = 500;
+
+  @GuardedBy("this")
   private double transVelMax;
+
+  @GuardedBy("this")
   private double rotVelMax;
+
+  @GuardedBy("this")
   private double transAccel;
+
+  @GuardedBy("this")
   private double transDecel;
+
+  @GuardedBy("this")
   private double rotAccel;
+
+  @GuardedBy("this")
   private double rotDecel;
-  private double sentTransVelMax;
-  private double sentRotVelMax;
-  private double sentTransAccel;
-  private double sentTransDecel;
-  private double sentRotAccel;
-  private double sentRotDecel;
+
+  /** The limits as one value, made again after a change (they change rarely; cycles read often). */
+  @GuardedBy("this")
+  private Values values;
 
   synchronized void configure(boolean velMaxes, boolean accsDecs) {
+    values = null;
     settableVelMaxes = velMaxes;
     settableAccsDecs = accsDecs;
   }
 
-  /** Forgets what was sent (a new connection starts from the robot's own values). */
-  synchronized void forgetSent() {
-    sentTransVelMax = 0;
-    sentRotVelMax = 0;
-    sentTransAccel = 0;
-    sentTransDecel = 0;
-    sentRotAccel = 0;
-    sentRotDecel = 0;
+  /** The limits now, as one value. */
+  synchronized Values values() {
+    if (values != null) {
+      return values;
+    }
+    values =
+        new Values(
+            settableVelMaxes,
+            settableAccsDecs,
+            absMaxRotVel,
+            transVelMax,
+            rotVelMax,
+            transAccel,
+            transDecel,
+            rotAccel,
+            rotDecel);
+    return values;
   }
 
   synchronized void setAbsoluteMaxTransVel(double v) {
+    values = null;
     absMaxTransVel = Math.abs(v);
     if (transVelMax > absMaxTransVel) {
       transVelMax = absMaxTransVel;
@@ -53,6 +106,7 @@ final class MotionLimits {
   }
 
   synchronized void setAbsoluteMaxRotVel(double v) {
+    values = null;
     absMaxRotVel = Math.abs(v);
     if (rotVelMax > absMaxRotVel) {
       rotVelMax = absMaxRotVel;
@@ -64,6 +118,7 @@ final class MotionLimits {
   }
 
   synchronized boolean setTransVelMax(double v) {
+    values = null;
     if (v <= 0 || v > absMaxTransVel) {
       return false;
     }
@@ -76,6 +131,7 @@ final class MotionLimits {
   }
 
   synchronized boolean setRotVelMax(double v) {
+    values = null;
     if (v <= 0 || v > absMaxRotVel) {
       return false;
     }
@@ -88,6 +144,7 @@ final class MotionLimits {
   }
 
   synchronized void setTransAccel(double a) {
+    values = null;
     transAccel = Math.abs(a);
   }
 
@@ -96,6 +153,7 @@ final class MotionLimits {
   }
 
   synchronized void setTransDecel(double a) {
+    values = null;
     transDecel = Math.abs(a);
   }
 
@@ -104,6 +162,7 @@ final class MotionLimits {
   }
 
   synchronized void setRotAccel(double a) {
+    values = null;
     rotAccel = Math.abs(a);
   }
 
@@ -112,64 +171,11 @@ final class MotionLimits {
   }
 
   synchronized void setRotDecel(double a) {
+    values = null;
     rotDecel = Math.abs(a);
   }
 
   synchronized double getRotDecel() {
     return rotDecel;
-  }
-
-  /**
-   * Sends the translational limits that changed: {@code velMax} (SETV) and the acceleration and
-   * deceleration (SETA ±), each only if the robot lets them be set.
-   */
-  synchronized void sendTrans(
-      ArRobotPacketSender sender, double velMax, double accel, double decel) {
-    if (settableVelMaxes && Math.abs(sentTransVelMax - velMax) >= 1) {
-      sender.comInt(ArCommands.SETV.getNumber(), MotionReflector.clampShort(velMax));
-      sentTransVelMax = velMax;
-    }
-    if (settableAccsDecs && Math.abs(accel) > 1 && Math.abs(sentTransAccel - accel) >= 1) {
-      sender.comInt(ArCommands.SETA.getNumber(), MotionReflector.clampShort(accel));
-      sentTransAccel = accel;
-    }
-    if (settableAccsDecs && Math.abs(decel) > 1 && Math.abs(sentTransDecel - decel) >= 1) {
-      sender.comInt(ArCommands.SETA.getNumber(), -MotionReflector.clampShort(decel));
-      sentTransDecel = decel;
-    }
-  }
-
-  /** Sends the rotational limits that changed (SETRV, SETRA ±). */
-  synchronized void sendRot(ArRobotPacketSender sender, double velMax, double accel, double decel) {
-    if (settableVelMaxes && Math.abs(sentRotVelMax - velMax) >= 1) {
-      sender.comInt(ArCommands.SETRV.getNumber(), MotionReflector.clampShort(velMax));
-      sentRotVelMax = velMax;
-    }
-    if (settableAccsDecs && Math.abs(accel) > 1 && Math.abs(sentRotAccel - accel) >= 1) {
-      sender.comInt(ArCommands.SETRA.getNumber(), MotionReflector.clampShort(accel));
-      sentRotAccel = accel;
-    }
-    if (settableAccsDecs && Math.abs(decel) > 1 && Math.abs(sentRotDecel - decel) >= 1) {
-      sender.comInt(ArCommands.SETRA.getNumber(), -MotionReflector.clampShort(decel));
-      sentRotDecel = decel;
-    }
-  }
-
-  /** An action's maximum rotational velocity as used: rounded and capped at the top value. */
-  synchronized double cappedRotVelMax(double wanted) {
-    return Math.round(Math.min(wanted, absMaxRotVel));
-  }
-
-  /**
-   * Sends an action's maximum rotational velocity (capped at the top value) even when the robot's
-   * own maxima are not settable, as ARIA does; returns the value used.
-   */
-  synchronized double sendActionRotVelMax(ArRobotPacketSender sender, double wanted) {
-    double max = Math.round(Math.min(wanted, absMaxRotVel));
-    if (Math.abs(sentRotVelMax - max) >= 1) {
-      sentRotVelMax = max;
-      sender.comInt(ArCommands.SETRV.getNumber(), MotionReflector.clampShort(max));
-    }
-    return max;
   }
 }

@@ -68,9 +68,9 @@ final class RunLoop {
         long start = clock.nanoTime();
         long cycle = TimeUnit.MILLISECONDS.toNanos(robot.getCycleTime());
         if (robot.isConnecting()) {
-          robot.connection.waitWhileConnecting(start + cycle);
+          robot.link.waitWhileConnecting(start + cycle);
         } else if (robot.isConnected() && robot.isCycleChained()) {
-          robot.connection.waitForSip(start + 2 * cycle);
+          robot.link.waitForSip(start + 2 * cycle);
         } else {
           sleepUntil(clock, start + cycle);
         }

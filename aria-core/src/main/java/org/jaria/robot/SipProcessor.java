@@ -1,5 +1,6 @@
 package org.jaria.robot;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.ArrayList;
 import java.util.List;
 import org.jaria.geom.ArMath;
@@ -18,34 +19,61 @@ import org.slf4j.LoggerFactory;
  *
  * <p>SIPs are processed on the robot's cycle thread; {@link #moveTo} and {@link
  * #setEncoderTransform} may come from another thread (a localization task), so every method is
- * synchronized. They are short, and contention is rare.
+ * synchronized and every field is guarded by this object's monitor. The methods are short, and
+ * contention is rare.
  */
 final class SipProcessor {
 
   private static final Logger log = LoggerFactory.getLogger(SipProcessor.class);
 
-  /** Corrects each odometry heading change, e.g. with a gyro (ARIA's encoder correction). */
-  @FunctionalInterface
-  interface HeadingCorrection {
-    /** Returns the heading change to use, degrees, given the raw odometry deltas. */
-    double correctedDeltaTh(double deltaX, double deltaY, double deltaTh, long timeNanos);
-  }
-
+  @GuardedBy("this")
   private ArRobotParams params;
+
+  @GuardedBy("this")
   private final List<ArSensorReading> sonars = new ArrayList<>();
+
+  @GuardedBy("this")
   private boolean first = true;
+
+  @GuardedBy("this")
   private int lastX;
+
+  @GuardedBy("this")
   private int lastY;
+
+  @GuardedBy("this")
   private int lastTh;
+
+  @GuardedBy("this")
   private ArPose rawEncoderPose = ArPose.ORIGIN;
+
+  @GuardedBy("this")
   private ArPose encoderPose = ArPose.ORIGIN;
+
+  @GuardedBy("this")
   private ArTransform encoderTransform = ArTransform.IDENTITY;
+
+  @GuardedBy("this")
   private ArPose globalPose = ArPose.ORIGIN;
+
+  @GuardedBy("this")
   private double odometerDistance;
+
+  @GuardedBy("this")
   private double odometerDegrees;
+
+  @GuardedBy("this")
   private HeadingCorrection headingCorrection;
+
+  @GuardedBy("this")
   private boolean warnedExtraSonar;
+
+  @GuardedBy("this")
   private RobotStatus last;
+
+  /** Reused for every SIP: every field is set each time. */
+  @GuardedBy("this")
+  private final RobotStatus.Builder builder = RobotStatus.builder();
 
   SipProcessor(ArRobotParams params) {
     setParams(params);
@@ -111,7 +139,8 @@ final class SipProcessor {
     rawEncoderPose =
         new ArPose(rawEncoderPose.x() + dx, rawEncoderPose.y() + dy, rawEncoderPose.th() + dth);
     HeadingCorrection c = headingCorrection;
-    if (c != null && !first) {
+    // As in ARIA, the correction sees every SIP, the first one (with zero deltas) included.
+    if (c != null) {
       dth = c.correctedDeltaTh(dx, dy, dth, nowNanos);
       // Rotate the position delta from the raw heading frame into the corrected one.
       double rot = Math.toRadians(ArMath.subAngle(encoderPose.th() + dth, rawEncoderPose.th()));
@@ -156,37 +185,35 @@ final class SipProcessor {
             ? sip.getRotVel() / 10.0
             : Math.toDegrees((rightVel - leftVel) / 2.0 * p.getDiffConvFactor());
     last =
-        new RobotStatus(
-            counter,
-            nowNanos,
-            globalPose,
-            encoderPose,
-            rawEncoderPose,
-            (leftVel + rightVel) / 2.0,
-            rotVel,
-            leftVel,
-            rightVel,
-            battery,
-            realBattery,
-            sip.getStallAndBumpers(),
-            control,
-            sip.getFlags(),
-            2 * sip.getCompass(),
-            n > 1 ? sip.getAnPort() : 0,
-            n > 2 ? sip.getAnalog() : 0,
-            n > 3 ? sip.getDigIn() : 0,
-            n > 4 ? sip.getDigOut() : 0,
-            n > 0 ? sip.getGripState() : 0,
-            sip.has(StandardSip.Optional.CHARGE_STATE) ? sip.getChargeState() : -1,
-            sip.has(StandardSip.Optional.FAULT_FLAGS) ? sip.getFaultFlags() : 0,
-            sip.isMoving(),
-            odometerDistance,
-            odometerDegrees,
-            sonars);
+        builder
+            .counter(counter)
+            .timeNanos(nowNanos)
+            .pose(globalPose)
+            .encoderPose(encoderPose)
+            .rawEncoderPose(rawEncoderPose)
+            .vel((leftVel + rightVel) / 2.0)
+            .rotVel(rotVel)
+            .wheelVels(leftVel, rightVel)
+            .batteryVoltage(battery)
+            .realBatteryVoltage(realBattery)
+            .stallValue(sip.getStallAndBumpers())
+            .control(control)
+            .flags(sip.getFlags())
+            .compass(2 * sip.getCompass())
+            .anPort(n > 1 ? sip.getAnPort() : 0)
+            .analog(n > 2 ? sip.getAnalog() : 0)
+            .digIn(n > 3 ? sip.getDigIn() : 0)
+            .digOut(n > 4 ? sip.getDigOut() : 0)
+            .gripState(n > 0 ? sip.getGripState() : 0)
+            .chargeState(sip.has(StandardSip.Optional.CHARGE_STATE) ? sip.getChargeState() : -1)
+            .faultFlags(sip.has(StandardSip.Optional.FAULT_FLAGS) ? sip.getFaultFlags() : 0)
+            .moving(sip.isMoving())
+            .odometer(odometerDistance, odometerDegrees)
+            .sonars(sonars)
+            .build();
     return last;
   }
 
-  /** A 15-bit counter difference, corrected for wrap-around. */
   /**
    * A heading change in angle units (4096 per turn), folded into -2048..2047: the SIP reports
    * -180..+180 degrees, so crossing 180 would otherwise look like a whole turn the other way.
@@ -196,6 +223,10 @@ final class SipProcessor {
     return d;
   }
 
+  /**
+   * A difference of two 15-bit position counters (x, y), corrected for wrap-around: the SIP's
+   * counters roll over at 32768, and no robot moves 4096 counts in one cycle.
+   */
   static int wrap15(int delta) {
     if (delta > 0x1000) {
       return delta - 0x8000;

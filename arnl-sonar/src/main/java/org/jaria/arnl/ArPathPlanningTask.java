@@ -108,6 +108,9 @@ public final class ArPathPlanningTask implements AutoCloseable {
     this.robot = Objects.requireNonNull(b.robot, "robot");
     this.map = Objects.requireNonNull(b.map, "map");
     this.params = new PathPlanningParams(b.config == null ? new ArConfig() : b.config);
+    if (!b.useSonar) {
+      params.useSonar.setBool(false);
+    }
     this.mode = b.mode;
     this.keeper = new GoalKeeper(this, robot, map, params, mode);
     params.getConfig().addProcessFileCB(keeper::markDirty, 40);
@@ -132,6 +135,7 @@ public final class ArPathPlanningTask implements AutoCloseable {
     private final ArMap map;
     private ArConfig config;
     private PlanMode mode = PlanMode.THREADED;
+    private boolean useSonar = true;
 
     private Builder(ArRobot robot, ArMap map) {
       this.robot = robot;
@@ -139,10 +143,23 @@ public final class ArPathPlanningTask implements AutoCloseable {
     }
 
     /**
-     * The sonar: accepted for ARNL compatibility; sonar echoes are read from the robot (switch them
-     * off with the {@code UseSonar} parameter).
+     * The sonar whose echoes the robot avoids, or null to plan and drive without sonar (as in ARNL,
+     * where a null sonar means none). The echoes are read from the robot's SIPs, so a sonar given
+     * must not belong to another robot. With a sonar, the {@code UseSonar} parameter still switches
+     * it off and on; null sets that parameter to false.
+     *
+     * @throws IllegalArgumentException if {@code sonar} was added to another robot
      */
     public Builder sonar(ArRangeDevice sonar) {
+      if (sonar != null && sonar.getRobot() != null && sonar.getRobot() != robot) {
+        throw new IllegalArgumentException(
+            "the sonar '"
+                + sonar.getName()
+                + "' belongs to robot '"
+                + sonar.getRobot().getName()
+                + "': pass the sonar added to the robot that plans, or null for none");
+      }
+      useSonar = sonar != null;
       return this;
     }
 

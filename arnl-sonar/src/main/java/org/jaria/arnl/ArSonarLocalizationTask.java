@@ -104,10 +104,24 @@ public final class ArSonarLocalizationTask implements AutoCloseable {
     }
 
     /**
-     * The sonar device (accepted for ARNL compatibility: readings are taken from the robot, which
-     * is where the device gets them too).
+     * The sonar whose echoes localize the robot: the sonar ring of this robot. The filter reads the
+     * ring's echoes from the robot's SIPs, where the device takes them too, so the device must not
+     * belong to another robot.
+     *
+     * @throws NullPointerException if {@code sonar} is null: sonar localization needs the sonar
+     * @throws IllegalArgumentException if {@code sonar} was added to another robot
      */
     public Builder sonar(ArSonarDevice sonar) {
+      Objects.requireNonNull(
+          sonar, "sonar: sonar localization needs the robot's ArSonarDevice, not null");
+      if (sonar.getRobot() != null && sonar.getRobot() != robot) {
+        throw new IllegalArgumentException(
+            "the sonar '"
+                + sonar.getName()
+                + "' belongs to robot '"
+                + sonar.getRobot().getName()
+                + "': pass the sonar added to the robot being localized");
+      }
       return this;
     }
 

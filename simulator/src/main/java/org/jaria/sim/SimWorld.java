@@ -63,7 +63,12 @@ public final class SimWorld implements AutoCloseable {
   private final List<RobotSlot> slots = new ArrayList<>();
   private final WorldStatics statics;
   private final List<Runnable> stepListeners = new CopyOnWriteArrayList<>();
-  private final ColoredObjects colored = new ColoredObjects(this);
+  private final ColoredObjects colored =
+      new ColoredObjects(
+          outline -> {
+            SimObstacle o = injectObstacle(outline);
+            return () -> removeObstacle(o);
+          });
   private final IgnoredCommandLog ignored = new IgnoredCommandLog();
   private final WorldHost host = new WorldHost(this);
   // The world's jobs besides stepping: map and obstacles, ground-truth queries, and the outside

@@ -9,8 +9,6 @@ import java.util.concurrent.atomic.AtomicInteger;
 import org.jaria.map.ArMap;
 import org.jaria.map.ArMapObject;
 import org.jaria.map.MapInfoEntry;
-import org.jaria.sim.SimObstacle;
-import org.jaria.sim.SimWorld;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -34,13 +32,24 @@ public final class ColoredObjects {
 
   private static final Logger log = LoggerFactory.getLogger(ColoredObjects.class);
 
-  private final SimWorld world;
+  /**
+   * Where solid objects become obstacles: the world adds an outline and returns how to take it out
+   * again. An interface of this package, so that the world may hold its coloured objects without
+   * this class depending on the world.
+   */
+  @FunctionalInterface
+  public interface ObstacleSink {
+    /** Adds {@code outline} as an obstacle; the returned action removes it. */
+    Runnable inject(List<org.jaria.geom.ArLineSegment> outline);
+  }
+
+  private final ObstacleSink world;
   private final CopyOnWriteArrayList<ColoredObject> objects = new CopyOnWriteArrayList<>();
-  private final Map<Integer, SimObstacle> solids = new java.util.concurrent.ConcurrentHashMap<>();
+  private final Map<Integer, Runnable> solids = new java.util.concurrent.ConcurrentHashMap<>();
   private final AtomicInteger nextId = new AtomicInteger(1);
 
-  /** The coloured objects of {@code world}. */
-  public ColoredObjects(SimWorld world) {
+  /** The coloured objects of a world whose obstacles {@code world} adds and removes. */
+  public ColoredObjects(ObstacleSink world) {
     this.world = world;
   }
 
@@ -58,7 +67,7 @@ public final class ColoredObjects {
     ColoredObject withId = o.withId(nextId.getAndIncrement());
     objects.add(withId);
     if (solid) {
-      solids.put(withId.id(), world.injectObstacle(outline(withId)));
+      solids.put(withId.id(), world.inject(outline(withId)));
     }
     return withId;
   }
@@ -70,10 +79,10 @@ public final class ColoredObjects {
       if (o.id() == id) {
         ColoredObject moved = o.at(x, y);
         objects.set(i, moved);
-        SimObstacle solid = solids.remove(id);
+        Runnable solid = solids.remove(id);
         if (solid != null) {
-          world.removeObstacle(solid);
-          solids.put(id, world.injectObstacle(outline(moved)));
+          solid.run();
+          solids.put(id, world.inject(outline(moved)));
         }
         return moved;
       }
@@ -83,9 +92,9 @@ public final class ColoredObjects {
 
   /** Removes object {@code id}. */
   public boolean remove(int id) {
-    SimObstacle solid = solids.remove(id);
+    Runnable solid = solids.remove(id);
     if (solid != null) {
-      world.removeObstacle(solid);
+      solid.run();
     }
     return objects.removeIf(o -> o.id() == id);
   }

@@ -4,10 +4,15 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.BooleanSupplier;
+import java.util.function.LongSupplier;
+import org.jaria.clock.Clock;
 import org.jaria.connection.ArDeviceConnection;
 import org.jaria.params.ArRobotParams;
 import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
+import org.jaria.protocol.DropCounters;
 import org.jaria.protocol.DropReason;
 import org.jaria.protocol.packets.ArConfigPacket;
 import org.jaria.protocol.packets.PacketIds;
@@ -15,15 +20,44 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The robot's connection life: connecting (through {@link Handshake}), noticing a lost link, and
- * disconnecting, with the matching callbacks. Connecting runs on whichever thread drives the robot:
- * the caller of {@code blockingConnect}, or the cycle thread for {@code asyncConnect}.
+ * The first stage of the robot: the link to it. Owns the device connection, the queue of packets
+ * read from it ({@link PacketIntake}), the connection handshake ({@link Handshake}) and the timeout
+ * that notices a lost link, with the callbacks of the connection's life. It hands each packet on to
+ * the {@link PacketRouter}, keeping for itself only the two that concern the link: a CONFIGpac (the
+ * robot's configuration, read while connecting) and a controller reset (the link is lost).
+ *
+ * <p>Connecting runs on whichever thread drives the robot: the caller of {@code blockingConnect},
+ * or the cycle thread for {@code asyncConnect}. What the rest of the robot must do when the link
+ * changes it learns through {@link Events}; the link knows nothing else of the robot.
  */
-final class RobotConnection implements Handshake.Host {
+final class RobotLink implements Handshake.Host {
 
-  private static final Logger log = LoggerFactory.getLogger(RobotConnection.class);
+  private static final Logger log = LoggerFactory.getLogger(RobotLink.class);
 
-  private final ArRobot robot;
+  /** What the rest of the robot does when the link changes. */
+  interface Events {
+    /** A connection attempt starts: forget the state of an earlier connection. */
+    void connecting();
+
+    /** The handshake named the robot and its parameters were loaded. */
+    void identified(ArRobotParams params);
+
+    /** The link is open: set the speed limits from the CONFIGpac, or null if none came. */
+    void configured(ArConfigPacket config, ArRobotParams params);
+  }
+
+  private final Clock clock;
+  private final ArRobotPacketSender sender;
+  private final PacketIntake intake;
+  private final PacketRouter router;
+  private final ReentrantLock robotLock;
+  private final LongSupplier cycleTimeMs;
+  private final BooleanSupplier cycleRunning;
+  private final Events events;
+  final Callbacks connectCBs = new Callbacks("connect");
+  final Callbacks failedConnectCBs = new Callbacks("failed connect");
+  final Callbacks disconnectNormallyCBs = new Callbacks("disconnect normally");
+  final Callbacks disconnectOnErrorCBs = new Callbacks("disconnect on error");
   private volatile ArDeviceConnection conn;
   private volatile boolean connected;
   private volatile Handshake handshake;
@@ -32,17 +66,41 @@ final class RobotConnection implements Handshake.Host {
   private volatile String robotName = "";
   private volatile String robotType = "";
   private volatile String robotSubType = "";
+  private volatile ArRobotParams params = ArRobotParams.defaults();
   private volatile ArConfigPacket config;
   private volatile Path paramsDir = defaultParamsDirectory();
   private volatile long timeoutMs = 8000;
 
-  RobotConnection(ArRobot robot) {
-    this.robot = robot;
+  /**
+   * A link that writes through {@code sender}, counts dropped packets in {@code drops}, and hands
+   * packets to {@code router} holding {@code robotLock}.
+   *
+   * @param cycleTimeMs the robot's cycle time (the handshake waits one cycle before OPEN)
+   * @param cycleRunning whether the robot's cycle runs on a thread of its own (which then carries
+   *     the handshake)
+   */
+  RobotLink(
+      Clock clock,
+      ArRobotPacketSender sender,
+      DropCounters drops,
+      PacketRouter router,
+      ReentrantLock robotLock,
+      LongSupplier cycleTimeMs,
+      BooleanSupplier cycleRunning,
+      Events events) {
+    this.clock = clock;
+    this.sender = sender;
+    this.intake = new PacketIntake(drops);
+    this.router = router;
+    this.robotLock = robotLock;
+    this.cycleTimeMs = cycleTimeMs;
+    this.cycleRunning = cycleRunning;
+    this.events = events;
   }
 
   void setDeviceConnection(ArDeviceConnection c) {
     conn = c;
-    robot.sender.setDeviceConnection(c);
+    sender.setDeviceConnection(c);
   }
 
   ArDeviceConnection getDeviceConnection() {
@@ -112,14 +170,14 @@ final class RobotConnection implements Handshake.Host {
   void openFailed(String reason) {
     failure = reason;
     log.warn("cannot connect: {}", reason);
-    robot.failedConnectCBs.invokeAll();
+    failedConnectCBs.invokeAll();
   }
 
   boolean asyncConnect() {
     if (conn == null) {
       failure = "no device connection set: call setDeviceConnection first";
       log.warn("cannot connect: {}", failure);
-      robot.failedConnectCBs.invokeAll();
+      failedConnectCBs.invokeAll();
       return false;
     }
     if (connected || handshake != null) {
@@ -127,10 +185,9 @@ final class RobotConnection implements Handshake.Host {
     }
     failure = "";
     config = null;
-    robot.resetState();
-    robot.motion.reset();
+    events.connecting();
     connectDone = new CountDownLatch(1);
-    handshake = new Handshake(robot.sender, robot.intake, this, Math.max(1, robot.getCycleTime()));
+    handshake = new Handshake(sender, intake, this, Math.max(1, cycleTimeMs.getAsLong()));
     return true;
   }
 
@@ -138,7 +195,7 @@ final class RobotConnection implements Handshake.Host {
     if (!asyncConnect()) {
       return false;
     }
-    if (robot.isRunning()) {
+    if (cycleRunning.getAsBoolean()) {
       // The cycle thread carries the handshake; wait for it to finish.
       try {
         connectDone.await(30, TimeUnit.SECONDS);
@@ -148,7 +205,7 @@ final class RobotConnection implements Handshake.Host {
       return connected;
     }
     while (handshake != null) {
-      stepConnecting(robot.getClock().nanoTime());
+      stepConnecting(clock.nanoTime());
       waitWhileConnecting(Long.MAX_VALUE);
     }
     return connected;
@@ -171,7 +228,7 @@ final class RobotConnection implements Handshake.Host {
       return;
     }
     try {
-      robot.intake.waitForPacket(c, robot.getClock(), deadline);
+      intake.waitForPacket(c, clock, deadline);
     } catch (IOException e) {
       // The next step notices the broken connection and fails the handshake.
       log.debug("read failed while connecting: {}", e.getMessage());
@@ -192,16 +249,16 @@ final class RobotConnection implements Handshake.Host {
       case CONNECTED -> {
         handshake = null;
         connected = true;
-        robot.intake.touch(now);
+        intake.touch(now);
         log.info("connected to {} ({})", robotName, conn.getPortName());
         connectDone.countDown();
-        robot.connectCBs.invokeAll();
+        connectCBs.invokeAll();
       }
       case FAILED -> {
         handshake = null;
         failure = h.failure();
         connectDone.countDown();
-        robot.failedConnectCBs.invokeAll();
+        failedConnectCBs.invokeAll();
       }
       case IN_PROGRESS -> {
         // keep going
@@ -218,18 +275,17 @@ final class RobotConnection implements Handshake.Host {
     ArRobotParams p = ArRobotParams.load(subtype, name, paramsDir);
     // which files the robot runs on; problems were logged as ERRORs by the loader
     log.info("robot parameters for '{}' from {}", subtype, p.getSources());
-    robot.setParams(p);
-    robot.motion.configure(
-        p.hasSettableVelMaxes(), p.hasSettableAccsDecs(), p.hasMoveCommand(), p.getVel2Divisor());
+    params = p;
+    events.identified(p);
   }
 
   @Override
   public void dispatch(ArRobotPacket p) {
-    robot.robotLock.lock();
+    robotLock.lock();
     try {
-      robot.dispatch(p);
+      handOn(p);
     } finally {
-      robot.robotLock.unlock();
+      robotLock.unlock();
     }
   }
 
@@ -238,57 +294,14 @@ final class RobotConnection implements Handshake.Host {
     return config != null;
   }
 
-  /** Speed limits as ARIA sets them: CONFIGpac values, overridden by non-zero parameters. */
   @Override
   public void applyLimits(boolean gotConfig) {
-    ArRobotParams p = robot.params;
-    ArConfigPacket c = config;
-    if (gotConfig && c != null) {
-      robot.setAbsoluteMaxTransVel(c.getTransVelTop());
-      robot.setAbsoluteMaxRotVel(c.getRotVelTop());
-      robot.setTransVelMax(c.getTransVelMax());
-      robot.setRotVelMax(c.getRotVelMax());
-      robot.setTransAccel(c.getInt(ArConfigPacket.Field.TRANS_ACCEL));
-      robot.setTransDecel(c.getInt(ArConfigPacket.Field.TRANS_DECEL));
-      robot.setRotAccel(c.getInt(ArConfigPacket.Field.ROT_ACCEL));
-      robot.setRotDecel(c.getInt(ArConfigPacket.Field.ROT_DECEL));
-    } else {
-      robot.setAbsoluteMaxTransVel(p.getAbsoluteMaxVelocity());
-      robot.setAbsoluteMaxRotVel(p.getAbsoluteMaxRotVelocity());
-    }
-    if (Math.abs(p.getTransVelMax()) > 1) {
-      robot.setTransVelMax(p.getTransVelMax());
-    } else if (!gotConfig) {
-      robot.setTransVelMax(p.getAbsoluteMaxVelocity());
-    }
-    if (Math.abs(p.getRotVelMax()) > 1) {
-      robot.setRotVelMax(p.getRotVelMax());
-    } else if (!gotConfig) {
-      robot.setRotVelMax(p.getAbsoluteMaxRotVelocity());
-    }
-    if (Math.abs(p.getTransAccel()) > 1) {
-      robot.setTransAccel(p.getTransAccel());
-    }
-    if (Math.abs(p.getTransDecel()) > 1) {
-      robot.setTransDecel(p.getTransDecel());
-    }
-    if (Math.abs(p.getRotAccel()) > 1) {
-      robot.setRotAccel(p.getRotAccel());
-    }
-    if (Math.abs(p.getRotDecel()) > 1) {
-      robot.setRotDecel(p.getRotDecel());
-    }
-    if (p.getRequestIOPackets()) {
-      robot.requestIOPackets();
-    }
-    if (p.getRequestEncoderPackets()) {
-      robot.requestEncoderPackets();
-    }
+    events.configured(gotConfig ? config : null, params);
   }
 
   @Override
   public int switchToBaudRate() {
-    return robot.params.getSwitchToBaudRate();
+    return params.getSwitchToBaudRate();
   }
 
   @Override
@@ -299,35 +312,14 @@ final class RobotConnection implements Handshake.Host {
 
   // ---------------------------------------------------------------- packets
 
-  boolean handleConfig(ArRobotPacket p) {
-    if (p.getID() != PacketIds.CONFIG) {
-      return false;
-    }
-    ArConfigPacket c = ArConfigPacket.decode(p);
-    if (c == null) {
-      robot.drops.drop(DropReason.MALFORMED, "short CONFIGpac");
-    } else {
-      config = c;
-    }
-    return true;
-  }
-
-  boolean handleControllerReset(ArRobotPacket p) {
-    if (p.getID() != PacketIds.CONTROLLER_RESET && p.getID() != PacketIds.CONTROLLER_RESET_2) {
-      return false;
-    }
-    lostConnection("the robot's controller was reset");
-    return true;
-  }
-
-  /** Reads what has arrived into the intake; a failed read means the connection is lost. */
+  /** Reads what has arrived into the queue; a failed read means the connection is lost. */
   void readAvailable(long now) {
     ArDeviceConnection c = conn;
     if (c == null) {
       return;
     }
     try {
-      robot.intake.readAvailable(c, now);
+      intake.readAvailable(c, now);
     } catch (IOException e) {
       lostConnection(e.getMessage());
     }
@@ -340,16 +332,46 @@ final class RobotConnection implements Handshake.Host {
       return;
     }
     try {
-      robot.intake.waitForSip(c, robot.getClock(), deadline);
+      intake.waitForSip(c, clock, deadline);
     } catch (IOException e) {
       lostConnection(e.getMessage());
+    }
+  }
+
+  /** Whether a standard SIP is waiting in the queue. */
+  boolean hasSip() {
+    return intake.hasSip();
+  }
+
+  /** Hands every queued packet on, oldest first. Call holding the robot's lock. */
+  void handOnQueued() {
+    ArRobotPacket p;
+    while ((p = intake.poll()) != null) {
+      handOn(p);
+    }
+  }
+
+  /** Keeps the packets that concern the link, and routes the others. */
+  private void handOn(ArRobotPacket p) {
+    int id = p.getID();
+    if (id == PacketIds.CONTROLLER_RESET || id == PacketIds.CONTROLLER_RESET_2) {
+      lostConnection("the robot's controller was reset");
+    } else if (id == PacketIds.CONFIG) {
+      ArConfigPacket c = ArConfigPacket.decode(p);
+      if (c == null) {
+        intake.drops().drop(DropReason.MALFORMED, "short CONFIGpac");
+      } else {
+        config = c;
+      }
+    } else {
+      router.route(p);
     }
   }
 
   void checkTimeout(long now) {
     if (connected
         && timeoutMs > 0
-        && now - robot.intake.lastPacketNanos() > TimeUnit.MILLISECONDS.toNanos(timeoutMs)) {
+        && now - intake.lastPacketNanos() > TimeUnit.MILLISECONDS.toNanos(timeoutMs)) {
       lostConnection("nothing received from the robot in " + timeoutMs + " ms");
     }
   }
@@ -365,7 +387,7 @@ final class RobotConnection implements Handshake.Host {
     if (c != null) {
       c.close();
     }
-    robot.disconnectOnErrorCBs.invokeAll();
+    disconnectOnErrorCBs.invokeAll();
   }
 
   boolean disconnect() {
@@ -378,14 +400,14 @@ final class RobotConnection implements Handshake.Host {
     if (!connected) {
       return false;
     }
-    robot.sender.comInt(ArCommands.CLOSE.getNumber(), 1);
+    sender.comInt(ArCommands.CLOSE.getNumber(), 1);
     connected = false;
     ArDeviceConnection c = conn;
     if (c != null) {
       c.close();
     }
     log.info("disconnected from {}", robotName);
-    robot.disconnectNormallyCBs.invokeAll();
+    disconnectNormallyCBs.invokeAll();
     return true;
   }
 }
