@@ -96,6 +96,8 @@ public final class GuiServer implements AutoCloseable {
     modeWander = new ArServerModeWander(server, robot);
     modeGoto = new ArServerModeGoto(server, robot, b.pathPlanning, b.map);
     modeStop.addAsDefaultMode();
+    // Registered last so that the data numbers ARIA clients were recorded with stay the same.
+    commands.addStringCommandList();
   }
 
   /** A builder for a guiServer driving {@code robot}. */

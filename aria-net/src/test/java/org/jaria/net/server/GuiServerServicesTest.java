@@ -160,9 +160,20 @@ class GuiServerServicesTest {
       rig.client.disconnect();
       rig.client.connect("127.0.0.1", rig.gui.getServer().getPort(), "", "");
       ArNetPacket list = rig.call("listCommands");
-      List<String> names = CommandInfo.readAll(list).stream().map(CommandInfo::name).toList();
-      assertEquals(List.of("enableMotors", "disableMotors", "say", "sum"), names);
-      assertEquals("", rig.call("say", "hello", "3").bufToStr());
+      // ArNetworking's layout: byte2 count, then name and description per command.
+      assertEquals(2, list.bufToByte2());
+      assertEquals("enableMotors", list.bufToStr());
+      assertEquals("switches the motors on", list.bufToStr());
+      assertEquals("disableMotors", list.bufToStr());
+      assertEquals("switches the motors off", list.bufToStr());
+      assertFalse(list.hasMore());
+      List<CommandInfo> withArgs = CommandInfo.readList(rig.call("listStringCommands"), true);
+      assertEquals(
+          List.of(
+              new CommandInfo("say", "logs a line", CommandInfo.STRING_ARGUMENT),
+              new CommandInfo("sum", "adds numbers", CommandInfo.STRING_ARGUMENT)),
+          withArgs);
+      assertFalse(rig.call("say", "hello", "3").hasMore(), "a command returns nothing");
       assertEquals(List.of("hello 3"), said);
       assertEquals("6", rig.call("sum", "1", "2", "3").bufToStr());
       rig.call("enableMotors");

@@ -219,7 +219,14 @@ final class RobotLink implements AutoCloseable {
     if (!client.dataExists("listCommands")) {
       return CompletableFuture.completedFuture(List.of());
     }
-    return request("listCommands").thenApply(CommandInfo::readAll);
+    CompletableFuture<List<CommandInfo>> simple =
+        request("listCommands").thenApply(p -> CommandInfo.readList(p, false));
+    if (!client.dataExists("listStringCommands")) {
+      return simple;
+    }
+    return simple.thenCombine(
+        request("listStringCommands").thenApply(p -> CommandInfo.readList(p, true)),
+        (a, b) -> java.util.stream.Stream.concat(a.stream(), b.stream()).toList());
   }
 
   /** Whether the server offers data of this name to this user. */
