@@ -54,13 +54,6 @@ class RecordsTest {
   }
 
   @Test
-  void infoStrings() {
-    roundTrip(
-        new InfoStrings(List.of("Robot cycle (ms)", "Network clients"), List.of("0.52", "3")),
-        InfoStrings::read);
-  }
-
-  @Test
   void localizationParticlesAndPath() {
     roundTrip(
         new LocalizationSnapshot("LOCALIZED", 0.875, new ArPose(1200, -300, 45), 2000, false),

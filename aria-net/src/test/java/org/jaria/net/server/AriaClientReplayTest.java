@@ -119,6 +119,52 @@ class AriaClientReplayTest {
   }
 
   @Test
+  void clientStringInfoExampleGetsTheLabelsAndTheStrings() throws Exception {
+    byte[] sent = PeerRecording.bytes("clientStringInfoExample.c2s.bin");
+    // Introduction, UDP confirmation, updateStrings (-1) and updateNumbers (100 ms), getStringsInfo
+    // once, then getStrings every second.
+    assertEquals(
+        List.of(2, 4, 129, 129, 291, 129),
+        PeerRecording.packets(sent).stream().map(ArNetPacket::getCommand).toList());
+    // By hand it printed "Robot cycle (ms)   Network clients   Localization score" as its
+    // columns, then rows such as "0.22   1   0.938": the recorded answers say the same.
+    List<ArNetPacket> answered =
+        PeerRecording.packets(PeerRecording.bytes("clientStringInfoExample.s2c.bin"));
+    ArNetPacket infoThen =
+        answered.stream().filter(p -> p.getCommand() == 291).findFirst().orElseThrow().toReader();
+    assertEquals(
+        List.of("Robot cycle (ms)", "Network clients", "Localization score"),
+        org.jaria.net.data.InfoStrings.readLabels(infoThen));
+    org.jaria.net.provider.VideoSource camera =
+        new org.jaria.net.provider.VideoSource() {
+          @Override
+          public String getName() {
+            return "Camera";
+          }
+
+          @Override
+          public org.jaria.net.data.VideoFrame getLatestFrame() {
+            return null;
+          }
+        };
+    try (GuiRig rig = GuiRig.arnl(b -> b.video(camera));
+        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
+      ArServerBase s = rig.gui.getServer();
+      assertEquals(291, s.findCommandFromName("getStringsInfo"));
+      assertEquals(270, s.findCommandFromName("getStrings"));
+      aria.readIntroduction();
+      aria.send(sent);
+      ArNetPacket info = aria.readUntil(291);
+      List<String> labels = org.jaria.net.data.InfoStrings.readLabels(info);
+      assertEquals(List.of("Robot cycle (ms)", "Network clients", "Localization score"), labels);
+      org.jaria.net.data.InfoStrings strings =
+          org.jaria.net.data.InfoStrings.read(aria.readUntil(270), labels);
+      assertEquals("2", strings.get("Network clients"), "the rig's own client and ARIA's");
+      assertEquals(3, strings.values().size());
+    }
+  }
+
+  @Test
   void clientDemoGetsItsTableAndDrives() throws Exception {
     byte[] sent = PeerRecording.bytes("clientDemo.c2s.bin");
     List<ArNetPacket> asSent = PeerRecording.packets(sent);

@@ -135,7 +135,21 @@ class GuiServerServicesTest {
     try (GuiRig rig = GuiRig.plain(b -> b)) {
       rig.gui.getInfoGroup().addStringInt("Answer", 4, () -> 42);
       rig.gui.getInfoGroup().addStringString("Long", 3, () -> "abcdef");
-      AtomicReference<InfoStrings> s = watch(rig, "getStrings", InfoStrings::read);
+      // ArNetworking's getStringsInfo: uByte2 count; per string its name and uByte2 max length.
+      ArNetPacket info = rig.call("getStringsInfo");
+      assertEquals(4, info.bufToUByte2());
+      assertEquals("Robot cycle (ms)", info.bufToStr());
+      assertEquals(8, info.bufToUByte2());
+      assertEquals("Network clients", info.bufToStr());
+      assertEquals(4, info.bufToUByte2());
+      assertEquals("Answer", info.bufToStr());
+      assertEquals(4, info.bufToUByte2());
+      assertEquals("Long", info.bufToStr());
+      assertEquals(3, info.bufToUByte2());
+      assertFalse(info.hasMore());
+      List<String> labels = InfoStrings.readLabels(rig.call("getStringsInfo"));
+      // getStrings: the values only, one string each, in the same order.
+      AtomicReference<InfoStrings> s = watch(rig, "getStrings", p -> InfoStrings.read(p, labels));
       Eventually.until("the table", () -> s.get() != null && s.get().get("Answer") != null);
       assertEquals("42", s.get().get("Answer"));
       assertEquals("abc", s.get().get("Long"), "cut to its maximum length");
