@@ -54,6 +54,15 @@ public record InfoStrings(List<String> labels, List<String> values) implements N
     return new InfoStrings(l, v);
   }
 
+  /** The same values labelled with {@code newLabels} (as {@link #read} labels them). */
+  public InfoStrings withLabels(List<String> newLabels) {
+    List<String> l = new ArrayList<>();
+    for (int i = 0; i < values.size(); i++) {
+      l.add(i < newLabels.size() ? newLabels.get(i) : "#" + (i + 1));
+    }
+    return new InfoStrings(l, values);
+  }
+
   /**
    * Reads a {@code "getStringsInfo"} packet (uByte2 count; per string: string name, uByte2 maximum
    * length) as the labels, in order.

@@ -171,7 +171,16 @@ final class RobotLink implements AutoCloseable {
     fetchMap();
     if (client.dataExists("getStringsInfo")) {
       CompletableFuture<?> unused =
-          request("getStringsInfo").thenAccept(p -> stringLabels = InfoStrings.readLabels(p));
+          request("getStringsInfo")
+              .thenAccept(
+                  p -> {
+                    stringLabels = InfoStrings.readLabels(p);
+                    // Values that came before their labels: label them now.
+                    InfoStrings early = state.strings;
+                    if (early != null) {
+                      state.strings = early.withLabels(stringLabels);
+                    }
+                  });
     }
     if (client.dataExists("physicalInfo")) {
       CompletableFuture<?> unused =
