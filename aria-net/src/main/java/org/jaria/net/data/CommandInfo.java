@@ -3,38 +3,52 @@ package org.jaria.net.data;
 import java.util.ArrayList;
 import java.util.List;
 import org.jaria.net.ArNetPacket;
-import org.jaria.net.NetEncodable;
+import org.jaria.net.ArNetPacketException;
 
 /**
- * A custom command a server offers ({@code "listCommands"}, ArNetworking's {@code
- * ArServerHandlerCommands}).
+ * A custom command a server offers (ArNetworking's {@code ArServerHandlerCommands}), as listed by
+ * {@code "listCommands"} (commands without arguments) and {@code "listStringCommands"} (commands
+ * with arguments).
  *
- * @param name what to send in {@code "runCommand"}
+ * @param name the data name to send to run it
  * @param description what it does
  * @param argumentDescription the arguments it takes ("" for none)
  */
-public record CommandInfo(String name, String description, String argumentDescription)
-    implements NetEncodable {
+public record CommandInfo(String name, String description, String argumentDescription) {
 
-  @Override
-  public void write(ArNetPacket out) {
-    out.arrayToBuf(3).strToBuf(name).strToBuf(description).strToBuf(argumentDescription);
+  /** Argument description of the commands {@code "listStringCommands"} lists. */
+  public static final String STRING_ARGUMENT = "string: argumentToCommand";
+
+  /** Whether it takes arguments. */
+  public boolean takesArguments() {
+    return !argumentDescription.isEmpty();
   }
 
-  /** Reads what {@link #write} wrote. */
-  public static CommandInfo read(ArNetPacket in) {
-    int n = Fields.begin(in, 3, "a command");
-    CommandInfo c = new CommandInfo(in.bufToStr(), in.bufToStr(), in.bufToStr());
-    Fields.end(in, n, 3);
-    return c;
+  /**
+   * Writes ArNetworking's list layout: {@code byte2 count}, then {@code string name, string
+   * description} per command.
+   */
+  public static void writeList(ArNetPacket out, List<CommandInfo> commands) {
+    out.byte2ToBuf(commands.size());
+    for (CommandInfo c : commands) {
+      out.strToBuf(c.name()).strToBuf(c.description());
+    }
   }
 
-  /** Reads a list of commands (one array). */
-  public static List<CommandInfo> readAll(ArNetPacket in) {
-    int n = in.bufToArray();
-    List<CommandInfo> l = new ArrayList<>(n);
+  /**
+   * Reads a list {@link #writeList} wrote (or ARIA's server sent).
+   *
+   * @param takesArguments whether it is the list of commands with arguments ({@code
+   *     "listStringCommands"}); their argument description is then {@link #STRING_ARGUMENT}
+   */
+  public static List<CommandInfo> readList(ArNetPacket in, boolean takesArguments) {
+    int n = in.bufToByte2();
+    if (n < 0) {
+      throw new ArNetPacketException("a command list of " + n + " commands");
+    }
+    List<CommandInfo> l = new ArrayList<>(Math.min(n, 1024));
     for (int i = 0; i < n; i++) {
-      l.add(read(in));
+      l.add(new CommandInfo(in.bufToStr(), in.bufToStr(), takesArguments ? STRING_ARGUMENT : ""));
     }
     return l;
   }

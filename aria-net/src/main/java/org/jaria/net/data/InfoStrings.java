@@ -30,26 +30,51 @@ public record InfoStrings(List<String> labels, List<String> values) implements N
     return i < 0 ? null : values.get(i);
   }
 
+  /** Writes ArNetworking's {@code "getStrings"} layout: the values, one string each, in order. */
   @Override
   public void write(ArNetPacket out) {
-    out.arrayToBuf(labels.size());
-    for (int i = 0; i < labels.size(); i++) {
-      out.arrayToBuf(2).strToBuf(labels.get(i)).strToBuf(values.get(i));
+    for (String v : values) {
+      out.strToBuf(v);
     }
   }
 
-  /** Reads what {@link #write} wrote. */
-  public static InfoStrings read(ArNetPacket in) {
-    int n = in.bufToArray();
-    List<String> l = new ArrayList<>(n);
-    List<String> v = new ArrayList<>(n);
-    for (int i = 0; i < n; i++) {
-      int k = Fields.begin(in, 2, "an info string");
-      l.add(nonNull(in.bufToStr()));
+  /**
+   * Reads a {@code "getStrings"} packet: one value per string to the end of the packet, labelled in
+   * order with {@code labels} (from {@link #readLabels}); a value beyond the labels is labelled "#"
+   * and its position, as the server's table changed since the labels were read.
+   */
+  public static InfoStrings read(ArNetPacket in, List<String> labels) {
+    List<String> l = new ArrayList<>();
+    List<String> v = new ArrayList<>();
+    while (in.hasMore()) {
+      int i = v.size();
       v.add(nonNull(in.bufToStr()));
-      Fields.end(in, k, 2);
+      l.add(i < labels.size() ? labels.get(i) : "#" + (i + 1));
     }
     return new InfoStrings(l, v);
+  }
+
+  /** The same values labelled with {@code newLabels} (as {@link #read} labels them). */
+  public InfoStrings withLabels(List<String> newLabels) {
+    List<String> l = new ArrayList<>();
+    for (int i = 0; i < values.size(); i++) {
+      l.add(i < newLabels.size() ? newLabels.get(i) : "#" + (i + 1));
+    }
+    return new InfoStrings(l, values);
+  }
+
+  /**
+   * Reads a {@code "getStringsInfo"} packet (uByte2 count; per string: string name, uByte2 maximum
+   * length) as the labels, in order.
+   */
+  public static List<String> readLabels(ArNetPacket in) {
+    int n = in.bufToUByte2();
+    List<String> l = new ArrayList<>(Math.min(n, 1024));
+    for (int i = 0; i < n; i++) {
+      l.add(nonNull(in.bufToStr()));
+      in.bufToUByte2();
+    }
+    return l;
   }
 
   private static String nonNull(String s) {

@@ -77,7 +77,7 @@ public final class GuiServer implements AutoCloseable {
           "Localization score", 8, () -> loc.getLocalizationState().score(), "%.3f");
       new ArServerInfoLocalization(server, loc);
     }
-    new ArServerInfoStrings(server, infoGroup);
+    ArServerInfoStrings strings = new ArServerInfoStrings(server, infoGroup);
     new ArServerHandlerLocalization(server, robot, b.localization, b.map);
     if (b.pathPlanning != null) {
       new ArServerInfoPath(server, b.pathPlanning);
@@ -96,6 +96,9 @@ public final class GuiServer implements AutoCloseable {
     modeWander = new ArServerModeWander(server, robot);
     modeGoto = new ArServerModeGoto(server, robot, b.pathPlanning, b.map);
     modeStop.addAsDefaultMode();
+    // Registered last so that the data numbers ARIA clients were recorded with stay the same.
+    commands.addStringCommandList();
+    strings.addStringsInfo();
   }
 
   /** A builder for a guiServer driving {@code robot}. */

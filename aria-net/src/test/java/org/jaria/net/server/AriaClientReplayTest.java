@@ -52,7 +52,9 @@ class AriaClientReplayTest {
         PeerRecording.listedNames(
             PeerRecording.packets(PeerRecording.bytes("clientCommandLister.s2c.bin")));
     assertTrue(
-        listedThen.contains("update") && listedThen.contains("ratioDrive"), listedThen.toString());
+        listedThen.containsAll(
+            List.of("update", "ratioDrive", "listCommands", "listStringCommands", "enableMotors")),
+        listedThen.toString());
     try (GuiRig rig = GuiRig.plain(b -> b);
         RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
       aria.readIntroduction();
@@ -79,6 +81,86 @@ class AriaClientReplayTest {
       assertTrue(listedThen.containsAll(now), "listed by hand: " + listedThen + ", now: " + now);
       assertTrue(aria.readUntil(Protocol.SERVER_LIST_ARGRET).bufToUByte2() > 0);
       assertTrue(aria.readUntil(Protocol.SERVER_LIST_GROUP_AND_FLAGS).bufToUByte2() > 0);
+    }
+  }
+
+  @Test
+  void anAriaClientListsAndRunsTheSimpleCommands() throws Exception {
+    // The login clientCommandLister sent by hand, then what ArNetworking's client sends for
+    // listCommands and for a simple command: a packet of the data's number with an empty body.
+    byte[] intro =
+        PeerRecording.packets(PeerRecording.bytes("clientCommandLister.c2s.bin")).get(0).toWire();
+    try (GuiRig rig = GuiRig.plain(b -> b);
+        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
+      ArServerBase s = rig.gui.getServer();
+      int list = s.findCommandFromName("listCommands");
+      aria.readIntroduction();
+      aria.send(intro);
+      aria.readUntil(Protocol.SERVER_CONNECTED);
+      aria.send(new ArNetPacket(list));
+      ArNetPacket p = aria.readUntil(list);
+      assertEquals(2, p.bufToByte2(), "byte2 count");
+      assertEquals("enableMotors", p.bufToStr());
+      assertEquals("switches the motors on", p.bufToStr());
+      assertEquals("disableMotors", p.bufToStr());
+      assertEquals("switches the motors off", p.bufToStr());
+      assertEquals(0, p.getRemaining());
+      // Each command is followed by listCommands: the list's answer is the next packet (the
+      // command, RETURN_NONE as in ArNetworking, answers nothing) and shows that the server has
+      // queued the command for the robot's cycle, which the test then runs.
+      for (String command : List.of("disableMotors", "enableMotors")) {
+        aria.send(new ArNetPacket(s.findCommandFromName(command)));
+        aria.send(new ArNetPacket(list));
+        assertEquals(list, aria.read().getCommand(), command + " answers nothing");
+        rig.run(300);
+        assertEquals(command.equals("enableMotors"), rig.robot.areMotorsEnabled(), command);
+      }
+    }
+  }
+
+  @Test
+  void clientStringInfoExampleGetsTheLabelsAndTheStrings() throws Exception {
+    byte[] sent = PeerRecording.bytes("clientStringInfoExample.c2s.bin");
+    // Introduction, UDP confirmation, updateStrings (-1) and updateNumbers (100 ms), getStringsInfo
+    // once, then getStrings every second.
+    assertEquals(
+        List.of(2, 4, 129, 129, 291, 129),
+        PeerRecording.packets(sent).stream().map(ArNetPacket::getCommand).toList());
+    // By hand it printed "Robot cycle (ms)   Network clients   Localization score" as its
+    // columns, then rows such as "0.22   1   0.938": the recorded answers say the same.
+    List<ArNetPacket> answered =
+        PeerRecording.packets(PeerRecording.bytes("clientStringInfoExample.s2c.bin"));
+    ArNetPacket infoThen =
+        answered.stream().filter(p -> p.getCommand() == 291).findFirst().orElseThrow().toReader();
+    assertEquals(
+        List.of("Robot cycle (ms)", "Network clients", "Localization score"),
+        org.jaria.net.data.InfoStrings.readLabels(infoThen));
+    org.jaria.net.provider.VideoSource camera =
+        new org.jaria.net.provider.VideoSource() {
+          @Override
+          public String getName() {
+            return "Camera";
+          }
+
+          @Override
+          public org.jaria.net.data.VideoFrame getLatestFrame() {
+            return null;
+          }
+        };
+    try (GuiRig rig = GuiRig.arnl(b -> b.video(camera));
+        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
+      ArServerBase s = rig.gui.getServer();
+      assertEquals(291, s.findCommandFromName("getStringsInfo"));
+      assertEquals(270, s.findCommandFromName("getStrings"));
+      aria.readIntroduction();
+      aria.send(sent);
+      ArNetPacket info = aria.readUntil(291);
+      List<String> labels = org.jaria.net.data.InfoStrings.readLabels(info);
+      assertEquals(List.of("Robot cycle (ms)", "Network clients", "Localization score"), labels);
+      org.jaria.net.data.InfoStrings strings =
+          org.jaria.net.data.InfoStrings.read(aria.readUntil(270), labels);
+      assertEquals("2", strings.get("Network clients"), "the rig's own client and ARIA's");
+      assertEquals(3, strings.values().size());
     }
   }
 
@@ -120,9 +202,15 @@ class AriaClientReplayTest {
       }
       aria.readIntroduction();
       aria.send(sent);
-      ArNetPacket physical = aria.readUntil(261);
+      // physicalInfo and batteryInfo are answered by different threads: take them in either order.
+      java.util.Map<Integer, ArNetPacket> got = new java.util.HashMap<>();
+      while (!got.containsKey(261) || !got.containsKey(260)) {
+        ArNetPacket p = aria.read();
+        got.putIfAbsent(p.getCommand(), p);
+      }
+      ArNetPacket physical = got.get(261);
       assertEquals(rig.robot.getRobotType(), physical.bufToStr());
-      ArNetPacket battery = aria.readUntil(260);
+      ArNetPacket battery = got.get(260);
       assertEquals(11.5, battery.bufToDouble());
       assertEquals(11, battery.bufToDouble());
       rig.run(300);

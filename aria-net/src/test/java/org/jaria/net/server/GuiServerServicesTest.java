@@ -135,7 +135,21 @@ class GuiServerServicesTest {
     try (GuiRig rig = GuiRig.plain(b -> b)) {
       rig.gui.getInfoGroup().addStringInt("Answer", 4, () -> 42);
       rig.gui.getInfoGroup().addStringString("Long", 3, () -> "abcdef");
-      AtomicReference<InfoStrings> s = watch(rig, "getStrings", InfoStrings::read);
+      // ArNetworking's getStringsInfo: uByte2 count; per string its name and uByte2 max length.
+      ArNetPacket info = rig.call("getStringsInfo");
+      assertEquals(4, info.bufToUByte2());
+      assertEquals("Robot cycle (ms)", info.bufToStr());
+      assertEquals(8, info.bufToUByte2());
+      assertEquals("Network clients", info.bufToStr());
+      assertEquals(4, info.bufToUByte2());
+      assertEquals("Answer", info.bufToStr());
+      assertEquals(4, info.bufToUByte2());
+      assertEquals("Long", info.bufToStr());
+      assertEquals(3, info.bufToUByte2());
+      assertFalse(info.hasMore());
+      List<String> labels = InfoStrings.readLabels(rig.call("getStringsInfo"));
+      // getStrings: the values only, one string each, in the same order.
+      AtomicReference<InfoStrings> s = watch(rig, "getStrings", p -> InfoStrings.read(p, labels));
       Eventually.until("the table", () -> s.get() != null && s.get().get("Answer") != null);
       assertEquals("42", s.get().get("Answer"));
       assertEquals("abc", s.get().get("Long"), "cut to its maximum length");
@@ -160,9 +174,20 @@ class GuiServerServicesTest {
       rig.client.disconnect();
       rig.client.connect("127.0.0.1", rig.gui.getServer().getPort(), "", "");
       ArNetPacket list = rig.call("listCommands");
-      List<String> names = CommandInfo.readAll(list).stream().map(CommandInfo::name).toList();
-      assertEquals(List.of("enableMotors", "disableMotors", "say", "sum"), names);
-      assertEquals("", rig.call("say", "hello", "3").bufToStr());
+      // ArNetworking's layout: byte2 count, then name and description per command.
+      assertEquals(2, list.bufToByte2());
+      assertEquals("enableMotors", list.bufToStr());
+      assertEquals("switches the motors on", list.bufToStr());
+      assertEquals("disableMotors", list.bufToStr());
+      assertEquals("switches the motors off", list.bufToStr());
+      assertFalse(list.hasMore());
+      List<CommandInfo> withArgs = CommandInfo.readList(rig.call("listStringCommands"), true);
+      assertEquals(
+          List.of(
+              new CommandInfo("say", "logs a line", CommandInfo.STRING_ARGUMENT),
+              new CommandInfo("sum", "adds numbers", CommandInfo.STRING_ARGUMENT)),
+          withArgs);
+      assertFalse(rig.call("say", "hello", "3").hasMore(), "a command returns nothing");
       assertEquals(List.of("hello 3"), said);
       assertEquals("6", rig.call("sum", "1", "2", "3").bufToStr());
       rig.call("enableMotors");

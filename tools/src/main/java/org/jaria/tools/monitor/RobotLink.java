@@ -46,6 +46,8 @@ final class RobotLink implements AutoCloseable {
 
   private final ArClientBase client = new ArClientBase(ClientOptions.defaults("jaria-monitor"));
   private final MonitorState state;
+  // The labels of getStrings's values, from getStringsInfo (asked once per connection).
+  private volatile List<String> stringLabels = List.of();
   private final Runnable changed;
 
   /**
@@ -60,7 +62,7 @@ final class RobotLink implements AutoCloseable {
     on("getLocState", LocalizationSnapshot::read, v -> state.localization = v);
     on("getLocPoints", Particles::read, v -> state.particles = v);
     on("getPath", PathSnapshot::read, v -> state.path = v);
-    on("getStrings", InfoStrings::read, v -> state.strings = v);
+    on("getStrings", p -> InfoStrings.read(p, stringLabels), v -> state.strings = v);
     on("getConfigBySections", ConfigSection::readAll, v -> state.config = v);
     on("getVideo", VideoFrame::read, v -> state.video = v);
     client.addHandler(
@@ -167,6 +169,19 @@ final class RobotLink implements AutoCloseable {
       subscribe("mapUpdated", -1);
     }
     fetchMap();
+    if (client.dataExists("getStringsInfo")) {
+      CompletableFuture<?> unused =
+          request("getStringsInfo")
+              .thenAccept(
+                  p -> {
+                    stringLabels = InfoStrings.readLabels(p);
+                    // Values that came before their labels: label them now.
+                    InfoStrings early = state.strings;
+                    if (early != null) {
+                      state.strings = early.withLabels(stringLabels);
+                    }
+                  });
+    }
     if (client.dataExists("physicalInfo")) {
       CompletableFuture<?> unused =
           request("physicalInfo").thenAccept(p -> state.physical = PhysicalInfo.read(p));
@@ -219,7 +234,14 @@ final class RobotLink implements AutoCloseable {
     if (!client.dataExists("listCommands")) {
       return CompletableFuture.completedFuture(List.of());
     }
-    return request("listCommands").thenApply(CommandInfo::readAll);
+    CompletableFuture<List<CommandInfo>> simple =
+        request("listCommands").thenApply(p -> CommandInfo.readList(p, false));
+    if (!client.dataExists("listStringCommands")) {
+      return simple;
+    }
+    return simple.thenCombine(
+        request("listStringCommands").thenApply(p -> CommandInfo.readList(p, true)),
+        (a, b) -> java.util.stream.Stream.concat(a.stream(), b.stream()).toList());
   }
 
   /** Whether the server offers data of this name to this user. */

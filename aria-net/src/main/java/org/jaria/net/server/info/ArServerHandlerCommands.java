@@ -11,8 +11,14 @@ import org.jaria.net.server.Where;
 
 /**
  * Custom commands (ArNetworking's {@code ArServerHandlerCommands}): a program adds named commands,
- * a monitor lists them with {@code "listCommands"} and runs one by sending a request of the same
- * name, with its arguments (any simple values; the command receives them as text).
+ * a monitor lists them and runs one by sending a request of the same name, with its arguments (any
+ * simple values; the command receives them as text).
+ *
+ * <p>The lists have ArNetworking's layout ({@code byte2 count}, then {@code string name, string
+ * description} per command): {@code "listCommands"} lists the commands without arguments, {@code
+ * "listStringCommands"} those with arguments (an ARIA client sends them one string). {@code
+ * "listStringCommands"} is registered by {@link #addStringCommandList}, so that the data numbers of
+ * services registered before it stay as they were.
  *
  * <pre>{@code
  * ArServerHandlerCommands commands = new ArServerHandlerCommands(server);
@@ -35,6 +41,10 @@ public final class ArServerHandlerCommands {
     String run(List<String> args) throws Exception;
   }
 
+  /** Return description of both lists, as ArNetworking gives it. */
+  static final String LIST_RETURNS =
+      "byte2: numberOfCommands, <repeats numberOfCommands> string: name, string: description";
+
   private final ArServerBase server;
   private final List<CommandInfo> commands = new CopyOnWriteArrayList<>();
 
@@ -43,18 +53,31 @@ public final class ArServerHandlerCommands {
     this.server = server;
     server.addData(
         "listCommands",
-        "the custom commands: send one by its name",
+        "Gets a list of simple commands that can be sent to the server",
         "none",
-        "array of [name, description, argument description]",
-        "",
+        LIST_RETURNS,
+        GROUP,
         Where.WORKER,
-        (client, request, reply) -> {
-          List<CommandInfo> l = getCommands();
-          reply.arrayToBuf(l.size());
-          for (CommandInfo c : l) {
-            c.write(reply);
-          }
-        });
+        (client, request, reply) -> CommandInfo.writeList(reply, commandsTaking(false)));
+  }
+
+  /**
+   * Registers {@code "listStringCommands"}: the commands that take arguments. Call it once, after
+   * the services whose data numbers should not move.
+   */
+  public void addStringCommandList() {
+    server.addData(
+        "listStringCommands",
+        "Gets a list of commands that can be sent to the server with string arguments",
+        "none",
+        LIST_RETURNS,
+        GROUP,
+        Where.WORKER,
+        (client, request, reply) -> CommandInfo.writeList(reply, commandsTaking(true)));
+  }
+
+  private List<CommandInfo> commandsTaking(boolean arguments) {
+    return getCommands().stream().filter(c -> c.takesArguments() == arguments).toList();
   }
 
   /** Adds a command without arguments, run on the robot's cycle. */
@@ -75,7 +98,7 @@ public final class ArServerHandlerCommands {
     addCommand(
         name,
         description,
-        "string",
+        "string: argumentToCommand",
         Where.CYCLE,
         args -> {
           command.accept(String.join(" ", args));
@@ -96,14 +119,22 @@ public final class ArServerHandlerCommands {
       String argumentDescription,
       Where where,
       CommandHandler handler) {
+    // ArNetworking's commands return nothing (RETURN_NONE); a command that has something to say
+    // answers with one string, which ARIA's clients ignore.
     server.addData(
         name,
         description,
         argumentDescription.isEmpty() ? "none" : argumentDescription,
-        "string reply",
+        "none, or string: reply",
         GROUP,
+        "RETURN_NONE",
         where,
-        (client, request, reply) -> reply.strToBuf(handler.run(argsAsText(request))));
+        (client, request, reply) -> {
+          String said = handler.run(argsAsText(request));
+          if (!said.isEmpty()) {
+            reply.strToBuf(said);
+          }
+        });
     commands.add(new CommandInfo(name, description, argumentDescription));
   }
 

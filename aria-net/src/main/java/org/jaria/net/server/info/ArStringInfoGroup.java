@@ -62,6 +62,18 @@ public final class ArStringInfoGroup {
     entries.removeIf(e -> e.label().equals(label));
   }
 
+  /**
+   * Writes ArNetworking's {@code "getStringsInfo"} layout: uByte2 count; per entry its label and
+   * its maximum length (uByte2, 0 for none).
+   */
+  public void writeInfo(org.jaria.net.ArNetPacket out) {
+    List<Entry> l = List.copyOf(entries);
+    out.uByte2ToBuf(l.size());
+    for (Entry e : l) {
+      out.strToBuf(e.label()).uByte2ToBuf(Math.max(0, Math.min(e.maxLength(), 0xffff)));
+    }
+  }
+
   /** Evaluates every entry now (values cut to their maximum lengths). */
   public InfoStrings evaluate() {
     List<String> labels = new ArrayList<>();
