@@ -100,15 +100,37 @@ public final class SimCommand implements Callable<Integer> {
   @Option(names = "--no-specular", description = "sonar sees walls at any angle")
   boolean noSpecular;
 
-  @Option(names = "--laser", description = "give every robot a simulated laser (SIM_LRF_ENABLE)")
+  @Option(
+      names = "--laser",
+      description =
+          "give every robot a simulated laser (the models MobileSim gives a laser, e.g. p3dx-sh,"
+              + " carry one anyway)")
   boolean laser;
 
+  @Option(names = "--no-laser", description = "no robot carries a laser")
+  boolean noLaser;
+
+  /** The old switch for what is now the default (SRISim laser commands on). */
   @Option(
       names = "--legacy-laser-commands",
-      description =
-          "with --laser: commands 35-38 set up the laser as in older simulators (old ARIA"
-              + " clients), not ADSEL/GRIPPERVAL/GRIPREQUEST/GYROCALCW")
+      hidden = true,
+      description = "deprecated: the SRISim laser commands are on by default")
   boolean legacyLaserCommands;
+
+  @Option(
+      names = "--no-srisim-laser-compat",
+      description =
+          "commands 35-38 keep their ARCOS meanings (ADSEL, GRIPPERVAL, GRIPREQUEST, GYROCALCW)"
+              + " instead of setting up the laser as SRISim's laser commands do (MobileSim's"
+              + " option; ARIA's ArSimulatedLaser then cannot start the laser)")
+  boolean noSrisimLaserCompat;
+
+  @Option(
+      names = "--srisim-compat",
+      description =
+          "also accept SRISim's other old commands: 62 exits, 66/67 set the true x/y, 69 resets"
+              + " the robot (MobileSim's option; 62 is also ARCOS's BATTERYINFO)")
+  boolean srisimCompat;
 
   private final CountDownLatch stop = new CountDownLatch(1);
   private final AtomicInteger exitCode = new AtomicInteger();
@@ -138,14 +160,26 @@ public final class SimCommand implements Callable<Integer> {
     }
     for (String model : robotModels()) {
       try {
-        world.addRobot(
-            RobotOptions.of(model).withLaser(laser).withLegacyLaserCommands(legacyLaserCommands));
+        world.addRobot(robotOptions(model));
       } catch (IllegalArgumentException e) {
         world.close();
         throw new ParameterException(spec.commandLine(), e.getMessage());
       }
     }
     return world;
+  }
+
+  /** The options of one robot of {@code model}, as the laser and SRISim options say. */
+  RobotOptions robotOptions(String model) {
+    if (laser && noLaser) {
+      throw new ParameterException(spec.commandLine(), "choose either --laser or --no-laser");
+    }
+    RobotOptions o = RobotOptions.of(model);
+    if (laser || noLaser) {
+      o = o.withLaser(laser);
+    }
+    return o.withLegacyLaserCommands(o.laser() && !noSrisimLaserCompat)
+        .withSrisimCompat(srisimCompat);
   }
 
   /** The robot models to add, in order. */
