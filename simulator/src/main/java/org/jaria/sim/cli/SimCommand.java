@@ -6,16 +6,20 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.SplittableRandom;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicInteger;
+import org.jaria.geom.ArPose;
 import org.jaria.sim.OdometryError;
 import org.jaria.sim.RobotOptions;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Model.OptionSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
@@ -40,16 +44,20 @@ public final class SimCommand implements Callable<Integer> {
 
   @Spec private CommandSpec spec;
 
-  @Option(
-      names = "--map",
-      paramLabel = "FILE",
-      description = "ArMap .map file, or a bundled map name (office, hall); default: office")
-  String map = "office";
+  @Mixin MobileSimOptions mobileSim = new MobileSimOptions();
 
   @Option(
-      names = "--robot",
-      paramLabel = "MODEL",
-      description = "robot model to add (repeatable): p3dx-sh, p3at-sh, p2dx, amigo, ...")
+      names = {"-m", "--map", "-map"},
+      paramLabel = "FILE",
+      description = "ArMap .map file, or a bundled map name (office, hall); default: office")
+  String map;
+
+  @Option(
+      names = {"-r", "--robot", "-robot"},
+      paramLabel = "MODEL[:NAME]",
+      description =
+          "robot model to add, optionally with its name (repeatable): p3dx-sh, p3at-sh, p2dx,"
+              + " amigo, ...")
   List<String> robots = new ArrayList<>();
 
   @Option(
@@ -58,7 +66,9 @@ public final class SimCommand implements Callable<Integer> {
       description = "number of robots (of the last --robot model, p3dx-sh by default)")
   Integer robotCount;
 
-  @Option(names = "--port", description = "TCP port of the first robot (default ${DEFAULT-VALUE})")
+  @Option(
+      names = {"-p", "--port"},
+      description = "TCP port of the first robot (default ${DEFAULT-VALUE})")
   int port = SimOptions.DEFAULT_PORT;
 
   @Option(names = "--speedup", paramLabel = "X", description = "run X times faster than real time")
@@ -143,38 +153,64 @@ public final class SimCommand implements Callable<Integer> {
    */
   public SimWorld createWorld() throws IOException {
     SimOptions options = buildOptions();
-    SimWorld world;
-    Path file = Path.of(map);
-    if (Files.exists(file)) {
-      world = SimWorld.load(file, options);
-    } else if (!map.contains("/") && !map.contains("\\") && !map.endsWith(".map")) {
-      try {
-        world = SimWorld.bundled(map, options);
-      } catch (RuntimeException e) {
-        throw new ParameterException(
-            spec.commandLine(),
-            "no map file '" + map + "' and no bundled map of that name: " + e.getMessage());
-      }
-    } else {
-      throw new ParameterException(spec.commandLine(), "map file " + map + " does not exist");
+    if (!mobileSim.robotFactories.isEmpty()) {
+      throw new ParameterException(
+          spec.commandLine(),
+          "-R/--robot-factory (a new robot for each client) is not supported yet: give one -r"
+              + " MODEL per client instead");
     }
-    for (String model : robotModels()) {
-      try {
-        world.addRobot(robotOptions(model));
-      } catch (IllegalArgumentException e) {
-        world.close();
-        throw new ParameterException(spec.commandLine(), e.getMessage());
+    SimWorld world = openMap(options);
+    try {
+      world.setBindAddress(mobileSim.bindAddress());
+      StartPlace start = mobileSim.startPlace();
+      SplittableRandom rng = new SplittableRandom(seed);
+      List<String> specs = robotModels();
+      for (int i = 0; i < specs.size(); i++) {
+        RobotOptions o = robotOptions(specs.get(i));
+        ArPose pose = start == null ? null : start.poseFor(i, world.getMap(), rng);
+        world.addRobot(pose == null ? o : o.withStartPose(pose));
       }
+    } catch (IllegalArgumentException e) {
+      world.close();
+      throw new ParameterException(spec.commandLine(), e.getMessage());
     }
     return world;
   }
 
-  /** The options of one robot of {@code model}, as the laser and SRISim options say. */
-  RobotOptions robotOptions(String model) {
+  private SimWorld openMap(SimOptions options) throws IOException {
+    if (map == null && mobileSim.noMap) {
+      return SimWorld.empty(options);
+    }
+    String m = map == null ? "office" : map;
+    Path file = Path.of(m);
+    if (Files.exists(file)) {
+      return SimWorld.load(file, options);
+    } else if (!m.contains("/") && !m.contains("\\") && !m.endsWith(".map")) {
+      try {
+        return SimWorld.bundled(m, options);
+      } catch (RuntimeException e) {
+        throw new ParameterException(
+            spec.commandLine(),
+            "no map file '" + m + "' and no bundled map of that name: " + e.getMessage());
+      }
+    }
+    throw new ParameterException(spec.commandLine(), "map file " + m + " does not exist");
+  }
+
+  /**
+   * The options of one robot given as {@code MODEL} or {@code MODEL:NAME}, as the laser and SRISim
+   * options say.
+   */
+  RobotOptions robotOptions(String robotSpec) {
     if (laser && noLaser) {
       throw new ParameterException(spec.commandLine(), "choose either --laser or --no-laser");
     }
+    int colon = robotSpec.indexOf(':');
+    String model = colon < 0 ? robotSpec : robotSpec.substring(0, colon);
     RobotOptions o = RobotOptions.of(model);
+    if (colon >= 0 && colon + 1 < robotSpec.length()) {
+      o = o.withName(robotSpec.substring(colon + 1));
+    }
     if (laser || noLaser) {
       o = o.withLaser(laser);
     }
@@ -213,12 +249,14 @@ public final class SimCommand implements Callable<Integer> {
     }
     OdometryError err;
     try {
-      err = OdometryError.parse(odometryError);
+      err = OdometryError.parse(mobileSim.noError ? "none" : odometryError);
     } catch (IllegalArgumentException e) {
       throw new ParameterException(spec.commandLine(), e.getMessage());
     }
     try {
+      Integer tick = mobileSim.tickMillis();
       return SimOptions.builder()
+          .tickMillis(tick != null ? tick : 10)
           .seed(seed)
           .basePort(port)
           .sipCycleMillis(sipCycle)
@@ -240,7 +278,14 @@ public final class SimCommand implements Callable<Integer> {
    * --unthrottled} (as fast as possible).
    */
   public double pacing() {
-    return isUnthrottled() ? 0 : (speedup != null ? speedup : 1);
+    if (isUnthrottled()) {
+      return 0;
+    }
+    if (speedup != null) {
+      return speedup;
+    }
+    Double updates = mobileSim.speedup();
+    return updates != null ? updates : 1;
   }
 
   /**
@@ -248,6 +293,21 @@ public final class SimCommand implements Callable<Integer> {
    * was used.
    */
   public void noteDeprecatedOptions(PrintWriter err) {
+    mobileSim.meaninglessNames.clear();
+    if (spec.commandLine().getParseResult() != null) {
+      // Every name of the meaningless options belongs to one option; find which were given.
+      OptionSpec meaningless = spec.findOption("--nogui");
+      java.util.Set<String> names = java.util.Set.of(meaningless.names());
+      for (String a : spec.commandLine().getParseResult().originalArgs()) {
+        if (names.contains(a)) {
+          mobileSim.meaninglessNames.add(a);
+        }
+      }
+    }
+    mobileSim.noteIgnored(err);
+    if (legacyLaserCommands) {
+      err.println("note: --legacy-laser-commands is the default now (SRISim laser commands)");
+    }
     if (lockstep) {
       err.println(
           "note: --lockstep is deprecated; it means --unthrottled (ticks as fast as possible), not"
@@ -256,9 +316,25 @@ public final class SimCommand implements Callable<Integer> {
     }
   }
 
+  /**
+   * Points the log at {@code --log-file} and sets its level from {@code --verbose} / {@code
+   * --less-verbose} (JAria's simple logger reads both when the first log line is made).
+   */
+  void configureLogging() {
+    if (mobileSim.logFile != null) {
+      System.setProperty("org.slf4j.simpleLogger.logFile", mobileSim.logFile.toString());
+    }
+    if (mobileSim.verbose) {
+      System.setProperty("org.slf4j.simpleLogger.defaultLogLevel", "debug");
+    } else if (mobileSim.lessVerbose) {
+      System.setProperty("org.slf4j.simpleLogger.defaultLogLevel", "error");
+    }
+  }
+
   @Override
   public Integer call() throws IOException {
     PrintWriter out = spec.commandLine().getOut();
+    configureLogging();
     noteDeprecatedOptions(spec.commandLine().getErr());
     SimWorld world = createWorld();
     // On Ctrl-C the JVM exits once the hooks end, so the hook itself closes the world.
