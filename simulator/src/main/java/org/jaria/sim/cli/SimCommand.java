@@ -144,6 +144,8 @@ public final class SimCommand implements Callable<Integer> {
 
   private final CountDownLatch stop = new CountDownLatch(1);
   private final AtomicInteger exitCode = new AtomicInteger();
+  private final java.util.concurrent.atomic.AtomicBoolean summaryPrinted =
+      new java.util.concurrent.atomic.AtomicBoolean();
 
   /**
    * Builds the world the options describe (not listening, not running).
@@ -342,6 +344,7 @@ public final class SimCommand implements Callable<Integer> {
         new Thread(
             () -> {
               stop.countDown();
+              summaryOnce(world, out);
               world.close();
             },
             "jaria-sim-shutdown");
@@ -380,6 +383,7 @@ public final class SimCommand implements Callable<Integer> {
     } catch (InterruptedException e) {
       Thread.currentThread().interrupt();
     } finally {
+      summaryOnce(world, out);
       world.close();
       try {
         Runtime.getRuntime().removeShutdownHook(hook);
@@ -390,6 +394,37 @@ public final class SimCommand implements Callable<Integer> {
       out.flush();
     }
     return exitCode.get();
+  }
+
+  private void summaryOnce(SimWorld world, PrintWriter out) {
+    if (summaryPrinted.compareAndSet(false, true)) {
+      printSummary(world, out);
+    }
+  }
+
+  /**
+   * One line per robot on stopping: where it started, where it is, how many clients opened it (so a
+   * script can tell whether a client drove it).
+   */
+  static void printSummary(SimWorld world, PrintWriter out) {
+    for (SimRobot r : world.getRobots()) {
+      ArPose a = r.getStartPose();
+      ArPose b = r.getTruePose();
+      out.printf(
+          java.util.Locale.ROOT,
+          "robot %s: started at %.0f,%.0f,%.0f; now at %.0f,%.0f,%.0f; moved %.0f mm; %d"
+              + " client session(s)%n",
+          r.getName(),
+          a.x(),
+          a.y(),
+          a.th(),
+          b.x(),
+          b.y(),
+          b.th(),
+          Math.hypot(b.x() - a.x(), b.y() - a.y()),
+          r.getSessionCount());
+    }
+    out.flush();
   }
 
   /** Asks a running {@link #call()} to stop (as Ctrl-C does). */
