@@ -57,6 +57,34 @@ class AriaPeerReplayTest {
   }
 
   /**
+   * ARIA's {@code demo} sets the laser up and then, through its ArGripper, sends GRIPPERPACREQUEST
+   * 2 (37, the SRISim number of "laser end angle"). Read as a laser command, as MobileSim does, it
+   * narrowed the laser to −90..2° and ARIA printed "too many readings, popping one" 176 times (88
+   * for each of its two buffers); outside the set-up sequence it must stay a gripper request.
+   */
+  @Test
+  void ariaDemosGripperRequestAfterTheLaserSetUpLeavesTheLaserAlone() {
+    try (SimWorld w = SimWorld.bundled("office", OPTS)) {
+      SimRobot r = w.addRobot("p3dx-sh");
+      ArcosTestClient c = new ArcosTestClient(w, r).open();
+      c.clear();
+      for (String p : ARIA_LASER_CONNECT) {
+        c.sendRaw(HEX.parseHex(p));
+      }
+      w.advanceMillis(500);
+      c.sendRaw(HEX.parseHex("fafb06253b0200273b")); // 37 2: GRIPPERPACREQUEST, continuous
+      w.advanceMillis(1500);
+      AriaSimLaserReader aria = new AriaSimLaserReader();
+      for (ArRobotPacket p : c.all()) {
+        aria.handle(p);
+      }
+      assertEquals(0, aria.tooManyReadings, "ARIA's 'too many readings, popping one'");
+      assertEquals(181, aria.lastTotal, "the field of view is still -90..90");
+      assertTrue(c.packets(PacketIds.GRIPPER).size() >= 10, "GRIPPERpac every cycle");
+    }
+  }
+
+  /**
    * ARIA's ArVCC4 initialising and polling a VC-C4 on AUX1: GETAUX 0 (flush), then before each
    * command GETAUX 6; a position request is followed by GETAUX for the rest once the first six
    * bytes show no footer.

@@ -362,7 +362,7 @@ public final class SimCommand implements Callable<Integer> {
       }
       out.printf(
           "map %s, %s; %s%n",
-          map,
+          map != null ? map : (mobileSim.noMap ? "none (empty world)" : "office"),
           isUnthrottled() ? "unthrottled" : "speed-up " + pacing(),
           seconds == null
               ? "Ctrl-C stops"
@@ -396,7 +396,11 @@ public final class SimCommand implements Callable<Integer> {
     return exitCode.get();
   }
 
-  private void summaryOnce(SimWorld world, PrintWriter out) {
+  /**
+   * Prints the summary once, from whichever of the main thread and the Ctrl-C hook comes first;
+   * synchronized so that the hook returns (and the JVM halts) only once the lines are out.
+   */
+  private synchronized void summaryOnce(SimWorld world, PrintWriter out) {
     if (summaryPrinted.compareAndSet(false, true)) {
       printSummary(world, out);
     }

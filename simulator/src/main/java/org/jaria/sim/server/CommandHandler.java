@@ -11,6 +11,7 @@ import org.jaria.protocol.packets.SerAuxPacket;
 import org.jaria.sim.robot.LaserModel;
 import org.jaria.sim.robot.MotionController;
 import org.jaria.sim.robot.RobotBody;
+import org.jaria.sim.robot.SrisimLaserSetup;
 import org.jaria.sim.serial.AuxPort;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -107,32 +108,25 @@ final class CommandHandler {
         }
       }
       case ADSEL -> {
-        if (legacyLaser != null) {
-          s.laserMode = clampMode(intArg(p, 0));
-        } else {
+        if (srisimLaserStep(legacyLaser, p) == SrisimLaserSetup.Step.ARCOS) {
           body.io().selectAnalog(intArg(p, 0));
         }
       }
       case GRIPPERVAL -> {
-        if (legacyLaser != null) {
-          legacyLaser.setStart(intArg(p, 0));
-        } else if (body.gripper() != null) {
+        srisimLaserStep(legacyLaser, p); // 36 is also the gripper's value: it gets it either way
+        if (body.gripper() != null) {
           body.gripper().setGripperVal(intArg(p, 0));
-        } else {
+        } else if (legacyLaser == null) {
           ignored(command, IgnoredCommand.Reason.NO_DEVICE);
         }
       }
       case GRIPREQUEST -> {
-        if (legacyLaser != null) {
-          legacyLaser.setEnd(intArg(p, 0));
-        } else {
+        if (srisimLaserStep(legacyLaser, p) == SrisimLaserSetup.Step.ARCOS) {
           s.gripMode = clampMode(intArg(p, 1)); // GRIPPERpac says "none" on a robot without
         }
       }
       case GYROCALCW -> {
-        if (legacyLaser != null) {
-          legacyLaser.setIncrement(intArg(p, 100) / 100.0);
-        } else {
+        if (srisimLaserStep(legacyLaser, p) == SrisimLaserSetup.Step.ARCOS) {
           s.gyroCw = intArg(p, 0) & 0xFFFF;
         }
       }
@@ -222,6 +216,25 @@ final class CommandHandler {
 
   private void ignored(int command, IgnoredCommand.Reason reason) {
     s.host.ignoredCommand(command, reason, body.name());
+  }
+
+  /**
+   * Commands 35–38 on a robot that takes SRISim's laser commands: a step of the laser set-up
+   * sequence (applied all at once when it completes with 35), or an ARCOS command.
+   */
+  private SrisimLaserSetup.Step srisimLaserStep(LaserModel laser, ArRobotPacket p) {
+    if (laser == null) {
+      return SrisimLaserSetup.Step.ARCOS;
+    }
+    SrisimLaserSetup setup = laser.srisimSetup();
+    SrisimLaserSetup.Step step = setup.accept(p.getID(), intArg(p, 0));
+    if (step == SrisimLaserSetup.Step.APPLY) {
+      laser.setStart(setup.start());
+      laser.setEnd(setup.end());
+      laser.setIncrement(setup.increment() / 100.0);
+      s.laserMode = clampMode(intArg(p, 0));
+    }
+    return step;
   }
 
   /** SIM_LRF_SET_FOV_START/END and SIM_LRF_SET_RES: the laser's field of view and resolution. */

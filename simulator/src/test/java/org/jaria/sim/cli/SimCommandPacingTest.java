@@ -107,6 +107,7 @@ class SimCommandPacingTest {
           c,
           CommandCodec.comInt(
               p, ArCommands.GRIPREQUEST.getNumber(), 30)); // read as the end angle, not a request
+      send(c, CommandCodec.comInt(p, ArCommands.GYROCALCW.getNumber(), 100)); // 1 degree
       send(c, CommandCodec.comInt(p, ArCommands.ADSEL.getNumber(), 1)); // read as "laser on"
       w.advanceMillis(200);
       byte[] buf = new byte[8192];

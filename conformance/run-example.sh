@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Runs ONE unmodified ARIA example against a fresh JAria simulator and prints one result line.
+#
+#   conformance/run-example.sh ARIA_DIR EXAMPLE PORT SECONDS [extra example args...]
+#
+# ARIA_DIR  a built ARIA tree (AriaCoda or ARIA 2.9.1) with lib/ and examples/
+# EXAMPLE   the example's name (demo is driven through a pseudo-terminal, see keys below)
+# PORT      the TCP port the simulator listens on (pick a free one)
+# SECONDS   how long the example may run before it is stopped (examples that never end on
+#           their own, like wander, are stopped after SECONDS: exit status 124)
+#
+# Environment: SIM (default: ./jaria sim, run from the repository root), SIM_ARGS (extra
+# simulator options), OUT (directory for the logs, default conformance/out).
+# The result line: example | connected | laser connected after | robot moved | warnings | exit.
+set -uo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/.." && pwd)"
+aria="$1"; example="$2"; port="$3"; seconds="$4"; shift 4
+out="${OUT:-$here/out}"
+sim="${SIM:-$root/jaria sim}"
+mkdir -p "$out"
+tag="$(basename "$aria")-$example"
+simlog="$out/$tag.sim.log"
+arialog="$out/$tag.aria.log"
+
+# shellcheck disable=SC2086
+$sim -p "$port" ${SIM_ARGS:-} >"$simlog" 2>&1 &
+simpid=$!
+for _ in $(seq 1 100); do
+  grep -q "listening on TCP port" "$simlog" 2>/dev/null && break
+  sleep 0.2
+done
+
+export ARIA="$aria" LD_LIBRARY_PATH="$aria/lib"
+bin="$aria/examples/$example"
+args=(-rh 127.0.0.1 -rrtp "$port" "$@")
+# Every output line gets the wall time it arrived at (ARIA flushes each log line).
+stamp() { while IFS= read -r line; do printf '%s %s\n' "$(date +%s.%N)" "$line"; done; }
+start=$(date +%s.%N)
+if [ "$example" = demo ]; then
+  # demo reads single keys from its terminal: w wander, l laser, t teleop, then Escape quits.
+  keys() {
+    sleep 4; printf 'w'; sleep $(( seconds / 3 )); printf 'l'; sleep 3
+    printf 't'; sleep 2; printf '\033'; sleep 3
+  }
+  keys | timeout "$seconds" script -qefc "$bin ${args[*]}" /dev/null 2>&1 | tr -d '\r' | stamp >"$arialog"
+  status=${PIPESTATUS[1]}
+else
+  timeout "$seconds" "$bin" "${args[@]}" </dev/null 2>&1 | stamp >"$arialog"
+  status=${PIPESTATUS[0]}
+fi
+
+# TERM, not INT: a script's background job ignores SIGINT. The JVM stops cleanly on TERM.
+kill -TERM "$simpid" 2>/dev/null
+wait "$simpid" 2>/dev/null
+
+connected=no
+grep -q "Connected to robot" "$arialog" && connected=yes
+laser="-"
+t0=$(grep -a -m1 "Connected to robot" "$arialog" | cut -d' ' -f1)
+t1=$(grep -a -m1 "Connected to simulated laser" "$arialog" | cut -d' ' -f1)
+if [ -n "$t0" ] && [ -n "$t1" ]; then laser=$(printf '%.2f s' "$(echo "$t1 - $t0" | bc)"); fi
+if grep -q "Failed to connect to simulated laser" "$arialog"; then laser=FAILED; fi
+moved=$(sed -n 's/.*moved \([0-9]*\) mm.*/\1 mm/p' "$simlog" | head -n1)
+warnings=$(grep -aicE "No packet handler wanted|too many readings|warning|could not|failed|incorrect number|no response" "$arialog")
+elapsed=$(echo "$(date +%s.%N) - $start" | bc)
+printf '%s | %s | %s | %s | %s | %s | %.0f s\n' \
+  "$example" "$connected" "$laser" "${moved:-?}" "$warnings" "$status" "$elapsed"

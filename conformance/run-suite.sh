@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# The conformance suite: every ARIA example that needs only a robot and its standard accessories,
+# unmodified, against a fresh `./jaria sim` each. Prints a Markdown table (the one in
+# docs/simulator.md) and keeps each run's logs in conformance/out/.
+#
+#   conformance/run-suite.sh ARIA_DIR [BASE_PORT]
+#
+# ARIA_DIR: a built AriaCoda (../shared/interop/build-ariacoda.sh) or ARIA 2.9.1
+# (../shared/interop/build-aria291.sh) tree; examples it lacks are listed as "not built".
+# BASE_PORT: first TCP port to use (default 8101); each example takes the next one.
+set -uo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+aria="$1"
+port="${2:-8101}"
+
+# example  seconds  extra arguments
+suite=(
+  "simpleConnect 20"
+  "simpleMotionCommands 40"
+  "wander 20"
+  "demo 30"
+  "gotoActionExample 40"
+  "actionExample 20"
+  "actionGroupExample 20"
+  "laserConnect 20"
+  "lasers 20"
+  "lineFinderExample 20"
+  "gyroExample 20"
+  "gripperExample 20"
+  "cameraPTZExample 60 -ptzType vcc4"
+  "robotSyncTaskExample 20"
+  "singleThreadLoopExample 20"
+)
+
+echo "| example | connected | laser connected after | robot moved | warning lines | exit status | ran |"
+echo "|---|---|---|---|---|---|---|"
+for entry in "${suite[@]}"; do
+  read -r name seconds extra <<<"$entry"
+  if [ ! -x "$aria/examples/$name" ]; then
+    echo "| $name | not built | | | | | |"
+    continue
+  fi
+  # shellcheck disable=SC2086
+  line=$("$here/run-example.sh" "$aria" "$name" "$port" "$seconds" $extra)
+  echo "| ${line//|/|} |" | sed 's/ | / | /g'
+  port=$((port + 1))
+done
