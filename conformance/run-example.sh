@@ -10,7 +10,9 @@
 #           their own, like wander, are stopped after SECONDS: exit status 124)
 #
 # Environment: SIM (default: ./jaria sim, run from the repository root), SIM_ARGS (extra
-# simulator options), OUT (directory for the logs, default conformance/out).
+# simulator options), OUT (directory for the logs, default conformance/out), ARGS_IN_ENV=1 (give
+# the connection arguments in ARIAARGS instead of the command line, for examples that refuse
+# unknown arguments themselves, like gyroExample).
 # The result line: example | connected | laser connected after | robot moved | warnings | exit.
 set -uo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -33,7 +35,12 @@ done
 
 export ARIA="$aria" LD_LIBRARY_PATH="$aria/lib"
 bin="$aria/examples/$example"
-args=(-rh 127.0.0.1 -rrtp "$port" "$@")
+if [ "${ARGS_IN_ENV:-}" = 1 ]; then
+  export ARIAARGS="-rh 127.0.0.1 -rrtp $port"
+  args=("$@")
+else
+  args=(-rh 127.0.0.1 -rrtp "$port" "$@")
+fi
 # Every output line gets the wall time it arrived at (ARIA flushes each log line).
 stamp() { while IFS= read -r line; do printf '%s %s\n' "$(date +%s.%N)" "$line"; done; }
 start=$(date +%s.%N)
