@@ -130,6 +130,24 @@ class MobileSimCommandLineTest {
     assertTrue(e.getMessage().contains("outside or random"), e.getMessage());
   }
 
+  /** A command that embeds {@code jaria sim}'s options, as {@code jaria sim --gui} does. */
+  @CommandLine.Command(name = "wrapper")
+  static final class Wrapper {
+    @CommandLine.Mixin SimCommand sim = new SimCommand();
+  }
+
+  @Test
+  void theMobileSimOptionsWorkWhenTheSimCommandIsAMixinToo() throws IOException {
+    Wrapper w = new Wrapper();
+    new CommandLine(w).parseArgs("-r", "amigo:bob", "-p", "0", "--nogui");
+    StringWriter err = new StringWriter();
+    w.sim.noteDeprecatedOptions(new PrintWriter(err, true));
+    assertTrue(err.toString().contains("--nogui (a MobileSim option)"), err.toString());
+    try (SimWorld world = w.sim.createWorld()) {
+      assertEquals("bob", world.getRobot(0).getName());
+    }
+  }
+
   private static int count(String s, String what) {
     int n = 0;
     for (int i = s.indexOf(what); i >= 0; i = s.indexOf(what, i + 1)) {
