@@ -12,8 +12,10 @@
 # Environment: SIM (default: ./jaria sim, run from the repository root), SIM_ARGS (extra
 # simulator options), OUT (directory for the logs, default conformance/out), ARGS_IN_ENV=1 (give
 # the connection arguments in ARIAARGS instead of the command line, for examples that refuse
-# unknown arguments themselves, like gyroExample).
-# The result line: example | connected | laser connected after | robot moved | warnings | exit.
+# unknown arguments themselves, like gyroExample), KEYS (keys to type into a keyboard-driven
+# example through a pseudo-terminal, see below; demo has a default).
+# The result line: example | connected | laser connected after | robot moved | protocol warnings |
+# timing warnings | exit status | wall time.
 set -uo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/.." && pwd)"
@@ -44,11 +46,16 @@ fi
 # Every output line gets the wall time it arrived at (ARIA flushes each log line).
 stamp() { while IFS= read -r line; do printf '%s %s\n' "$(date +%s.%N)" "$line"; done; }
 start=$(date +%s.%N)
-if [ "$example" = demo ]; then
-  # demo reads single keys from its terminal: w wander, l laser, t teleop, then Escape quits.
+if [ "$example" = demo ] && [ -z "${KEYS:-}" ]; then
+  # demo's modes: w wander, l laser, t teleop, then Escape quits.
+  KEYS='4:w 6:l 3:t 2:\033'
+fi
+if [ -n "${KEYS:-}" ]; then
+  # A keyboard-driven example reads single keys from its terminal: KEYS is a list of
+  # "seconds-to-wait:key" (key in printf notation, e.g. \033[A for the up arrow, \033 Escape).
   keys() {
-    sleep 4; printf 'w'; sleep $(( seconds / 3 )); printf 'l'; sleep 3
-    printf 't'; sleep 2; printf '\033'; sleep 3
+    for k in $KEYS; do sleep "${k%%:*}"; printf "${k#*:}"; done
+    sleep 3
   }
   keys | timeout "$seconds" script -qefc "$bin ${args[*]}" /dev/null 2>&1 | tr -d '\r' | stamp >"$arialog"
   status=${PIPESTATUS[1]}
@@ -69,7 +76,10 @@ t1=$(grep -a -m1 "Connected to simulated laser" "$arialog" | cut -d' ' -f1)
 if [ -n "$t0" ] && [ -n "$t1" ]; then laser=$(printf '%.2f s' "$(echo "$t1 - $t0" | bc)"); fi
 if grep -q "Failed to connect to simulated laser" "$arialog"; then laser=FAILED; fi
 moved=$(sed -n 's/.*moved \([0-9]*\) mm.*/\1 mm/p' "$simlog" | head -n1)
-warnings=$(grep -aicE "No packet handler wanted|too many readings|warning|could not|failed|incorrect number|no response" "$arialog")
+# Protocol trouble ARIA reports, and ARIA's "cycle took too long" timing warnings (which a
+# loaded machine causes on its own) counted apart.
+warnings=$(grep -aicE "No packet handler wanted|too many readings|could not|failed|incorrect number|no response|bad header|unrecognized" "$arialog")
+timing=$(grep -aicE "took [0-9]+ ms to run|sync tasks too long" "$arialog")
 elapsed=$(echo "$(date +%s.%N) - $start" | bc)
-printf '%s | %s | %s | %s | %s | %s | %.0f s\n' \
-  "$example" "$connected" "$laser" "${moved:-?}" "$warnings" "$status" "$elapsed"
+printf '%s | %s | %s | %s | %s | %s | %s | %.0f s\n' \
+  "$example" "$connected" "$laser" "${moved:-?}" "$warnings" "$timing" "$status" "$elapsed"

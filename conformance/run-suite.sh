@@ -35,22 +35,30 @@ suite=(
   "singleThreadLoopExample 20"
 )
 
-echo "| example | connected | laser connected after | robot moved | warning lines | exit status | ran |"
-echo "|---|---|---|---|---|---|---|"
+echo "| example | connected | laser connected after | robot moved | protocol warnings | timing warnings | exit status | ran |"
+echo "|---|---|---|---|---|---|---|---|"
 for entry in "${suite[@]}"; do
   read -r name seconds extra <<<"$entry"
   if [ ! -x "$aria/examples/$name" ]; then
-    echo "| $name | not built | | | | | |"
+    echo "| $name | not built | | | | | | |"
     continue
   fi
+  keys=""
+  case "$name" in
+    # Keyboard-driven examples get keys through a pseudo-terminal (demo has its own default).
+    gyroExample) keys='4:\033[A 0.5:\033[A 3:\033[D 3:\040 2:\033' ;;
+    gripperExample) keys='4:o 3:d 4:c 3:u 4:\033' ;;
+    actionGroupExample) keys='4:w 8:t 2:\033' ;;
+    lineFinderExample) keys='5:f 3:f 3:\033' ;;
+  esac
   if [ "$name" = gyroExample ]; then
-    line=$(ARGS_IN_ENV=1 "$here/run-example.sh" "$aria" "$name" "$port" "$seconds")
+    line=$(KEYS="$keys" ARGS_IN_ENV=1 "$here/run-example.sh" "$aria" "$name" "$port" "$seconds")
   elif [ "$name" = singleThreadLoopExample ]; then
     line=$(bwrap --dev-bind / / --unshare-net --die-with-parent \
       "$here/run-example.sh" "$aria" "$name" 8101 "$seconds")
   else
     # shellcheck disable=SC2086
-    line=$("$here/run-example.sh" "$aria" "$name" "$port" "$seconds" $extra)
+    line=$(KEYS="$keys" "$here/run-example.sh" "$aria" "$name" "$port" "$seconds" $extra)
   fi
   echo "| $line |"
   port=$((port + 1))
