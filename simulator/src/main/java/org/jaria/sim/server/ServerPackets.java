@@ -28,8 +28,13 @@ import org.jaria.sim.robot.SonarModel;
  */
 public final class ServerPackets {
 
-  /** Robot name in the SYNC2 reply and CONFIGpac. */
-  public static final String ROBOT_NAME = "JAriaSim";
+  /**
+   * Robot name in the SYNC2 reply and CONFIGpac: MobileSim's, because ARIA 2.9.1 treats a robot as
+   * a simulator (and asks it for the laser instead of opening a serial port) only by this name;
+   * AriaCoda also goes by {@link #SERIAL}. The simulator's own name is in SIMINFO ({@link
+   * #SIM_NAME}).
+   */
+  public static final String ROBOT_NAME = "MobileSim";
 
   /** Serial number in CONFIGpac; clients recognise a simulator by it. */
   public static final String SERIAL = "SIM";
