@@ -23,6 +23,8 @@ aria="$1"; example="$2"; port="$3"; seconds="$4"; shift 4
 out="${OUT:-$here/out}"
 sim="${SIM:-$root/jaria sim}"
 mkdir -p "$out"
+out="$(cd "$out" && pwd)"
+aria="$(cd "$aria" && pwd)"
 tag="$(basename "$aria")-$example"
 simlog="$out/$tag.sim.log"
 arialog="$out/$tag.aria.log"
@@ -43,6 +45,9 @@ if [ "${ARGS_IN_ENV:-}" = 1 ]; then
 else
   args=(-rh 127.0.0.1 -rrtp "$port" "$@")
 fi
+# Examples write files into their working directory (lineFinderExample: points, lines): keep
+# them with the logs.
+cd "$out" || exit 1
 # Every output line gets the wall time it arrived at (ARIA flushes each log line).
 stamp() { while IFS= read -r line; do printf '%s %s\n' "$(date +%s.%N)" "$line"; done; }
 start=$(date +%s.%N)
