@@ -203,7 +203,7 @@ class ActionScenarioTest {
   void bumpersStopAndBackOffFromAnObstacle(@TempDir Path params) throws IOException {
     // Bump rings are an option on a P3-DX: this robot's own parameter file says it has them.
     Files.writeString(
-        params.resolve("JAriaSim.p"),
+        params.resolve("MobileSim.p"),
         "Section Accessories the robot has\nFrontBumpers true\nRearBumpers true\n");
     try (SimWorld world = SimWorld.bundled("hall", SimOptions.builder().seed(4).build())) {
       SimRobot r = world.addRobot("p3dx-sh");

@@ -13,10 +13,10 @@ import org.jaria.robot.ArRobot;
 
 /**
  * The laser range finder of a simulator (MobileSim's or JAria's), read from the laser packets
- * (0x60) that come in the robot connection (ARIA's {@code ArSimulatedLaser}). On connecting it sets
- * the field of view and resolution and switches the laser on; each completed sweep (a sweep spans
- * several packets) fills the current buffer and is offered as a {@link LaserScan} for actions such
- * as {@code ArActionTriangleDriveTo}.
+ * (0x60, or 0x61 with reflectance) that come in the robot connection (ARIA's {@code
+ * ArSimulatedLaser}). On connecting it sets the field of view and resolution and switches the laser
+ * on; each completed sweep (a sweep spans several packets) fills the current buffer and is offered
+ * as a {@link LaserScan} for actions such as {@code ArActionTriangleDriveTo}.
  */
 public class ArSimulatedLaser extends ArRangeDevice implements LaserScanSource {
 
@@ -65,17 +65,26 @@ public class ArSimulatedLaser extends ArRangeDevice implements LaserScanSource {
     r.comInt(ArCommands.SIM_LRF_ENABLE, 1);
   }
 
+  /**
+   * Reads a laser packet: 0x60 (the robot's odometry pose, then the readings' ranges) or 0x61,
+   * which MobileSim and JAria's simulator send once ARIA's set-up asked for extended packets (no
+   * pose; a reflectance byte and two reserved bytes after each range).
+   */
   private boolean handle(ArRobotPacket p) {
-    if (p.getID() != PacketIds.SIM_LASER) {
+    boolean extended = p.getID() == PacketIds.SIM_LASER_EXTENDED;
+    if (p.getID() != PacketIds.SIM_LASER && !extended) {
       return false;
     }
-    p.bufToByte2(); // x, y, th of the robot's odometry: the robot's own pose is used instead
-    p.bufToByte2();
-    p.bufToByte2();
+    if (!extended) {
+      p.bufToByte2(); // x, y, th of the robot's odometry: the robot's own pose is used instead
+      p.bufToByte2();
+      p.bufToByte2();
+    }
     int total = p.bufToUByte2();
     int first = p.bufToUByte2();
     int n = p.bufToUByte();
-    if (!p.isValid() || !p.isNextGood(2 * n) || first + n > total || total > 4096) {
+    int perReading = extended ? 5 : 2;
+    if (!p.isValid() || !p.isNextGood(perReading * n) || first + n > total || total > 4096) {
       robot.getDropCounters().drop(DropReason.MALFORMED, "laser packet");
       return true;
     }
@@ -88,6 +97,9 @@ public class ArSimulatedLaser extends ArRangeDevice implements LaserScanSource {
     }
     for (int i = 0; i < n; i++) {
       sweep[first + i] = p.bufToUByte2();
+      if (extended) {
+        p.skip(3); // reflectance, two reserved bytes
+      }
     }
     received += n;
     if (first + n == total && received >= total) {

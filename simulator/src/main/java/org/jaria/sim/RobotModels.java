@@ -1,6 +1,9 @@
 package org.jaria.sim;
 
 import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import org.jaria.geom.ArPose;
 import org.jaria.params.ArRobotParams;
 import org.jaria.sim.robot.RobotModel;
 
@@ -13,10 +16,42 @@ import org.jaria.sim.robot.RobotModel;
  * <p>Values a parameter file leaves to the robot's FLASH (0) get simulator defaults: maximum speed
  * 1500 mm/s and 300 °/s (at most the model's tops), accelerations 300 mm/s² and 100 °/s², laser
  * range 32 m.
+ *
+ * <p>Which models carry a laser, and where it sits, follows MobileSim's model definitions rather
+ * than the parameter files (see {@link #mobileSimLaserMount}): a client that connects to the laser
+ * of a default {@code p3dx-sh} finds one, as it does with MobileSim.
  */
 public final class RobotModels {
 
+  /**
+   * The SICK LMS-200 of MobileSim's robot models: subtype → mount (x, y mm; th degrees) on the
+   * robot. Models MobileSim defines without a laser (amigo, amigo-sh) and models it does not define
+   * (p2dx) have none. {@code p3dx-sh-lms} is JAria's name for MobileSim's {@code p3dx-sh-lms200}.
+   */
+  private static final Map<String, ArPose> MOBILESIM_LASERS =
+      Map.of(
+          "p2at", new ArPose(160, 7, 0),
+          "p3at", new ArPose(125, 0, 0),
+          "p3at-sh", new ArPose(125, 0, 0),
+          "p3dx", new ArPose(0, 0, 0),
+          "p3dx-sh", new ArPose(0, 0, 0),
+          "p3dx-sh-lms", new ArPose(21, 0, 0),
+          "peoplebot-sh", new ArPose(21, 0, 0));
+
   private RobotModels() {}
+
+  /**
+   * Where MobileSim mounts the laser of {@code subtype} (case-insensitive), or empty if MobileSim's
+   * model of that robot carries none.
+   */
+  public static Optional<ArPose> mobileSimLaserMount(String subtype) {
+    return Optional.ofNullable(MOBILESIM_LASERS.get(subtype.trim().toLowerCase(Locale.ROOT)));
+  }
+
+  /** Whether {@code subtype} carries a laser by default (as in MobileSim). */
+  public static boolean carriesLaser(String subtype) {
+    return mobileSimLaserMount(subtype).isPresent();
+  }
 
   /**
    * The model of {@code subtype} (case-insensitive).
@@ -38,6 +73,7 @@ public final class RobotModels {
 
   /** A model from parameters (e.g. a user's own .p file layered on the defaults). */
   public static RobotModel fromParams(String subtype, ArRobotParams p) {
+    Optional<ArPose> mount = mobileSimLaserMount(subtype);
     double transTop = positive(p.getAbsoluteMaxVelocity(), 2200);
     double rotTop = positive(p.getAbsoluteMaxRotVelocity(), 500);
     RobotModel.Builder b =
@@ -68,9 +104,9 @@ public final class RobotModels {
             .gyroScaler(positive(p.getGyroScaler(), 1.626))
             .bumpers(Math.min(7, p.getNumFrontBumpers()), Math.min(7, p.getNumRearBumpers()))
             .laser(
-                p.getLaserX(),
-                p.getLaserY(),
-                p.getLaserTh(),
+                mount.isPresent() ? mount.get().x() : p.getLaserX(),
+                mount.isPresent() ? mount.get().y() : p.getLaserY(),
+                mount.isPresent() ? mount.get().th() : p.getLaserTh(),
                 positive(p.getLaserMaxRange(), 32000));
     for (int i = 0; i < Math.min(32, p.getNumSonar()); i++) {
       b.addSonar(p.getSonarX(i), p.getSonarY(i), p.getSonarTh(i));

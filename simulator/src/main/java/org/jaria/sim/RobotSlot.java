@@ -84,6 +84,7 @@ final class RobotSlot {
     if (o.legacyLaserCommands()) {
       body.laser().setAcceptsLegacyCommands(true);
     }
+    body.setSrisimCompat(o.srisimCompat());
     int base = options.basePort();
     int port = o.port() >= 0 ? o.port() : (base == 0 ? 0 : base + index);
     return new RobotSlot(world, body, o, port);

@@ -146,6 +146,16 @@ public final class SimRobot {
     }
   }
 
+  /** Where the robot started (and where SIM_RESET takes it back to). */
+  public ArPose getStartPose() {
+    world.lock.lock();
+    try {
+      return slot.body.getStartPose();
+    } finally {
+      world.lock.unlock();
+    }
+  }
+
   /** Moves the robot (its odometry does not notice, as with SIM_SET_POSE). */
   public void setTruePose(ArPose p) {
     world.lock.lock();

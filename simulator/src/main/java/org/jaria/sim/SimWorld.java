@@ -350,6 +350,21 @@ public final class SimWorld implements AutoCloseable {
   }
 
   /**
+   * Makes {@link #listen()} open the robots' ports on the interface with {@code address} only
+   * (MobileSim's {@code --bind-to-address}); null, the default, listens on every interface.
+   *
+   * @throws IllegalStateException if the world listens already
+   */
+  public void setBindAddress(java.net.InetAddress address) {
+    lock.lock();
+    try {
+      serving.setBindAddress(address);
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /**
    * Starts a thread ("jaria-sim-" and the {@link #getName() world's name}) that steps the world in
    * real time times {@code speedup} (≤ 0: as fast as it can). Idempotent while running.
    */

@@ -32,17 +32,23 @@ final class TcpServers implements AutoCloseable {
 
   private final Selector selector;
 
-  TcpServers() throws IOException {
+  /** The interface to listen on; null for every interface. */
+  private final java.net.InetAddress bindAddress;
+
+  TcpServers(java.net.InetAddress bindAddress) throws IOException {
+    this.bindAddress = bindAddress;
     selector = Selector.open();
   }
 
   /**
-   * Opens every robot's port; on failure closes those already opened.
+   * Opens every robot's port (on {@code bindAddress} only, unless it is null); on failure closes
+   * those already opened.
    *
    * @throws IOException naming the port that is taken
    */
-  static TcpServers openAll(List<RobotSlot> slots) throws IOException {
-    TcpServers servers = new TcpServers();
+  static TcpServers openAll(List<RobotSlot> slots, java.net.InetAddress bindAddress)
+      throws IOException {
+    TcpServers servers = new TcpServers(bindAddress);
     try {
       for (RobotSlot s : slots) {
         servers.bind(s, s.requestedPort);
@@ -136,7 +142,7 @@ final class TcpServers implements AutoCloseable {
     ServerSocketChannel ch = ServerSocketChannel.open();
     try {
       ch.setOption(StandardSocketOptions.SO_REUSEADDR, true);
-      ch.bind(new InetSocketAddress(port), 8);
+      ch.bind(new InetSocketAddress(bindAddress, port), 8);
       ch.configureBlocking(false);
       ch.register(selector, SelectionKey.OP_ACCEPT, slot);
     } catch (BindException e) {

@@ -15,6 +15,7 @@ final class WorldServing {
   private final ReentrantLock lock;
   private TcpServers servers;
   private RealTimeRunner runner;
+  private java.net.InetAddress bindAddress;
 
   WorldServing(ReentrantLock worldLock) {
     this.lock = worldLock;
@@ -23,8 +24,16 @@ final class WorldServing {
   /** Opens every robot's port, once (idempotent). */
   void listen(List<RobotSlot> slots) throws IOException {
     if (servers == null) {
-      servers = TcpServers.openAll(slots);
+      servers = TcpServers.openAll(slots, bindAddress);
     }
+  }
+
+  /** Listens on {@code address} only (null: every interface); before {@link #listen}. */
+  void setBindAddress(java.net.InetAddress address) {
+    if (servers != null) {
+      throw new IllegalStateException("the world listens already; set the address before listen()");
+    }
+    bindAddress = address;
   }
 
   /** Opens the port of a robot added while listening. */

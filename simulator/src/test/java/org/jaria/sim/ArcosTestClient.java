@@ -194,6 +194,11 @@ final class ArcosTestClient {
   }
 
   /** Packets with this ID received so far. */
+  /** Every packet received since the last {@link #clear()}. */
+  List<ArRobotPacket> all() {
+    return List.copyOf(received);
+  }
+
   List<ArRobotPacket> packets(int id) {
     return received.stream().filter(p -> p.getID() == id).toList();
   }

@@ -2,6 +2,7 @@ package org.jaria.sim;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -31,9 +32,9 @@ class CommandMeaningsTest {
   }
 
   @Test
-  void aRobotWithLaserAndGripperReads35To38AsArcosDoes() {
+  void withoutSrisimLaserCompatibility35To38MeanWhatTheyMeanOnArcos() {
     try (SimWorld w = SimWorld.empty(OPTS)) {
-      SimRobot r = w.addRobot(laserAndGripper());
+      SimRobot r = w.addRobot(laserAndGripper().withLegacyLaserCommands(false));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
       LaserModel laser = r.body().laser();
 
@@ -64,9 +65,9 @@ class CommandMeaningsTest {
   }
 
   @Test
-  void theOldLaserMeaningsOnlyWhenAskedFor() {
+  void aDefaultP3dxTakes35To38AsTheSrisimLaserCommandsAsMobileSimDoes() {
     try (SimWorld w = SimWorld.empty(OPTS)) {
-      SimRobot r = w.addRobot(laserAndGripper().withLegacyLaserCommands(true));
+      SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
       LaserModel laser = r.body().laser();
       c.comInt(ArCommands.GRIPPERVAL, -30); // start angle
@@ -90,13 +91,18 @@ class CommandMeaningsTest {
 
   @Test
   void legacyLaserCommandsNeedALaser() {
+    assertFalse(RobotOptions.of("amigo").laser(), "MobileSim's amigo has no laser");
+    assertFalse(RobotOptions.of("amigo").legacyLaserCommands());
     IllegalArgumentException e =
         assertThrows(
             IllegalArgumentException.class,
-            () -> RobotOptions.of("p3dx-sh").withLegacyLaserCommands(true));
+            () -> RobotOptions.of("amigo").withLegacyLaserCommands(true));
     assertTrue(e.getMessage().contains("withLaser"), e.getMessage());
-    RobotOptions both = laserAndGripper().withLegacyLaserCommands(true);
+    RobotOptions both = laserAndGripper();
+    assertTrue(both.legacyLaserCommands(), "on by default with a laser, as in MobileSim");
     assertTrue(!both.withLaser(false).legacyLaserCommands(), "removing the laser drops it too");
+    assertTrue(
+        RobotOptions.of("amigo").withLaser(true).legacyLaserCommands(), "adding one adds them");
   }
 
   @Test
@@ -120,28 +126,28 @@ class CommandMeaningsTest {
   }
 
   @Test
-  void getAuxIsAnsweredWithAnEmptySerAuxPacket() {
+  void getAuxOnAPortWithNothingAttachedIsAnsweredAtOnceWithNoBytes() {
     try (SimWorld w = SimWorld.empty(OPTS)) {
       SimRobot r = w.addRobot("p3dx-sh");
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      c.comInt(ArCommands.GETAUX, 10);
-      SerAuxPacket aux1 = SerAuxPacket.decode(c.awaitId(PacketIds.SERAUX1));
-      assertArrayEquals(new byte[0], aux1.data(), "nothing is attached to AUX1");
       c.comInt(ArCommands.GETAUX2, 5);
-      assertEquals(2, SerAuxPacket.decode(c.awaitId(PacketIds.SERAUX2)).port());
+      SerAuxPacket aux2 = SerAuxPacket.decode(c.awaitId(PacketIds.SERAUX2));
+      assertArrayEquals(new byte[0], aux2.data(), "nothing is attached to AUX2");
       c.comInt(ArCommands.GETAUX3, 200);
       assertEquals(3, SerAuxPacket.decode(c.awaitId(PacketIds.SERAUX3)).port());
       c.clear();
-      c.comInt(ArCommands.GETAUX, 0); // flush: no answer
+      c.comInt(ArCommands.GETAUX, 10); // AUX1 has the camera, which has said nothing yet
+      c.comInt(ArCommands.GETAUX2, 0); // flush: no answer
       w.advanceMillis(300);
-      assertTrue(c.packets(PacketIds.SERAUX1).isEmpty());
+      assertTrue(c.packets(PacketIds.SERAUX1).isEmpty(), "waits for the camera's bytes");
+      assertTrue(c.packets(PacketIds.SERAUX2).isEmpty());
     }
   }
 
   @Test
   void commandsNotCarriedOutAreRecordedWithTheReason() {
     try (SimWorld w = SimWorld.empty(OPTS)) {
-      SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withGripper(false));
+      SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withGripper(false).withLaser(false));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
       c.comInt(ArCommands.DROTATE, 10);
       c.com2Bytes(ArCommands.PTUPOS, 1, 2);

@@ -30,7 +30,8 @@ class DevicesTest {
   @Test
   void gripperOpensAndLowersWithTravelTimes() {
     try (SimWorld w = SimWorld.empty(OPTS)) {
-      SimRobot r = w.addRobot("p3dx-sh");
+      // GRIPREQUEST is 37, an SRISim laser command by default: ARCOS meanings for this one.
+      SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withLegacyLaserCommands(false));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
       assertEquals(GripState.PADDLES_CLOSED | GripState.LIFT_UP, r.getGripState(), "starts stored");
       c.comInt(ArCommands.GRIPPER, 8); // deploy: open paddles, lower lift
@@ -128,7 +129,8 @@ class DevicesTest {
   @Test
   void ioAndEncoderPacketsOnRequest() {
     try (SimWorld w = SimWorld.empty(OPTS)) {
-      SimRobot r = w.addRobot("p3dx-sh");
+      // ADSEL is 35, an SRISim laser command by default: ARCOS meanings for this one.
+      SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withLegacyLaserCommands(false));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
       r.setDigitalInputs(0xA5);
       r.setAnalog(2, 1000);
@@ -251,7 +253,7 @@ class DevicesTest {
       assertEquals(32, p.bufToUByte());
       int range = p.bufToUByte2();
       assertEquals((int) r.getModel().getLaserMaxRange(), range, "nothing to see");
-      assertEquals(0, p.bufToUByte(), "reflectance 0: no echo");
+      assertEquals(0, p.bufToUByte(), "reflectance 0, as MobileSim for anything not a reflector");
     }
   }
 }

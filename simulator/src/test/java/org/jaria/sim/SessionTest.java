@@ -48,7 +48,7 @@ class SessionTest {
       c.sendRaw(Hex.parse("FA FB 03 02 00 02"));
       w.step();
       ArRobotPacket expected = new ArRobotPacket(ArCommands.SYNC2);
-      expected.strToBuf("JAriaSim").strToBuf("Pioneer").strToBuf("p3at-sh").finalizePacket();
+      expected.strToBuf("MobileSim").strToBuf("Pioneer").strToBuf("p3at-sh").finalizePacket();
       assertArrayEquals(expected.toByteArray(), c.rawIn.toByteArray());
       c.rawIn.reset();
       w.advanceMillis(500);
@@ -119,7 +119,7 @@ class SessionTest {
       c.com(ArCommands.SYNC2);
       ArRobotPacket p = c.awaitId(2);
       p.resetRead();
-      assertEquals("JAriaSim", p.bufToString());
+      assertEquals("MobileSim", p.bufToString(), "MobileSim's name: ARIA 2.9.1 needs it");
     }
   }
 
@@ -167,7 +167,7 @@ class SessionTest {
       assertEquals("Pioneer", cfg.getType());
       assertEquals("p3dx-sh", cfg.getSubType());
       assertEquals("SIM", cfg.getSerialNumber());
-      assertEquals("JAriaSim", cfg.getName());
+      assertEquals("MobileSim", cfg.getName());
       assertEquals("S", cfg.getString(ArConfigPacket.Field.FIRMWARE_MAJOR));
       assertEquals(100, cfg.getSipCycleTime());
       assertEquals(2000, cfg.getWatchdog());

@@ -11,8 +11,9 @@ import org.jaria.sim.SimRobot;
 /**
  * A minimal in-process ARCOS client for benchmarks: connects to a simulated robot, opens it,
  * enables the motors and wanders (a new random speed and turn rate every two seconds), reading and
- * discarding everything the robot sends. Driven from the world's step listener, so it costs what a
- * real client's reading costs and nothing more.
+ * discarding everything the robot sends. With the laser on it first sends what ARIA's {@code
+ * ArSimulatedLaser} sends (field of view −90..90° at 1°, then "laser on, extended packets"). Driven
+ * from the world's step listener, so it costs what a real client's reading costs and nothing more.
  */
 final class ScriptedClient {
 
@@ -20,12 +21,14 @@ final class ScriptedClient {
   private final ArRobotPacket out = new ArRobotPacket();
   private final byte[] buf = new byte[8192];
   private final SplittableRandom rng;
+  private final boolean laser;
   private int tick;
   private long bytesRead;
 
-  ScriptedClient(SimRobot robot, long seed) {
+  ScriptedClient(SimRobot robot, long seed, boolean laser) {
     this.conn = robot.connectInMemory();
     this.rng = new SplittableRandom(seed);
+    this.laser = laser;
   }
 
   /** Called after every world tick. */
@@ -37,6 +40,14 @@ final class ScriptedClient {
       case 2 -> send(CommandCodec.com(out, 2));
       case 3 -> send(CommandCodec.comInt(out, 1, 1));
       case 4 -> send(CommandCodec.comInt(out, 4, 1));
+      case 6 -> {
+        if (laser) {
+          send(CommandCodec.comInt(out, 36, -90));
+          send(CommandCodec.comInt(out, 37, 90));
+          send(CommandCodec.comInt(out, 38, 100));
+          send(CommandCodec.comInt(out, 35, 2));
+        }
+      }
       default -> {
         if (tick % 200 == 5) {
           send(CommandCodec.comInt(out, 11, 200 + rng.nextInt(500)));

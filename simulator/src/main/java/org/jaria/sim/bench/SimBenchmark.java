@@ -2,9 +2,11 @@ package org.jaria.sim.bench;
 
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.SplittableRandom;
+import java.util.function.Supplier;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
 import org.jaria.sim.RobotOptions;
@@ -18,19 +20,24 @@ import org.jaria.sim.world.SegmentIndex;
  *
  * <ul>
  *   <li>real-time factor (simulated seconds per wall-clock second) of one P3-DX with 16 sonars
- *       driving around the bundled office map with a client connected (target ≥ 2000×);
+ *       driving around the bundled office map with a client connected, its laser off (target ≥
+ *       2000×) and on (the client switches it on as ARIA's {@code ArSimulatedLaser} does: 181
+ *       readings every SIP cycle);
  *   <li>the same for 10 and 100 robots in one open hall (target ≥ 20× at 100);
  *   <li>the cost of one sonar reading (a 7-ray cone) at 100, 1,000 and 10,000 map lines, next to a
  *       brute-force cast over every line, to show the spatial index keeps it nearly flat.
  * </ul>
  *
- * <p>Figures are measurements of this machine, printed, never asserted.
+ * <p>A shared machine makes single short runs scatter widely, so every real-time factor is the
+ * median of several runs, each of which keeps simulating until it has used a fixed amount of wall
+ * time, and the table prints the spread (lowest and highest run) next to it. Figures are
+ * measurements of this machine, printed, never asserted.
  */
 public final class SimBenchmark {
 
   private SimBenchmark() {}
 
-  /** Prints the table. */
+  /** Prints the table ({@code --quick}: a smoke run). */
   public static void main(String[] args) {
     boolean quick = args.length > 0 && args[0].equals("--quick");
     System.out.println(run(quick ? Settings.QUICK : Settings.FULL));
@@ -44,35 +51,58 @@ public final class SimBenchmark {
   /**
    * How long each measurement runs.
    *
-   * @param singleSeconds simulated seconds for the one-robot run
-   * @param multiSeconds simulated seconds for the 10- and 100-robot runs
+   * @param wallSecondsPerRun wall-clock time each run keeps simulating for (at least)
+   * @param runs runs per real-time factor (the median and the spread are taken over them; one more
+   *     run before them warms the JIT up and is not counted)
    * @param readings sonar readings cast per map size
    */
-  public record Settings(int singleSeconds, int multiSeconds, int readings) {
-    /** The real benchmark. */
-    public static final Settings FULL = new Settings(600, 60, 200_000);
+  public record Settings(double wallSecondsPerRun, int runs, int readings) {
+    /** The real benchmark: 7 runs of at least 1.5 s each per figure. */
+    public static final Settings FULL = new Settings(1.5, 7, 200_000);
 
-    /** A smoke run (tests): seconds instead of minutes. */
-    public static final Settings QUICK = new Settings(5, 2, 2_000);
+    /** A smoke run (tests): a fraction of a second per figure. */
+    public static final Settings QUICK = new Settings(0.02, 2, 2_000);
+  }
+
+  /** The median and the range of the runs of one figure. */
+  record Figure(double median, double min, double max) {
+    /** Half the range relative to the median, %. */
+    double spreadPercent() {
+      return median > 0 ? 50 * (max - min) / median : 0;
+    }
+
+    static Figure of(double[] runs) {
+      double[] r = runs.clone();
+      Arrays.sort(r);
+      int n = r.length;
+      double median = n % 2 == 1 ? r[n / 2] : (r[n / 2 - 1] + r[n / 2]) / 2;
+      return new Figure(median, r[0], r[n - 1]);
+    }
   }
 
   /** Runs the benchmark with {@code s} and returns the table. */
   public static String run(Settings s) {
     StringBuilder sb = new StringBuilder();
     sb.append("JAria simulator benchmark (headless, virtual time)\n\n");
-    sb.append(String.format(Locale.ROOT, "%-46s %14s%n", "world", "real-time factor"));
-    double one =
-        median(
-            () ->
-                realTimeFactor(
-                    SimWorld.bundled("office", SimOptions.defaults()),
-                    1,
-                    "p3dx-sh",
-                    s.singleSeconds()));
-    row(sb, "1 p3dx-sh, 16 sonars, office map", one, "target >= 2000x");
+    sb.append(
+        String.format(
+            Locale.ROOT, "%-46s %10s %17s %7s%n", "world", "median", "lowest..highest", "spread"));
+    row(
+        sb,
+        "1 p3dx-sh, 16 sonars, laser off, office map",
+        figure(s, () -> SimWorld.bundled("office", SimOptions.defaults()), 1, false),
+        "target >= 2000x");
+    row(
+        sb,
+        "1 p3dx-sh, 16 sonars, laser on, office map",
+        figure(s, () -> SimWorld.bundled("office", SimOptions.defaults()), 1, true),
+        "181 readings / 100 ms");
     for (int n : new int[] {10, 100}) {
-      double f = median(() -> realTimeFactor(hall(), n, "p3dx-sh", s.multiSeconds()));
-      row(sb, n + " p3dx-sh in one hall", f, n == 100 ? "target >= 20x" : "");
+      row(
+          sb,
+          n + " p3dx-sh in one hall",
+          figure(s, SimBenchmark::hall, n, false),
+          n == 100 ? "target >= 20x" : "");
     }
     sb.append(
         String.format(
@@ -85,28 +115,51 @@ public final class SimBenchmark {
     for (int lines : new int[] {100, 1_000, 10_000}) {
       rayRow(sb, lines, s.readings());
     }
-    sb.append("\n(median of 3 runs, each with a client per robot; one sonar reading = a 7-ray")
-        .append(" cone, 5 m range, random origins and directions)\n");
+    sb.append(
+            String.format(
+                Locale.ROOT,
+                "%n(real-time factor: median of %d runs of at least %.2f s wall each, after one"
+                    + " warm-up run; spread = half the range over the median; a client per"
+                    + " robot)%n",
+                s.runs(),
+                s.wallSecondsPerRun()))
+        .append("(one sonar reading = a 7-ray cone, 5 m range, random origins and directions)\n");
     return sb.toString();
   }
 
-  /** The median of three runs (the first also warms the JIT up). */
-  private static double median(java.util.function.DoubleSupplier run) {
-    double[] r = {run.getAsDouble(), run.getAsDouble(), run.getAsDouble()};
-    java.util.Arrays.sort(r);
-    return r[1];
+  private static Figure figure(Settings s, Supplier<SimWorld> world, int n, boolean laser) {
+    realTimeFactor(world.get(), n, "p3dx-sh", laser, s.wallSecondsPerRun()); // warm-up
+    double[] r = new double[s.runs()];
+    for (int i = 0; i < r.length; i++) {
+      r[i] = realTimeFactor(world.get(), n, "p3dx-sh", laser, s.wallSecondsPerRun());
+    }
+    return Figure.of(r);
   }
 
-  private static void row(StringBuilder sb, String what, double factor, String note) {
-    sb.append(String.format(Locale.ROOT, "%-46s %13.0fx  %s%n", what, factor, note));
+  private static void row(StringBuilder sb, String what, Figure f, String note) {
+    sb.append(
+        String.format(
+            Locale.ROOT,
+            "%-46s %9.0fx %8.0f..%-8.0f %6.0f%%  %s%n",
+            what,
+            f.median(),
+            f.min(),
+            f.max(),
+            f.spreadPercent(),
+            note));
   }
 
-  /** Simulated seconds per wall second with {@code n} wandering robots, each with a client. */
-  static double realTimeFactor(SimWorld world, int n, String model, int seconds) {
+  /**
+   * Simulated seconds per wall second with {@code n} wandering robots, each with a client (which
+   * switches the laser on if {@code laser}): after one simulated second of start-up, simulates in
+   * one-second steps until {@code wallSeconds} of wall time have passed.
+   */
+  static double realTimeFactor(
+      SimWorld world, int n, String model, boolean laser, double wallSeconds) {
     try (world) {
       List<ScriptedClient> clients = new ArrayList<>();
       for (int i = 0; i < n; i++) {
-        clients.add(new ScriptedClient(world.addRobot(RobotOptions.of(model)), i + 1));
+        clients.add(new ScriptedClient(world.addRobot(RobotOptions.of(model)), i + 1, laser));
       }
       world.addStepListener(
           () -> {
@@ -114,11 +167,17 @@ public final class SimBenchmark {
               c.onTick();
             }
           });
-      world.advance(Duration.ofSeconds(Math.max(1, seconds / 10)));
+      world.advance(Duration.ofSeconds(1));
+      long budget = Math.round(wallSeconds * 1e9);
       long t0 = System.nanoTime();
-      world.advance(Duration.ofSeconds(seconds));
-      long wall = System.nanoTime() - t0;
-      return seconds * 1e9 / Math.max(1, wall);
+      long simulated = 0;
+      long wall;
+      do {
+        world.advance(Duration.ofSeconds(1));
+        simulated++;
+        wall = System.nanoTime() - t0;
+      } while (wall < budget);
+      return simulated * 1e9 / Math.max(1, wall);
     }
   }
 

@@ -7,9 +7,11 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
+import java.util.SplittableRandom;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicInteger;
+import org.jaria.geom.ArPose;
 import org.jaria.sim.OdometryError;
 import org.jaria.sim.RobotOptions;
 import org.jaria.sim.ServerOptions;
@@ -17,7 +19,9 @@ import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Model.OptionSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
@@ -42,16 +46,20 @@ public final class SimCommand implements Callable<Integer> {
 
   @Spec private CommandSpec spec;
 
-  @Option(
-      names = "--map",
-      paramLabel = "FILE",
-      description = "ArMap .map file, or a bundled map name (office, hall); default: office")
-  String map = "office";
+  @Mixin MobileSimOptions mobileSim = new MobileSimOptions();
 
   @Option(
-      names = "--robot",
-      paramLabel = "MODEL",
-      description = "Robot model to add (repeatable): p3dx-sh, p3at-sh, p2dx, amigo, ...")
+      names = {"-m", "--map", "-map"},
+      paramLabel = "FILE",
+      description = "ArMap .map file, or a bundled map name (office, hall); default: office")
+  String map;
+
+  @Option(
+      names = {"-r", "--robot", "-robot"},
+      paramLabel = "MODEL[:NAME]",
+      description =
+          "Robot model to add, optionally with its name (repeatable): p3dx-sh, p3at-sh, p2dx,"
+              + " amigo, ...")
   List<String> robots = new ArrayList<>();
 
   @Option(
@@ -60,7 +68,9 @@ public final class SimCommand implements Callable<Integer> {
       description = "Number of robots (of the last --robot model, p3dx-sh by default)")
   Integer robotCount;
 
-  @Option(names = "--port", description = "TCP port of the first robot (default ${DEFAULT-VALUE})")
+  @Option(
+      names = {"-p", "--port"},
+      description = "TCP port of the first robot (default ${DEFAULT-VALUE})")
   int port = SimOptions.DEFAULT_PORT;
 
   @Option(names = "--speedup", paramLabel = "X", description = "Run X times faster than real time")
@@ -103,21 +113,43 @@ public final class SimCommand implements Callable<Integer> {
   @Option(names = "--no-specular", description = "Sonar sees walls at any angle")
   boolean noSpecular;
 
-  @Option(names = "--laser", description = "Give every robot a simulated laser (SIM_LRF_ENABLE)")
+  @Option(
+      names = "--laser",
+      description =
+          "Give every robot a simulated laser (the models MobileSim gives a laser, e.g. p3dx-sh,"
+              + " carry one anyway)")
   boolean laser;
 
+  @Option(names = "--no-laser", description = "No robot carries a laser")
+  boolean noLaser;
+
+  /** The old switch for what is now the default (SRISim laser commands on). */
   @Option(
       names = "--legacy-laser-commands",
-      description =
-          "With --laser: commands 35-38 set up the laser as in older simulators (old ARIA"
-              + " clients), not ADSEL/GRIPPERVAL/GRIPREQUEST/GYROCALCW")
+      hidden = true,
+      description = "Deprecated: the SRISim laser commands are on by default")
   boolean legacyLaserCommands;
+
+  @Option(
+      names = "--no-srisim-laser-compat",
+      description =
+          "Commands 35-38 keep their ARCOS meanings (ADSEL, GRIPPERVAL, GRIPREQUEST, GYROCALCW)"
+              + " instead of setting up the laser as SRISim's laser commands do (MobileSim's"
+              + " option; ARIA's ArSimulatedLaser then cannot start the laser)")
+  boolean noSrisimLaserCompat;
+
+  @Option(
+      names = "--srisim-compat",
+      description =
+          "Also accept SRISim's other old commands: 62 exits, 66/67 set the true x/y, 69 resets"
+              + " the robot (MobileSim's option; 62 is also ARCOS's BATTERYINFO)")
+  boolean srisimCompat;
 
   @Option(
       names = "--cwd",
       paramLabel = "DIR",
       description =
-          "folder client programs may load maps from (SIM_CTRL), from any machine; paths are"
+          "Folder client programs may load maps from (SIM_CTRL), from any machine; paths are"
               + " relative to it, and absolute paths, '..' outside it, links out of it and files"
               + " that are not regular files are refused (default: the working directory, for"
               + " clients on this machine only)")
@@ -127,12 +159,14 @@ public final class SimCommand implements Callable<Integer> {
       names = "--ignore-command",
       paramLabel = "N",
       description =
-          "ignore client command number N (repeatable), as MobileSim: e.g. 239 SIM_EXIT, 236"
+          "Ignore client command number N (repeatable), as MobileSim: e.g. 239 SIM_EXIT, 236"
               + " SIM_CTRL (map loading), 224 SIM_SET_POSE (teleport)")
   List<Integer> ignoreCommands = new ArrayList<>();
 
   private final CountDownLatch stop = new CountDownLatch(1);
   private final AtomicInteger exitCode = new AtomicInteger();
+  private final java.util.concurrent.atomic.AtomicBoolean summaryPrinted =
+      new java.util.concurrent.atomic.AtomicBoolean();
 
   /**
    * Builds the world the options describe (not listening, not running).
@@ -142,31 +176,69 @@ public final class SimCommand implements Callable<Integer> {
    */
   public SimWorld createWorld() throws IOException {
     SimOptions options = buildOptions();
-    SimWorld world;
-    Path file = Path.of(map);
+    if (!mobileSim.robotFactories.isEmpty()) {
+      throw new ParameterException(
+          spec.commandLine(),
+          "-R/--robot-factory (a new robot for each client) is not supported yet: give one -r"
+              + " MODEL per client instead");
+    }
+    SimWorld world = openMap(options);
+    try {
+      world.setBindAddress(mobileSim.bindAddress());
+      StartPlace start = mobileSim.startPlace();
+      SplittableRandom rng = new SplittableRandom(seed);
+      List<String> specs = robotModels();
+      for (int i = 0; i < specs.size(); i++) {
+        RobotOptions o = robotOptions(specs.get(i));
+        ArPose pose = start == null ? null : start.poseFor(i, world.getMap(), rng);
+        world.addRobot(pose == null ? o : o.withStartPose(pose));
+      }
+    } catch (IllegalArgumentException e) {
+      world.close();
+      throw new ParameterException(spec.commandLine(), e.getMessage());
+    }
+    return world;
+  }
+
+  private SimWorld openMap(SimOptions options) throws IOException {
+    if (map == null && mobileSim.noMap) {
+      return SimWorld.empty(options);
+    }
+    String m = map == null ? "office" : map;
+    Path file = Path.of(m);
     if (Files.exists(file)) {
-      world = SimWorld.load(file, options);
-    } else if (!map.contains("/") && !map.contains("\\") && !map.endsWith(".map")) {
+      return SimWorld.load(file, options);
+    } else if (!m.contains("/") && !m.contains("\\") && !m.endsWith(".map")) {
       try {
-        world = SimWorld.bundled(map, options);
+        return SimWorld.bundled(m, options);
       } catch (RuntimeException e) {
         throw new ParameterException(
             spec.commandLine(),
-            "no map file '" + map + "' and no bundled map of that name: " + e.getMessage());
-      }
-    } else {
-      throw new ParameterException(spec.commandLine(), "map file " + map + " does not exist");
-    }
-    for (String model : robotModels()) {
-      try {
-        world.addRobot(
-            RobotOptions.of(model).withLaser(laser).withLegacyLaserCommands(legacyLaserCommands));
-      } catch (IllegalArgumentException e) {
-        world.close();
-        throw new ParameterException(spec.commandLine(), e.getMessage());
+            "no map file '" + m + "' and no bundled map of that name: " + e.getMessage());
       }
     }
-    return world;
+    throw new ParameterException(spec.commandLine(), "map file " + m + " does not exist");
+  }
+
+  /**
+   * The options of one robot given as {@code MODEL} or {@code MODEL:NAME}, as the laser and SRISim
+   * options say.
+   */
+  RobotOptions robotOptions(String robotSpec) {
+    if (laser && noLaser) {
+      throw new ParameterException(spec.commandLine(), "choose either --laser or --no-laser");
+    }
+    int colon = robotSpec.indexOf(':');
+    String model = colon < 0 ? robotSpec : robotSpec.substring(0, colon);
+    RobotOptions o = RobotOptions.of(model);
+    if (colon >= 0 && colon + 1 < robotSpec.length()) {
+      o = o.withName(robotSpec.substring(colon + 1));
+    }
+    if (laser || noLaser) {
+      o = o.withLaser(laser);
+    }
+    return o.withLegacyLaserCommands(o.laser() && !noSrisimLaserCompat)
+        .withSrisimCompat(srisimCompat);
   }
 
   /** The robot models to add, in order. */
@@ -200,13 +272,15 @@ public final class SimCommand implements Callable<Integer> {
     }
     OdometryError err;
     try {
-      err = OdometryError.parse(odometryError);
+      err = OdometryError.parse(mobileSim.noError ? "none" : odometryError);
     } catch (IllegalArgumentException e) {
       throw new ParameterException(spec.commandLine(), e.getMessage());
     }
     try {
+      Integer tick = mobileSim.tickMillis();
       return SimOptions.builder()
           .server(serverOptions())
+          .tickMillis(tick != null ? tick : 10)
           .seed(seed)
           .basePort(port)
           .sipCycleMillis(sipCycle)
@@ -241,7 +315,14 @@ public final class SimCommand implements Callable<Integer> {
    * --unthrottled} (as fast as possible).
    */
   public double pacing() {
-    return isUnthrottled() ? 0 : (speedup != null ? speedup : 1);
+    if (isUnthrottled()) {
+      return 0;
+    }
+    if (speedup != null) {
+      return speedup;
+    }
+    Double updates = mobileSim.speedup();
+    return updates != null ? updates : 1;
   }
 
   /**
@@ -249,6 +330,21 @@ public final class SimCommand implements Callable<Integer> {
    * was used.
    */
   public void noteDeprecatedOptions(PrintWriter err) {
+    mobileSim.meaninglessNames.clear();
+    if (spec.commandLine().getParseResult() != null) {
+      // Every name of the meaningless options belongs to one option; find which were given.
+      OptionSpec meaningless = spec.findOption("--nogui");
+      java.util.Set<String> names = java.util.Set.of(meaningless.names());
+      for (String a : spec.commandLine().getParseResult().originalArgs()) {
+        if (names.contains(a)) {
+          mobileSim.meaninglessNames.add(a);
+        }
+      }
+    }
+    mobileSim.noteIgnored(err);
+    if (legacyLaserCommands) {
+      err.println("note: --legacy-laser-commands is the default now (SRISim laser commands)");
+    }
     if (lockstep) {
       err.println(
           "note: --lockstep is deprecated; it means --unthrottled (ticks as fast as possible), not"
@@ -257,9 +353,25 @@ public final class SimCommand implements Callable<Integer> {
     }
   }
 
+  /**
+   * Points the log at {@code --log-file} and sets its level from {@code --verbose} / {@code
+   * --less-verbose} (JAria's simple logger reads both when the first log line is made).
+   */
+  void configureLogging() {
+    if (mobileSim.logFile != null) {
+      System.setProperty("org.slf4j.simpleLogger.logFile", mobileSim.logFile.toString());
+    }
+    if (mobileSim.verbose) {
+      System.setProperty("org.slf4j.simpleLogger.defaultLogLevel", "debug");
+    } else if (mobileSim.lessVerbose) {
+      System.setProperty("org.slf4j.simpleLogger.defaultLogLevel", "error");
+    }
+  }
+
   @Override
   public Integer call() throws IOException {
     PrintWriter out = spec.commandLine().getOut();
+    configureLogging();
     noteDeprecatedOptions(spec.commandLine().getErr());
     SimWorld world = createWorld();
     // On Ctrl-C the JVM exits once the hooks end, so the hook itself closes the world.
@@ -267,6 +379,7 @@ public final class SimCommand implements Callable<Integer> {
         new Thread(
             () -> {
               stop.countDown();
+              summaryOnce(world, out);
               world.close();
             },
             "jaria-sim-shutdown");
@@ -284,7 +397,7 @@ public final class SimCommand implements Callable<Integer> {
       }
       out.printf(
           "map %s, %s; %s%n",
-          map,
+          map != null ? map : (mobileSim.noMap ? "none (empty world)" : "office"),
           isUnthrottled() ? "unthrottled" : "speed-up " + pacing(),
           seconds == null
               ? "Ctrl-C stops"
@@ -305,6 +418,7 @@ public final class SimCommand implements Callable<Integer> {
     } catch (InterruptedException e) {
       Thread.currentThread().interrupt();
     } finally {
+      summaryOnce(world, out);
       world.close();
       try {
         Runtime.getRuntime().removeShutdownHook(hook);
@@ -315,6 +429,41 @@ public final class SimCommand implements Callable<Integer> {
       out.flush();
     }
     return exitCode.get();
+  }
+
+  /**
+   * Prints the summary once, from whichever of the main thread and the Ctrl-C hook comes first;
+   * synchronized so that the hook returns (and the JVM halts) only once the lines are out.
+   */
+  private synchronized void summaryOnce(SimWorld world, PrintWriter out) {
+    if (summaryPrinted.compareAndSet(false, true)) {
+      printSummary(world, out);
+    }
+  }
+
+  /**
+   * One line per robot on stopping: where it started, where it is, how many clients opened it (so a
+   * script can tell whether a client drove it).
+   */
+  static void printSummary(SimWorld world, PrintWriter out) {
+    for (SimRobot r : world.getRobots()) {
+      ArPose a = r.getStartPose();
+      ArPose b = r.getTruePose();
+      out.printf(
+          java.util.Locale.ROOT,
+          "robot %s: started at %.0f,%.0f,%.0f; now at %.0f,%.0f,%.0f; moved %.0f mm; %d"
+              + " client session(s)%n",
+          r.getName(),
+          a.x(),
+          a.y(),
+          a.th(),
+          b.x(),
+          b.y(),
+          b.th(),
+          Math.hypot(b.x() - a.x(), b.y() - a.y()),
+          r.getSessionCount());
+    }
+    out.flush();
   }
 
   /** Asks a running {@link #call()} to stop (as Ctrl-C does). */

@@ -29,6 +29,7 @@ public final class LaserModel {
   private double originY;
   private double originTh;
   private boolean legacyCommands;
+  private final SrisimLaserSetup srisim = new SrisimLaserSetup();
 
   /** A laser mounted as {@code model} says. */
   public LaserModel(RobotModel model, RandomGenerator rng) {
@@ -49,11 +50,17 @@ public final class LaserModel {
     legacyCommands = on;
   }
 
-  /** Returns to the default field of view and resolution. */
+  /** Returns to the default field of view and resolution (a new session). */
   public void resetSettings() {
     startDeg = -90;
     endDeg = 90;
     incDeg = 1;
+    srisim.reset();
+  }
+
+  /** The session's SRISim set-up sequence (see {@link SrisimLaserSetup}). */
+  public SrisimLaserSetup srisimSetup() {
+    return srisim;
   }
 
   /** Sets the start of the field of view, degrees. */

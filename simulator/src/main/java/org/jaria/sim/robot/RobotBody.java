@@ -5,6 +5,8 @@ import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
 import org.jaria.sim.OdometryError;
 import org.jaria.sim.SonarOptions;
+import org.jaria.sim.serial.AuxPort;
+import org.jaria.sim.serial.Vcc4Camera;
 import org.jaria.sim.world.Contact;
 import org.jaria.sim.world.Footprint;
 import org.jaria.sim.world.WorldGeometry;
@@ -62,6 +64,13 @@ public final class RobotBody {
   private final GyroModel gyro;
   private final Gripper gripper;
   private final RobotIo io = new RobotIo();
+
+  /** AUX1..AUX3; a Canon VC-C4 on AUX1, where a Pioneer's PTZ camera is wired. */
+  private final AuxPort[] auxPorts = {
+    new AuxPort(1, new Vcc4Camera()), new AuxPort(2, null), new AuxPort(3, null)
+  };
+
+  private boolean srisimCompat;
 
   private ArPose startPose;
   private double x;
@@ -234,6 +243,9 @@ public final class RobotBody {
     sonar.resetSettings();
     sonar.setAllEnabled(true);
     io.resetSettings();
+    for (AuxPort p : auxPorts) {
+      p.request(0);
+    }
     bumpStall = 0;
     if (laser != null) {
       laser.resetSettings();
@@ -251,6 +263,27 @@ public final class RobotBody {
     if (gyro != null) {
       gyro.setStreaming(false);
     }
+  }
+
+  /** Auxiliary serial port {@code n} (1..3). */
+  public AuxPort auxPort(int n) {
+    if (n < 1 || n > auxPorts.length) {
+      throw new IllegalArgumentException("AUX port " + n + " not in 1..3");
+    }
+    return auxPorts[n - 1];
+  }
+
+  /**
+   * Whether the robot also takes SRISim's old commands (62 exit, 66/67 true x/y, 69 back to the
+   * start), as MobileSim's {@code --srisim-compat}.
+   */
+  public boolean isSrisimCompat() {
+    return srisimCompat;
+  }
+
+  /** Turns SRISim's old commands on or off (see {@link #isSrisimCompat()}). */
+  public void setSrisimCompat(boolean on) {
+    srisimCompat = on;
   }
 
   /** Moves the robot to a true pose; odometry is not touched (SIM_SET_POSE). */

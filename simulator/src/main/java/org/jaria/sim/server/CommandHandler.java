@@ -11,6 +11,8 @@ import org.jaria.protocol.packets.SerAuxPacket;
 import org.jaria.sim.robot.LaserModel;
 import org.jaria.sim.robot.MotionController;
 import org.jaria.sim.robot.RobotBody;
+import org.jaria.sim.robot.SrisimLaserSetup;
+import org.jaria.sim.serial.AuxPort;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -21,10 +23,17 @@ import org.slf4j.LoggerFactory;
  * simulator does not have (arm, pan-tilt unit), and commands for a device this robot does not
  * carry.
  *
- * <p>Commands 35–38 mean ADSEL, GRIPPERVAL, GRIPREQUEST and GYROCALCW, as on ARCOS. Older
- * simulators used the same numbers for setting up the laser (enable, start angle, end angle,
- * increment) and old ARIA clients still send them; a robot made with {@link
- * org.jaria.sim.RobotOptions#withLegacyLaserCommands} takes them that way instead.
+ * <p>Commands 35–38 mean ADSEL, GRIPPERVAL, GRIPREQUEST and GYROCALCW on ARCOS. The older SRISim
+ * simulator used the same numbers for setting up the laser (enable, start angle, end angle,
+ * increment) and ARIA's {@code ArSimulatedLaser} still sends them, so a robot with a laser takes
+ * them that way by default, as MobileSim does; {@link
+ * org.jaria.sim.RobotOptions#withLegacyLaserCommands} (MobileSim's {@code
+ * --no-srisim-laser-compat}) gives them back their ARCOS meanings. With {@link
+ * org.jaria.sim.RobotOptions#withSrisimCompat} 62, 66, 67 and 69 are SRISim's exit, set x, set y
+ * and reset too.
+ *
+ * <p>TTY2/TTY3/TTY4 write to the AUX ports and GETAUX/GETAUX2/GETAUX3 read from them (see {@link
+ * AuxPort}); AUX1 has a VC-C4 camera.
  */
 final class CommandHandler {
 
@@ -40,6 +49,9 @@ final class CommandHandler {
 
   void handle(ArRobotPacket p) {
     ArCommands command = ArCommands.fromNumber(p.getID());
+    if (body.isSrisimCompat() && srisimCommand(p)) {
+      return;
+    }
     if (command == null) {
       ignored(p.getID(), IgnoredCommand.Reason.UNKNOWN);
       return;
@@ -96,32 +108,25 @@ final class CommandHandler {
         }
       }
       case ADSEL -> {
-        if (legacyLaser != null) {
-          s.laserMode = clampMode(intArg(p, 0));
-        } else {
+        if (srisimLaserStep(legacyLaser, p) == SrisimLaserSetup.Step.ARCOS) {
           body.io().selectAnalog(intArg(p, 0));
         }
       }
       case GRIPPERVAL -> {
-        if (legacyLaser != null) {
-          legacyLaser.setStart(intArg(p, 0));
-        } else if (body.gripper() != null) {
+        srisimLaserStep(legacyLaser, p); // 36 is also the gripper's value: it gets it either way
+        if (body.gripper() != null) {
           body.gripper().setGripperVal(intArg(p, 0));
-        } else {
+        } else if (legacyLaser == null) {
           ignored(command, IgnoredCommand.Reason.NO_DEVICE);
         }
       }
       case GRIPREQUEST -> {
-        if (legacyLaser != null) {
-          legacyLaser.setEnd(intArg(p, 0));
-        } else {
+        if (srisimLaserStep(legacyLaser, p) == SrisimLaserSetup.Step.ARCOS) {
           s.gripMode = clampMode(intArg(p, 1)); // GRIPPERpac says "none" on a robot without
         }
       }
       case GYROCALCW -> {
-        if (legacyLaser != null) {
-          legacyLaser.setIncrement(intArg(p, 100) / 100.0);
-        } else {
+        if (srisimLaserStep(legacyLaser, p) == SrisimLaserSetup.Step.ARCOS) {
           s.gyroCw = intArg(p, 0) & 0xFFFF;
         }
       }
@@ -130,6 +135,9 @@ final class CommandHandler {
       case GETAUX -> auxRequest(1, intArg(p, 0));
       case GETAUX2 -> auxRequest(2, intArg(p, 0));
       case GETAUX3 -> auxRequest(3, intArg(p, 0));
+      case TTY2 -> auxWrite(1, p);
+      case TTY3 -> auxWrite(2, p);
+      case TTY4 -> auxWrite(3, p);
       case BUMPSTALL -> body.setBumpStall(intArg(p, 0));
       case TCM2 -> tcm2(intArg(p, 1));
       case SONARCYCLE -> body.sonar().setCycle(intArg(p, 40));
@@ -165,13 +173,10 @@ final class CommandHandler {
             "{}: client sent {} (controller reset); closing the session", body.name(), command);
         s.close();
       }
-      // Accepted with nothing to simulate: nothing is attached to the AUX ports, a TCP link has no
-      // baud rate, and the LCD, charger, PID gains, joystick drive, motor stall settings and
-      // battery information have no effect on the simulated robot.
-      case TTY2,
-          TTY3,
-          TTY4,
-          JOYDRIVE,
+      // Accepted with nothing to simulate: a TCP link has no baud rate, and the LCD, charger, PID
+      // gains, joystick drive, motor stall settings and battery information have no effect on the
+      // simulated robot.
+      case JOYDRIVE,
           HOSTBAUD,
           AUX1BAUD,
           AUX2BAUD,
@@ -213,6 +218,25 @@ final class CommandHandler {
     s.host.ignoredCommand(command, reason, body.name());
   }
 
+  /**
+   * Commands 35–38 on a robot that takes SRISim's laser commands: a step of the laser set-up
+   * sequence (applied all at once when it completes with 35), or an ARCOS command.
+   */
+  private SrisimLaserSetup.Step srisimLaserStep(LaserModel laser, ArRobotPacket p) {
+    if (laser == null) {
+      return SrisimLaserSetup.Step.ARCOS;
+    }
+    SrisimLaserSetup setup = laser.srisimSetup();
+    SrisimLaserSetup.Step step = setup.accept(p.getID(), intArg(p, 0));
+    if (step == SrisimLaserSetup.Step.APPLY) {
+      laser.setStart(setup.start());
+      laser.setEnd(setup.end());
+      laser.setIncrement(setup.increment() / 100.0);
+      s.laserMode = clampMode(intArg(p, 0));
+    }
+    return step;
+  }
+
   /** SIM_LRF_SET_FOV_START/END and SIM_LRF_SET_RES: the laser's field of view and resolution. */
   private void laserSetting(ArRobotPacket p, ArCommands command) {
     LaserModel laser = body.laser();
@@ -228,14 +252,51 @@ final class CommandHandler {
   }
 
   /**
-   * GETAUX, GETAUX2, GETAUX3: the robot answers with the bytes its AUX port has received, up to
-   * {@code n}; nothing is attached to the simulated ports, so the answer is a SERAUXpac with no
-   * bytes. 0 flushes the (empty) buffer and gets no answer.
+   * GETAUX, GETAUX2, GETAUX3: asks the port for {@code n} bytes (0 flushes); the SERAUXpac goes out
+   * as soon as the port has them (at once, with no bytes, if nothing is attached).
    */
   private void auxRequest(int port, int n) {
-    if (n > 0) {
-      s.send(new SerAuxPacket(port, new byte[0]).encode(s.out()));
+    AuxPort aux = body.auxPort(port);
+    aux.request(n);
+    sendAuxAnswer(aux);
+  }
+
+  /** TTY2, TTY3, TTY4: the argument's bytes go out of the port to its device. */
+  private void auxWrite(int port, ArRobotPacket p) {
+    AuxPort aux = body.auxPort(port);
+    aux.write(CommandCodec.readDataArg(p));
+    sendAuxAnswer(aux);
+  }
+
+  private void sendAuxAnswer(AuxPort aux) {
+    byte[] answer = aux.takeAnswer();
+    if (answer != null) {
+      s.send(new SerAuxPacket(aux.number(), answer).encode(s.out()));
     }
+  }
+
+  /**
+   * SRISim's old commands (MobileSim's {@code --srisim-compat}): 62 ends the simulator, 66 and 67
+   * set the true x and y (mm), 69 returns the robot to its start. Returns whether {@code p} was
+   * one.
+   */
+  private boolean srisimCommand(ArRobotPacket p) {
+    switch (p.getID()) {
+      case 62 -> s.host.exitRequested(0, body.name());
+      case 66 -> {
+        ArPose t = body.getTruePose();
+        body.setTruePose(new ArPose(intArg(p, 0), t.y(), t.th()));
+      }
+      case 67 -> {
+        ArPose t = body.getTruePose();
+        body.setTruePose(new ArPose(t.x(), intArg(p, 0), t.th()));
+      }
+      case 69 -> body.resetToStart();
+      default -> {
+        return false;
+      }
+    }
+    return true;
   }
 
   private static int clampMode(int v) {

@@ -28,8 +28,13 @@ import org.jaria.sim.robot.SonarModel;
  */
 public final class ServerPackets {
 
-  /** Robot name in the SYNC2 reply and CONFIGpac. */
-  public static final String ROBOT_NAME = "JAriaSim";
+  /**
+   * Robot name in the SYNC2 reply and CONFIGpac: MobileSim's, because ARIA 2.9.1 treats a robot as
+   * a simulator (and asks it for the laser instead of opening a serial port) only by this name;
+   * AriaCoda also goes by {@link #SERIAL}. The simulator's own name is in SIMINFO ({@link
+   * #SIM_NAME}).
+   */
+  public static final String ROBOT_NAME = "MobileSim";
 
   /** Serial number in CONFIGpac; clients recognise a simulator by it. */
   public static final String SERIAL = "SIM";
@@ -291,9 +296,13 @@ public final class ServerPackets {
   }
 
   /**
-   * One laser packet of the last scan, readings {@code first} .. first+31: 0x60 carries the
-   * odometry pose (mm, mm, degrees as int16) first; 0x61 carries per reading a reflectance byte and
-   * two reserved bytes, and ends with the laser index and a flags byte.
+   * One laser packet of the last scan, readings {@code first} .. first+31, laid out as MobileSim
+   * sends them and ARIA's {@code ArSimulatedLaser} reads them: 0x60 starts with the odometry pose
+   * (mm, mm, degrees as int16); then the scan's reading count, the index of this packet's first
+   * reading and the number of readings in it; then per reading the range (mm, uint16) and, in 0x61
+   * only, a reflectance byte and two reserved bytes; 0x61 ends with the laser's index and a flags
+   * byte. Reflectance is 0 for everything the simulated laser sees (MobileSim's value for an
+   * ordinary wall; JAria's maps have no reflectors).
    */
   public static ArRobotPacket laser(
       ArRobotPacket p, LaserModel l, RobotBody b, int first, boolean extended) {
@@ -310,7 +319,7 @@ public final class ServerPackets {
     for (int k = first; k < first + n; k++) {
       p.uByte2ToBuf(Math.min(65535, l.range(k)));
       if (extended) {
-        p.uByteToBuf(l.echo(k) ? 1 : 0).uByteToBuf(0).uByteToBuf(0);
+        p.uByteToBuf(0).uByteToBuf(0).uByteToBuf(0);
       }
     }
     if (extended) {

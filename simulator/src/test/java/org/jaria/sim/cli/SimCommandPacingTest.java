@@ -2,6 +2,7 @@ package org.jaria.sim.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -86,9 +87,9 @@ class SimCommandPacingTest {
   }
 
   @Test
-  void legacyLaserCommandsOptionReachesTheRobots() throws IOException {
+  void srisimLaserCommandsReachADefaultP3dx() throws IOException {
     SimCommand cmd = new SimCommand();
-    new CommandLine(cmd).parseArgs("--port", "0", "--laser", "--legacy-laser-commands");
+    new CommandLine(cmd).parseArgs("--port", "0");
     try (SimWorld w = cmd.createWorld()) {
       ArDeviceConnection c = w.getRobot(0).connectInMemory();
       List<ArRobotPacket> got = new ArrayList<>();
@@ -106,6 +107,7 @@ class SimCommandPacingTest {
           c,
           CommandCodec.comInt(
               p, ArCommands.GRIPREQUEST.getNumber(), 30)); // read as the end angle, not a request
+      send(c, CommandCodec.comInt(p, ArCommands.GYROCALCW.getNumber(), 100)); // 1 degree
       send(c, CommandCodec.comInt(p, ArCommands.ADSEL.getNumber(), 1)); // read as "laser on"
       w.advanceMillis(200);
       byte[] buf = new byte[8192];
@@ -120,12 +122,16 @@ class SimCommandPacingTest {
       assertEquals(61, scan.bufToUByte2(), "-30..30 every degree: the option reached the robot");
       assertTrue(got.stream().noneMatch(q -> q.getID() == PacketIds.GRIPPER));
     }
-    StringWriter e = new StringWriter();
-    int code =
-        new CommandLine(new SimCommand())
-            .setErr(new PrintWriter(e, true))
-            .execute("--port", "0", "--legacy-laser-commands", "--seconds", "1");
-    assertTrue(code != 0, "legacy laser commands without a laser");
-    assertTrue(e.toString().contains("withLaser"), e.toString());
+    SimCommand off = new SimCommand();
+    new CommandLine(off).parseArgs("--port", "0", "--no-srisim-laser-compat", "--srisim-compat");
+    assertTrue(off.robotOptions("p3dx-sh").laser(), "still a laser");
+    assertFalse(off.robotOptions("p3dx-sh").legacyLaserCommands(), "35-38 as on ARCOS");
+    assertTrue(off.robotOptions("p3dx-sh").srisimCompat());
+    SimCommand none = new SimCommand();
+    new CommandLine(none).parseArgs("--port", "0", "--no-laser");
+    try (SimWorld w = none.createWorld()) {
+      assertNull(w.getRobot(0).getLaserScan(), "no laser, no scan");
+      assertFalse(none.robotOptions("p3dx-sh").laser());
+    }
   }
 }

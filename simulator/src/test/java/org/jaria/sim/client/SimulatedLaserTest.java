@@ -41,4 +41,30 @@ class SimulatedLaserTest {
       }
     }
   }
+
+  /**
+   * After ARIA's own set-up sequence (as ARIA's ArSimulatedLaser sends it) the simulator streams
+   * extended 0x61 packets; JAria's client reads those too.
+   */
+  @Test
+  void extendedPacketsAfterAriasSetUpAreReadToo() {
+    try (SimWorld world = SimWorld.bundled("hall", SimOptions.builder().seed(3).build())) {
+      SimRobot r = world.addRobot("p3dx-sh");
+      try (SimulatedRobot sim = SimulatedRobot.connect(world, r)) {
+        ArSimulatedLaser laser = new ArSimulatedLaser();
+        sim.robot().addRangeDevice(laser);
+        sim.runMillis(500);
+        sim.robot().comInt(36, -90);
+        sim.robot().comInt(37, 90);
+        sim.robot().comInt(38, 100);
+        sim.robot().comInt(35, 2);
+        sim.runMillis(300);
+        long before = laser.getSweepCount();
+        sim.runMillis(1000);
+        assertTrue(laser.getSweepCount() >= before + 8, "sweeps go on: " + laser.getSweepCount());
+        assertEquals(0, sim.robot().getDropCounters().total(), "nothing dropped as malformed");
+        assertEquals(181, laser.getLaserScan().size());
+      }
+    }
+  }
 }

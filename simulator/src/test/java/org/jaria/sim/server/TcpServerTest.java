@@ -74,7 +74,7 @@ class TcpServerTest {
         c.writeRaw(Hex.parse("FA FB 03 02 00 02"));
         byte[] sync2 = c.readFrame();
         ArRobotPacket expected = new ArRobotPacket(ArCommands.SYNC2);
-        expected.strToBuf("JAriaSim").strToBuf("Pioneer").strToBuf("p3dx-sh").finalizePacket();
+        expected.strToBuf("MobileSim").strToBuf("Pioneer").strToBuf("p3dx-sh").finalizePacket();
         assertArrayEquals(expected.toByteArray(), sync2);
 
         c.comInt(ArCommands.OPEN, 1);
@@ -108,7 +108,7 @@ class TcpServerTest {
         c.comInt(ArCommands.RVEL, 0);
         await(w, () -> Math.abs(robot.getVel()) < 1e-9 && Math.abs(robot.getRotVel()) < 1e-9);
         c.connectLikeAria();
-        assertEquals("JAriaSim", c.name);
+        assertEquals("MobileSim", c.name);
         assertEquals("Pioneer", c.type);
         assertEquals("p3dx-sh", c.subtype);
         c.readUntil(PacketIds.SIP_STOPPED);

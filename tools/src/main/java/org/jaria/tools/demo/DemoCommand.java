@@ -142,8 +142,7 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
       }
     }
 
-    private int runWander(
-        EmbeddedSimulator sim, DemoTicker ticker, DemoLaser l, PrintWriter out) {
+    private int runWander(EmbeddedSimulator sim, DemoTicker ticker, DemoLaser l, PrintWriter out) {
       int status =
           GotoActionExample.run(sim.connectArgs(), robot -> watch(ticker, robot, sim, l, out));
       ArPose truth = sim.robot.getTruePose();

@@ -43,7 +43,7 @@ public final class LaserCommand implements Callable<Integer> {
   @Option(
       names = {"-t", "--type"},
       defaultValue = "lms2xx",
-      description = "lms2xx (also sick) or urg (default: ${DEFAULT-VALUE}).")
+      description = "Laser type: lms2xx (also sick) or urg (default: ${DEFAULT-VALUE}).")
   String type;
 
   @Option(

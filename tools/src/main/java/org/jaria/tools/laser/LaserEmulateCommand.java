@@ -44,7 +44,7 @@ final class LaserEmulateCommand implements Callable<Integer> {
   @Option(
       names = {"-t", "--type"},
       defaultValue = "lms2xx",
-      description = "lms2xx or urg (default: ${DEFAULT-VALUE}).")
+      description = "Laser type: lms2xx or urg (default: ${DEFAULT-VALUE}).")
   String type;
 
   @Option(

@@ -136,7 +136,9 @@ public final class SimViewCommand implements Callable<Integer>, AppCommand {
     }
     try {
       for (String m : models) {
-        world.addRobot(RobotOptions.of(m).withLaser(laser));
+        // The models MobileSim gives a laser carry one anyway; --laser adds one to the others.
+        RobotOptions o = RobotOptions.of(m);
+        world.addRobot(laser ? o.withLaser(true) : o);
       }
     } catch (RuntimeException e) {
       world.close();
