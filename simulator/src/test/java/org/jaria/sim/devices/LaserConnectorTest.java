@@ -16,6 +16,7 @@ import org.jaria.laser.ArLMS2xx;
 import org.jaria.laser.ArLaser;
 import org.jaria.laser.ArLaserConnector;
 import org.jaria.robot.ArRobot;
+import org.jaria.sim.RobotModels;
 import org.jaria.sim.RobotOptions;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
@@ -65,8 +66,14 @@ class LaserConnectorTest {
           // The emulator counts a scan once its write returned, so the last one received may not be
           // counted yet.
           assertTrue(lms.getScansSent() >= 1);
-          // From the robot's centre: the wall ahead at 3 m, the wall on the left at 2 m.
-          assertEquals(3000, laser.currentReadingPolar(-2, 2), 2.0);
+          // From the robot's centre: the wall ahead at 3 m, the wall on the left at 2 m. The
+          // simulator mounts the laser where MobileSim does (the turning centre), the client
+          // believes p3dx-sh.p's LaserX, so readings ahead are off by the difference, as they are
+          // for an ARIA program on MobileSim.
+          double mountError =
+              robot.getRobotParams().getLaserX()
+                  - RobotModels.mobileSimLaserMount("p3dx-sh").orElseThrow().x();
+          assertEquals(3000 + mountError, laser.currentReadingPolar(-2, 2), 2.0);
           assertEquals(2000, laser.currentReadingPolar(85, 95), 2.0);
           assertEquals(2000, laser.currentReadingBox(0, 1500, 1000, 2500), 2.0);
         } finally {
