@@ -192,7 +192,10 @@ public final class MotionController {
     rotVelMaxNeg = m;
   }
 
-  /** SETRVDIR: maximum rotational speed counter-clockwise (w > 0) or clockwise (w < 0). */
+  /**
+   * SETRVDIR: maximum rotational speed counter-clockwise ({@code w > 0}) or clockwise ({@code w <
+   * 0}).
+   */
   public void setRotVelMaxDir(double w) {
     double m = ArMath.clamp(Math.abs(w), 0, model.getRotVelTop());
     if (w >= 0) {
@@ -202,7 +205,9 @@ public final class MotionController {
     }
   }
 
-  /** SETA: acceleration (a > 0) or deceleration (a < 0), mm/s², limited by the top. */
+  /**
+   * SETA: acceleration ({@code a > 0}) or deceleration ({@code a < 0}), mm/s², limited by the top.
+   */
   public void setTransAccel(double a) {
     double m = ArMath.clamp(Math.abs(a), 0, model.getTransAccTop());
     if (a > 0) {
@@ -212,7 +217,7 @@ public final class MotionController {
     }
   }
 
-  /** SETRA: rotational acceleration (a > 0) or deceleration (a < 0), deg/s². */
+  /** SETRA: rotational acceleration ({@code a > 0}) or deceleration ({@code a < 0}), deg/s². */
   public void setRotAccel(double a) {
     double m = ArMath.clamp(Math.abs(a), 0, model.getRotAccTop());
     if (a > 0) {

@@ -4,8 +4,8 @@ import java.util.Arrays;
 
 /**
  * The physical description of one kind of simulated robot: its footprint, sonar ring, speed limits,
- * conversion factors and laser mount. Built from ARIA robot parameters by {@link RobotModels}.
- * Immutable.
+ * conversion factors and laser mount. Built from ARIA robot parameters by {@link
+ * org.jaria.sim.RobotModels}. Immutable.
  */
 public final class RobotModel {
 
