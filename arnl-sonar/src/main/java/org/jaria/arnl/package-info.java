@@ -1,6 +1,7 @@
 /**
  * Sonar localization and path planning, a SonARNL analogue (thesis §5.2), with the thesis's
- * path-following application (§6.1) in {@link org.jaria.arnl.demo.NavigateDemo}.
+ * path-following application (§6.1) in {@code org.jaria.arnl.demo.NavigateDemo} (module {@code
+ * tools}, run by {@code jaria demo navigate}).
  *
  * <ul>
  *   <li>{@link org.jaria.arnl.ArSonarLocalizationTask}: Monte Carlo localization on an ArMap line

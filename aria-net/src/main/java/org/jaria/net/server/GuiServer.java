@@ -47,8 +47,9 @@ import org.jaria.robot.ArRobot;
  * }
  * }</pre>
  *
- * <p>{@code jaria demo guiserver} runs exactly this; {@link org.jaria.net.sim.SimulatedGuiServer}
- * does it on an embedded simulator. The protocol is described in {@code aria-net/PROTOCOL.md}.
+ * <p>{@code jaria demo guiserver} runs exactly this; {@code org.jaria.net.sim.SimulatedGuiServer}
+ * (module {@code tools}) does it on an embedded simulator. The protocol is described in {@code
+ * aria-net/PROTOCOL.md}.
  */
 public final class GuiServer implements AutoCloseable {
 
