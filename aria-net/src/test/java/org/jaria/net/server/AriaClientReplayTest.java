@@ -263,4 +263,40 @@ class AriaClientReplayTest {
       assertEquals(120, then.bufToUByte2());
     }
   }
+
+  @Test
+  void configClientReadsTheConfigurationBySections() throws Exception {
+    byte[] sent = PeerRecording.bytes("configClient.c2s.bin");
+    List<ArNetPacket> asSent = PeerRecording.packets(sent);
+    // ARIA's configClient: introduction, UDP confirmation, then getConfigBySections (its only
+    // choice here: this server offers none of the later versions).
+    int asked = asSent.get(asSent.size() - 1).getCommand();
+    try (GuiRig rig = GuiRig.arnl();
+        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
+      ArServerBase s = rig.gui.getServer();
+      assertEquals(asked, s.findCommandFromName("getConfigBySections"), "the number it requested");
+      aria.readIntroduction();
+      aria.send(sent);
+      java.io.ByteArrayOutputStream joined = new java.io.ByteArrayOutputStream();
+      int packets = 0;
+      while (true) {
+        ArNetPacket p = aria.readUntil(asked);
+        if (p.getDataLength() == 0) {
+          break; // RETURN_UNTIL_EMPTY: the empty packet ends the answer
+        }
+        packets++;
+        joined.writeBytes(p.remainingBytes());
+      }
+      byte[] all = joined.toByteArray();
+      List<org.jaria.net.data.ConfigSection> sections =
+          org.jaria.net.data.ConfigLayout.readAll(ArNetPacket.wrap(asked, all, 0, all.length));
+      assertEquals(sections.size(), packets, "one packet per section");
+      org.jaria.net.data.ConfigSection loc =
+          sections.stream().filter(x -> x.name().equals("Localization")).findFirst().orElseThrow();
+      assertTrue(
+          loc.params().stream()
+              .anyMatch(q -> q.name().equals("NumSamples") && q.min().equals("10")),
+          loc.params().toString());
+    }
+  }
 }

@@ -11,6 +11,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import org.jaria.geom.ArPose;
 import org.jaria.net.Eventually;
 import org.jaria.net.Futures;
+import org.jaria.net.data.ConfigLayout;
 import org.jaria.net.data.ConfigSection;
 import org.jaria.net.data.LocalizationSnapshot;
 import org.jaria.net.data.Particles;
@@ -113,19 +114,15 @@ class GuiServerArnlTest {
   @Test
   void theLocalizationsParametersCanBeEdited() throws Exception {
     try (GuiRig rig = GuiRig.arnl()) {
-      List<ConfigSection> sections = ConfigSection.readAll(rig.call("getConfigBySections"));
+      List<ConfigSection> sections = ConfigLayout.readAll(rig.call("getConfigBySections"));
       List<String> names = sections.stream().map(ConfigSection::name).toList();
       assertTrue(names.contains("Localization"), names.toString());
       assertEquals(
-          List.of(),
-          GuiRig.strings(
-              rig.call("setConfig", List.of(List.of("Localization", "NumSamples", "500")))));
+          "", rig.call("setConfig", "Section", "Localization", "NumSamples", "500").bufToStr());
       assertEquals(500, rig.nav.getLocalizationTask().getParams().getNumSamples());
-      List<String> refused =
-          GuiRig.strings(
-              rig.call("setConfig", List.of(List.of("Localization", "NumSamples", "5"))));
-      assertEquals(1, refused.size());
-      assertTrue(refused.get(0).contains("NumSamples"), refused.get(0));
+      String refused =
+          rig.call("setConfig", "Section", "Localization", "NumSamples", "5").bufToStr();
+      assertTrue(refused.contains("NumSamples"), refused);
     }
   }
 }

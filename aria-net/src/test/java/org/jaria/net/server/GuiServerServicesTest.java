@@ -19,6 +19,7 @@ import org.jaria.net.Futures;
 import org.jaria.net.client.ArClientException;
 import org.jaria.net.client.ArNetPacketArgs;
 import org.jaria.net.data.CommandInfo;
+import org.jaria.net.data.ConfigLayout;
 import org.jaria.net.data.ConfigParam;
 import org.jaria.net.data.ConfigSection;
 import org.jaria.net.data.InfoStrings;
@@ -208,24 +209,30 @@ class GuiServerServicesTest {
     config.addParam(speed, "Teleop");
     config.addParam(ArConfigArg.ofString("Name", "r1", "the robot's name"), "Teleop");
     try (GuiRig rig = GuiRig.plain(b -> b.config(new ArConfigRegistry(config)))) {
-      List<ConfigSection> sections = ConfigSection.readAll(rig.call("getConfigBySections"));
+      List<ConfigSection> sections = ConfigLayout.readAll(rig.call("getConfigBySections"));
       assertEquals(1, sections.size());
       ConfigParam p = sections.get(0).params().get(0);
-      assertEquals(new ConfigParam("MaxSpeed", "DOUBLE", "500", "500", "0.0", "2000.0", "mm/s"), p);
-      ArNetPacket ok = rig.call("setConfig", List.of(List.of("Teleop", "MaxSpeed", "750")));
-      assertEquals(List.of(), GuiRig.strings(ok));
+      // ArNetworking's first layout carries no default value.
+      assertEquals(new ConfigParam("MaxSpeed", "DOUBLE", "500.0", "", "0.0", "2000.0", "mm/s"), p);
+      ArNetPacket ok = rig.call("setConfig", "Section", "Teleop", "MaxSpeed", "750");
+      assertEquals("", ok.bufToStr(), "empty: all set");
       assertEquals(750, speed.getDouble());
       ArNetPacket refused =
           rig.call(
               "setConfig",
-              List.of(
-                  List.of("Teleop", "MaxSpeed", "5000"),
-                  List.of("Teleop", "Name", "r2"),
-                  List.of("Nope", "X", "1")));
-      List<String> errors = GuiRig.strings(refused);
-      assertEquals(2, errors.size(), errors.toString());
-      assertTrue(errors.get(0).contains("MaxSpeed"), errors.get(0));
-      assertEquals("no configuration section 'Nope'", errors.get(1));
+              "Section",
+              "Teleop",
+              "MaxSpeed",
+              "5000",
+              "Name",
+              "r2",
+              "Section",
+              "Nope",
+              "X",
+              "1");
+      String first = refused.bufToStr();
+      assertTrue(first.contains("MaxSpeed"), "only the first refusal is told: " + first);
+      assertFalse(refused.hasMore());
       assertEquals("r2", config.findParam("Name").orElseThrow().getString(), "the good one is set");
       assertEquals(750, speed.getDouble(), "the bad one is not");
     }

@@ -22,8 +22,9 @@ import org.jaria.net.data.ConfigSection;
 
 /**
  * The robot program's configuration (ArConfig) as a table per section: edit values in place, then
- * Apply sends the changed ones with {@code setConfig}; the server checks each and the refusals are
- * shown. The table refreshes from the server's published configuration unless edits are pending.
+ * Apply sends the changed ones with {@code setConfig}; the server checks each and its first refusal
+ * is shown. The table refreshes from the configuration the monitor fetches after each Apply unless
+ * edits are pending.
  */
 final class ConfigPane extends BorderPane {
 

@@ -38,7 +38,6 @@ import javafx.scene.layout.Region;
 import javafx.scene.layout.VBox;
 import javafx.stage.Stage;
 import org.jaria.geom.ArPose;
-import org.jaria.net.ArNetPacket;
 import org.jaria.net.client.ArClientBase;
 import org.jaria.net.client.ConnectionListener;
 import org.jaria.net.data.CommandInfo;
@@ -416,7 +415,7 @@ public final class MonitorWindow implements DesktopApp {
 
   private void applyConfig(List<List<String>> changes) {
     CompletableFuture<?> unused =
-        link.request("setConfig", changes)
+        link.request("setConfig", setConfigArgs(changes))
             .whenComplete(
                 (reply, e) ->
                     Platform.runLater(
@@ -425,18 +424,30 @@ public final class MonitorWindow implements DesktopApp {
                             Throwable c = e.getCause() != null ? e.getCause() : e;
                             configPane.applied(List.of("Not applied: " + c.getMessage()));
                           } else {
-                            configPane.applied(refusals(reply));
+                            String first = reply.bufToStr();
+                            configPane.applied(first.isEmpty() ? List.of() : List.of(first));
+                            link.fetchConfig();
                           }
                         }));
   }
 
-  private static List<String> refusals(ArNetPacket reply) {
-    int n = reply.bufToArray();
-    String[] l = new String[n];
-    for (int i = 0; i < n; i++) {
-      l[i] = reply.bufToStr();
+  /**
+   * ArNetworking's setConfig arguments: pairs of strings (name, value), a pair ("Section", name)
+   * before the parameters of each section. {@code changes} holds [section, name, value] rows.
+   */
+  static Object[] setConfigArgs(List<List<String>> changes) {
+    List<Object> args = new java.util.ArrayList<>();
+    String section = null;
+    for (List<String> c : changes) {
+      if (!c.get(0).equals(section)) {
+        section = c.get(0);
+        args.add("Section");
+        args.add(section);
+      }
+      args.add(c.get(1));
+      args.add(c.get(2));
     }
-    return List.of(l);
+    return args.toArray();
   }
 
   private void runCommand() {

@@ -15,7 +15,7 @@ import org.jaria.net.client.ArNetPacketArgs;
 import org.jaria.net.client.ClientOptions;
 import org.jaria.net.client.ConnectionListener;
 import org.jaria.net.data.CommandInfo;
-import org.jaria.net.data.ConfigSection;
+import org.jaria.net.data.ConfigLayout;
 import org.jaria.net.data.InfoStrings;
 import org.jaria.net.data.LocalizationSnapshot;
 import org.jaria.net.data.MapData;
@@ -63,7 +63,6 @@ final class RobotLink implements AutoCloseable {
     on("getLocPoints", Particles::read, v -> state.particles = v);
     on("getPath", PathSnapshot::read, v -> state.path = v);
     on("getStrings", p -> InfoStrings.read(p, stringLabels), v -> state.strings = v);
-    on("getConfigBySections", ConfigSection::readAll, v -> state.config = v);
     on("getVideo", VideoFrame::read, v -> state.video = v);
     client.addHandler(
         "mapUpdated",
@@ -80,6 +79,28 @@ final class RobotLink implements AutoCloseable {
   /** Data whose packets the monitor could not read: asked for no more (logged once). */
   private final java.util.Set<String> unreadable =
       java.util.concurrent.ConcurrentHashMap.newKeySet();
+
+  /**
+   * Asks for the configuration once (ArNetworking's getConfigBySections answers once, one packet
+   * per section); the monitor asks again after it changed the configuration.
+   */
+  void fetchConfig() {
+    if (!client.dataExists("getConfigBySections")) {
+      return;
+    }
+    CompletableFuture<?> unused =
+        request("getConfigBySections")
+            .thenAccept(
+                p -> {
+                  state.config = ConfigLayout.readAll(p);
+                  changed.run();
+                })
+            .exceptionally(
+                e -> {
+                  log.info("the server's configuration could not be read: {}", e.getMessage());
+                  return null;
+                });
+  }
 
   /** Asks for the map's name and then the map (ArNetworking's getMapName and getMap). */
   private void fetchMap() {
@@ -162,9 +183,7 @@ final class RobotLink implements AutoCloseable {
       CompletableFuture<Duration> unused =
           client.request("getSensorCurrent", FAST_MS, ArNetPacketArgs.of("sonar"));
     }
-    if (client.dataExists("getConfigBySections")) {
-      subscribe("getConfigBySections", SLOW_MS);
-    }
+    fetchConfig();
     if (client.dataExists("mapUpdated")) {
       subscribe("mapUpdated", -1);
     }

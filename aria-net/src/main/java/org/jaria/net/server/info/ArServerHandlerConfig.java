@@ -1,68 +1,67 @@
 package org.jaria.net.server.info;
 
-import java.util.ArrayList;
-import java.util.List;
 import org.jaria.net.ArNetPacket;
-import org.jaria.net.NetEncodable;
+import org.jaria.net.data.ConfigLayout;
 import org.jaria.net.data.ConfigSection;
 import org.jaria.net.provider.ConfigRegistry;
 import org.jaria.net.server.ArServerBase;
-import org.jaria.net.server.NetRequestException;
-import org.jaria.net.server.PolledPublication;
 import org.jaria.net.server.Where;
 
 /**
- * The robot program's configuration for clients (ArNetworking's {@code ArServerHandlerConfig}):
- * {@code "getConfigBySections"} (published: subscribe slowly to hear of changes) and {@code
- * "setConfig"}, which sets parameters from text and answers which ones were refused and why.
+ * The robot program's configuration for clients (ArNetworking's {@code ArServerHandlerConfig}), in
+ * ArNetworking's layouts so ARIA's {@code ArClientHandlerConfig} reads and sets it: {@code
+ * "getConfigBySections"} answers one packet per section (see {@link ConfigLayout}) ended by an
+ * empty packet; {@code "setConfig"} takes pairs of strings (parameter, value), where the parameter
+ * {@code "Section"} names the section of the pairs after it, sets every parameter it can and
+ * answers one string: empty when all were set, otherwise the first refusal.
  */
 public final class ArServerHandlerConfig {
 
-  /** The sections as one publishable value. */
-  private record Sections(List<ConfigSection> sections) implements NetEncodable {
-    @Override
-    public void write(ArNetPacket out) {
-      ConfigSection.writeAll(out, sections);
-    }
-  }
-
   /** Registers the configuration data with {@code server}. */
   public ArServerHandlerConfig(ArServerBase server, ConfigRegistry config) {
-    server.addPublishedData(
-        "getConfigBySections",
-        "every configuration section with its parameters",
-        "array of ConfigSection [name, comment, [[name, type, value, default, min, max,"
-            + " description]...]]",
-        "ConfigEditing",
-        PolledPublication.of(() -> new Sections(config.getSections())));
     server.addData(
-        "setConfig",
-        "sets parameters from text; replies with the refusals (empty: all set)",
-        "array of [string section, string name, string value]",
-        "array of string: one message per refused parameter",
+        "getConfigBySections",
+        "gets the configuration, one packet per section",
+        "none",
+        "per section: byte 'S', string name, string comment, then per parameter byte 'P', string"
+            + " name, string description, byte priority, byte type (b, i, d, s) and its values,"
+            + " string display hint; an empty packet ends",
         "ConfigEditing",
+        "RETURN_UNTIL_EMPTY",
         Where.WORKER,
         (client, request, reply) -> {
-          int n = request.bufToArray();
-          List<String> errors = new ArrayList<>();
-          for (int i = 0; i < n; i++) {
-            int k = request.bufToArray();
-            String section = request.bufToStr();
+          int cmd = server.findCommandFromName("getConfigBySections");
+          for (ConfigSection s : config.getSections()) {
+            ArNetPacket p = new ArNetPacket(cmd);
+            ConfigLayout.writeSection(p, s);
+            client.sendPacketTcp(p);
+          }
+          // The (empty) reply packet the server sends next ends the answer.
+        });
+    server.addData(
+        "setConfig",
+        "sets parameters from text",
+        "repeating pairs of strings: parameter name and value; the name Section starts a section",
+        "string: empty if all were set, else the first refusal",
+        "ConfigEditing",
+        "RETURN_SINGLE|IDLE_PACKET",
+        Where.WORKER,
+        (client, request, reply) -> {
+          String section = "";
+          String first = "";
+          while (request.hasMore()) {
             String name = request.bufToStr();
             String value = request.bufToStr();
-            if (k != 3) {
-              throw new NetRequestException(
-                  org.jaria.net.protocol.NetError.BAD_ARGUMENTS, "each parameter needs 3 strings");
+            if (name.equalsIgnoreCase("Section")) {
+              section = value;
+              continue;
             }
             String err = config.setParam(section, name, value);
-            if (err != null) {
-              errors.add(err);
+            if (err != null && first.isEmpty()) {
+              first = err;
             }
           }
-          reply.arrayToBuf(errors.size());
-          for (String e : errors) {
-            reply.strToBuf(e);
-          }
+          reply.strToBuf(first);
         });
   }
 }
