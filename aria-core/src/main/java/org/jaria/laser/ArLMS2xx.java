@@ -2,9 +2,7 @@ package org.jaria.laser;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
-import java.util.ArrayDeque;
-import java.util.Deque;
-import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 import org.jaria.connection.ArDeviceConnection;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.protocol.DropReason;
@@ -26,8 +24,9 @@ public class ArLMS2xx extends ArLaser {
 
   private final LmsSettings settings;
   private final LmsReceiver receiver;
-  private final byte[] buf = new byte[2048];
-  private final Deque<LmsTelegram> inbox = new ArrayDeque<>();
+  private final LaserInbox<LmsTelegram> inbox;
+  // bound once: the reader thread hands it every answer of every scan
+  private final Consumer<LmsTelegram> scanTaker = this::takeIfScan;
   private volatile long answerTimeoutMs = 2000;
   private volatile int[] lastReflectance = new int[0];
 
@@ -41,6 +40,7 @@ public class ArLMS2xx extends ArLaser {
     super(name, settings.maxRangeMm());
     this.settings = settings;
     this.receiver = new LmsReceiver(true, getDropCounters());
+    this.inbox = new LaserInbox<>(receiver::feed, 2048);
   }
 
   /** How the laser is set up. */
@@ -169,44 +169,21 @@ public class ArLMS2xx extends ArLaser {
   /** Reads until a telegram with code {@code answer} arrives (others are dropped) or time is up. */
   private LmsTelegram await(ArDeviceConnection c, int answer)
       throws IOException, InterruptedException {
-    long deadline = c.clock().nanoTime() + TimeUnit.MILLISECONDS.toNanos(answerTimeoutMs);
-    while (true) {
-      while (!inbox.isEmpty()) {
-        LmsTelegram t = inbox.poll();
-        if (t.command() == answer) {
-          return t;
-        }
-        if (t.command() == LmsCommands.NOT_ACKNOWLEDGED) {
-          return null;
-        }
-      }
-      long left = TimeUnit.NANOSECONDS.toMillis(deadline - c.clock().nanoTime());
-      if (left <= 0) {
-        return null;
-      }
-      if (Thread.interrupted()) {
-        throw new InterruptedException();
-      }
-      int n = c.read(buf, 0, buf.length, Math.min(left, 100));
-      if (n < 0) {
-        throw new IOException("the connection closed");
-      }
-      receiver.feed(buf, 0, n, inbox::add);
-    }
+    return inbox.await(
+        c,
+        answerTimeoutMs,
+        t -> t.command() == answer,
+        t -> t.command() == LmsCommands.NOT_ACKNOWLEDGED);
   }
 
   @Override
   protected void pump(ArDeviceConnection c, long waitMs) throws IOException {
-    int n = c.read(buf, 0, buf.length, waitMs);
-    if (n < 0) {
-      throw new IOException("the connection closed");
-    }
-    receiver.feed(buf, 0, n, inbox::add);
-    while (!inbox.isEmpty()) {
-      LmsTelegram t = inbox.poll();
-      if (t.command() == LmsCommands.SCAN) {
-        takeScan(t);
-      }
+    inbox.drain(c, waitMs, scanTaker);
+  }
+
+  private void takeIfScan(LmsTelegram t) {
+    if (t.command() == LmsCommands.SCAN) {
+      takeScan(t);
     }
   }
 

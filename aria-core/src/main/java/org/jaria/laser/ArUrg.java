@@ -2,11 +2,9 @@ package org.jaria.laser;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
-import java.util.ArrayDeque;
-import java.util.Deque;
 import java.util.Locale;
 import java.util.Map;
-import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 import org.jaria.connection.ArDeviceConnection;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.protocol.DropReason;
@@ -26,8 +24,9 @@ public class ArUrg extends ArLaser {
 
   private final UrgSettings settings;
   private final ScipReceiver receiver;
-  private final byte[] buf = new byte[4096];
-  private final Deque<ScipBlock> inbox = new ArrayDeque<>();
+  private final LaserInbox<ScipBlock> inbox;
+  // bound once: the reader thread hands it every answer of every scan
+  private final Consumer<ScipBlock> scanTaker = this::takeIfScan;
   private volatile long answerTimeoutMs = 2000;
   private volatile UrgParams params;
   private volatile Map<String, String> version = Map.of();
@@ -44,6 +43,7 @@ public class ArUrg extends ArLaser {
     super(name, UrgParams.URG_04LX.maxRange());
     this.settings = settings;
     this.receiver = new ScipReceiver(getDropCounters());
+    this.inbox = new LaserInbox<>(receiver::feed, 4096);
   }
 
   /** How the laser is read. */
@@ -155,41 +155,17 @@ public class ArUrg extends ArLaser {
 
   private ScipBlock await(ArDeviceConnection c, String command)
       throws IOException, InterruptedException {
-    long deadline = c.clock().nanoTime() + TimeUnit.MILLISECONDS.toNanos(answerTimeoutMs);
-    while (true) {
-      while (!inbox.isEmpty()) {
-        ScipBlock b = inbox.poll();
-        if (b.echo().equals(command)) {
-          return b;
-        }
-      }
-      long left = TimeUnit.NANOSECONDS.toMillis(deadline - c.clock().nanoTime());
-      if (left <= 0) {
-        return null;
-      }
-      if (Thread.interrupted()) {
-        throw new InterruptedException();
-      }
-      int n = c.read(buf, 0, buf.length, Math.min(left, 100));
-      if (n < 0) {
-        throw new IOException("the connection closed");
-      }
-      receiver.feed(buf, 0, n, inbox::add);
-    }
+    return inbox.await(c, answerTimeoutMs, b -> b.echo().equals(command), b -> false);
   }
 
   @Override
   protected void pump(ArDeviceConnection c, long waitMs) throws IOException {
-    int n = c.read(buf, 0, buf.length, waitMs);
-    if (n < 0) {
-      throw new IOException("the connection closed");
-    }
-    receiver.feed(buf, 0, n, inbox::add);
-    while (!inbox.isEmpty()) {
-      ScipBlock b = inbox.poll();
-      if (b.echo().startsWith("MD") && b.status().equals("99")) {
-        takeScan(b);
-      }
+    inbox.drain(c, waitMs, scanTaker);
+  }
+
+  private void takeIfScan(ScipBlock b) {
+    if (b.echo().startsWith("MD") && b.status().equals("99")) {
+      takeScan(b);
     }
   }
 
