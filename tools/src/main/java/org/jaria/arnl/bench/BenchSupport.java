@@ -95,6 +95,33 @@ final class BenchSupport {
    * through the waypoints (braking only for the last one, or to turn more than 20° on the spot), so
    * that the robot really drives at about {@code speed}.
    */
+  /**
+   * The office tracking route, {@code laps} times: along the corridors, into the rooms and back to
+   * the start, so both localization benchmarks measure the same drive.
+   */
+  static List<ArPose> officeLaps(int laps) {
+    List<ArPose> lap =
+        List.of(
+            new ArPose(9000, 9500),
+            new ArPose(9000, 12000),
+            new ArPose(9000, 15000),
+            new ArPose(9000, 12000),
+            new ArPose(9000, 9500),
+            new ArPose(15000, 9500),
+            new ArPose(15000, 15000),
+            new ArPose(15000, 9500),
+            new ArPose(26000, 9500),
+            new ArPose(26250, 7000),
+            new ArPose(26250, 6000),
+            new ArPose(26250, 9500),
+            new ArPose(1500, 9500));
+    List<ArPose> route = new ArrayList<>();
+    for (int i = 0; i < laps; i++) {
+      route.addAll(lap);
+    }
+    return route;
+  }
+
   static final class TruthDriver extends ArAction {
     private final ArActionDesired d = new ArActionDesired();
     private final SimRobot sim;

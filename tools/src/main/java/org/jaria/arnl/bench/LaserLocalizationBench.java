@@ -126,25 +126,7 @@ final class LaserLocalizationBench {
       f.setSensorBelief(SENSOR_BELIEF);
       sim.runMillis(500);
       f.initGaussian(simRobot.getTruePose(), 2000, 100, 100, 3);
-      List<ArPose> lap =
-          List.of(
-              new ArPose(9000, 9500),
-              new ArPose(9000, 12000),
-              new ArPose(9000, 15000),
-              new ArPose(9000, 12000),
-              new ArPose(9000, 9500),
-              new ArPose(15000, 9500),
-              new ArPose(15000, 15000),
-              new ArPose(15000, 9500),
-              new ArPose(26000, 9500),
-              new ArPose(26250, 7000),
-              new ArPose(26250, 6000),
-              new ArPose(26250, 9500),
-              new ArPose(1500, 9500));
-      List<ArPose> route = new ArrayList<>();
-      for (int i = 0; i < laps; i++) {
-        route.addAll(lap);
-      }
+      List<ArPose> route = BenchSupport.officeLaps(laps);
       BenchSupport.TruthDriver driver = new BenchSupport.TruthDriver(simRobot, route, 500);
       robot.addAction(driver, 50);
       double[] angles = angles();
