@@ -19,6 +19,8 @@ import org.jaria.connection.RobotAddress;
 import org.jaria.map.ArMap;
 import org.jaria.map.MapFormatException;
 import org.jaria.net.arnl.ArnlNavigation;
+import org.jaria.net.forward.ArHybridForwarderVideo;
+import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ArServerUserInfo;
 import org.jaria.net.server.Authenticator;
 import org.jaria.net.server.GuiServer;
@@ -95,6 +97,15 @@ public final class GuiServerCommand implements Callable<Integer> {
   Path video;
 
   @Option(
+      names = "--forward-video",
+      paramLabel = "HOST[:PORT]",
+      description =
+          "Forward the video of this ArNetworking video server (port 7070 if absent: ACTS's SAV"
+              + " server, ./jaria acts) to monitors, as ARIA's serverDemo does; it replaces the"
+              + " camera.")
+  String forwardVideo;
+
+  @Option(
       names = "--port",
       description = "TCP port to serve monitors on (default ${DEFAULT-VALUE}; 0: any free one).")
   int port = 7272;
@@ -162,6 +173,10 @@ public final class GuiServerCommand implements Callable<Integer> {
       if (camera != null && video != null) {
         throw new IllegalArgumentException("give --camera or --video, not both");
       }
+      if (forwardVideo != null && (camera != null || video != null)) {
+        throw new IllegalArgumentException(
+            "give --forward-video or --camera/--video, not both: each serves sendVideo");
+      }
       if (remote != null || serial != null) {
         return runOnRobot(m, mapName, options, out);
       }
@@ -180,7 +195,8 @@ public final class GuiServerCommand implements Callable<Integer> {
                   options,
                   ArnlNavigation.Mode.THREADED,
                   speed,
-                  !noCamera))) {
+                  !noCamera && forwardVideo == null));
+          ArHybridForwarderVideo forwarder = forwarder(s.gui().getServer(), out)) {
         out.printf(
             Locale.ROOT,
             "guiServer: embedded simulator, a %s on %s, %s%n",
@@ -286,12 +302,36 @@ public final class GuiServerCommand implements Callable<Integer> {
               .video(cam)
               .build()) {
         nav.addCommands(gui.getCommands());
-        gui.open();
-        return serve(gui, robot, out);
+        try (ArHybridForwarderVideo forwarder = forwarder(gui.getServer(), out)) {
+          gui.open();
+          return serve(gui, robot, out);
+        }
       }
     } finally {
       robot.close();
     }
+  }
+
+  /** The video forwarder --forward-video asks for (its data added to {@code server}), or null. */
+  private ArHybridForwarderVideo forwarder(ArServerBase server, PrintWriter out) {
+    if (forwardVideo == null) {
+      return null;
+    }
+    String host = forwardVideo;
+    int videoPort = ArHybridForwarderVideo.DEFAULT_PORT;
+    int colon = forwardVideo.lastIndexOf(':');
+    if (colon >= 0) {
+      host = forwardVideo.substring(0, colon);
+      try {
+        videoPort = Integer.parseInt(forwardVideo.substring(colon + 1));
+      } catch (NumberFormatException e) {
+        throw new IllegalArgumentException(
+            "--forward-video wants HOST or HOST:PORT, got '" + forwardVideo + "'", e);
+      }
+    }
+    ArHybridForwarderVideo f = new ArHybridForwarderVideo(server, host, videoPort);
+    out.printf(Locale.ROOT, "Forwarding video from %s%n", f.getSource());
+    return f;
   }
 
   private static void report(PrintWriter out, boolean localized, ArRobot robot, ArnlNavigation n) {
