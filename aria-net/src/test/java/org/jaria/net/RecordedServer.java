@@ -26,7 +26,7 @@ public final class RecordedServer implements AutoCloseable {
   private final ServerSocket socket;
   private final Thread thread;
   private final List<ArNetPacket> login;
-  private final Map<Integer, Deque<ArNetPacket>> answers = new HashMap<>();
+  private final Map<Integer, Deque<List<ArNetPacket>>> answers = new HashMap<>();
   private final AtomicInteger requests = new AtomicInteger();
   private volatile ArNetPacket clientIntroduction;
 
@@ -39,8 +39,21 @@ public final class RecordedServer implements AutoCloseable {
       firstData++;
     }
     login = all.subList(0, firstData);
-    for (ArNetPacket p : all.subList(firstData, all.size())) {
-      answers.computeIfAbsent(p.getCommand(), k -> new ArrayDeque<>()).add(p);
+    // An answer is one packet, or (ArNetworking's RETURN_UNTIL_EMPTY, as getConfigBySections) a
+    // run of packets of one data ended by an empty one.
+    List<ArNetPacket> data = all.subList(firstData, all.size());
+    for (int i = 0; i < data.size(); ) {
+      int cmd = data.get(i).getCommand();
+      int end = i;
+      while (end < data.size()
+          && data.get(end).getCommand() == cmd
+          && data.get(end).getDataLength() > 0) {
+        end++;
+      }
+      boolean endsEmpty = end < data.size() && data.get(end).getCommand() == cmd && end > i;
+      int next = endsEmpty ? end + 1 : i + 1;
+      answers.computeIfAbsent(cmd, k -> new ArrayDeque<>()).add(List.copyOf(data.subList(i, next)));
+      i = next;
     }
     socket = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
     thread = new Thread(this::serve, "test-recorded-server");
@@ -85,10 +98,12 @@ public final class RecordedServer implements AutoCloseable {
         } else if (cmd == Protocol.CLIENT_REQUEST || cmd >= Protocol.FIRST_DATA_COMMAND) {
           requests.incrementAndGet();
           int data = cmd == Protocol.CLIENT_REQUEST ? p.toReader().bufToUByte2() : cmd;
-          Deque<ArNetPacket> q = answers.get(data);
-          ArNetPacket a = q == null ? null : q.poll();
+          Deque<List<ArNetPacket>> q = answers.get(data);
+          List<ArNetPacket> a = q == null ? null : q.poll();
           if (a != null) {
-            out.write(a.toWire());
+            for (ArNetPacket part : a) {
+              out.write(part.toWire());
+            }
           }
         }
         out.flush();

@@ -118,22 +118,39 @@ class SavServerTest {
             new java.net.Socket(java.net.InetAddress.getLoopbackAddress(), sav.getPort())) {
       assertEquals(259, sav.getServer().findCommandFromName("sendVideo"));
       assertEquals(260, sav.getServer().findCommandFromName("videoSize"));
+      s.setSoTimeout(20_000);
       java.io.DataInputStream in = new java.io.DataInputStream(s.getInputStream());
-      s.getOutputStream().write(sent);
+      // As serverDemo's forwarder did: the login and videoSize, then one sendVideo at a time,
+      // each sent once the previous one is answered.
       java.util.List<ArNetPacket> frames = new java.util.ArrayList<>();
       ArNetPacket size = null;
-      while (frames.size() < sendVideos || size == null) {
-        ArNetPacket p = read(in);
-        if (p.getCommand() == 260) {
-          size = p;
-        } else if (p.getCommand() == 259) {
-          frames.add(p);
+      for (ArNetPacket p : asked) {
+        byte[] w = p.toWire();
+        s.getOutputStream().write(w);
+        if (p.getCommand() != 259) {
+          continue;
         }
+        while (true) {
+          ArNetPacket a = read(in);
+          if (a.getCommand() == 260) {
+            size = a;
+          } else if (a.getCommand() == 259) {
+            frames.add(a);
+            break;
+          }
+        }
+      }
+      assertEquals(sendVideos, frames.size());
+      while (size == null) {
+        ArNetPacket a = read(in);
+        size = a.getCommand() == 260 ? a : null;
       }
       assertEquals(160, size.bufToUByte2());
       assertEquals(120, size.bufToUByte2());
-      BufferedImage first = ImageIO.read(new ByteArrayInputStream(frames.get(0).toByteArray(), 4,
-          frames.get(0).getDataLength() - 4));
+      BufferedImage first =
+          ImageIO.read(
+              new ByteArrayInputStream(
+                  frames.get(0).toByteArray(), 4, frames.get(0).getDataLength() - 4));
       assertEquals(160, first.getWidth());
       assertTrue(
           frames.get(0).getDataLength() > frames.get(1).getDataLength(),

@@ -35,8 +35,10 @@ class ForwardedVideoReplayTest {
     // Introduction, UDP confirmation, sendVideo once (the guiServer has no getPictureCam1).
     List<ArNetPacket> asSent = PeerRecording.packets(sent);
     assertEquals(3, asSent.size());
-    assertEquals("sendVideo", PeerRecording.listedCommands(PeerRecording.packets(answered))
-        .get(asSent.get(2).getCommand()));
+    assertEquals(
+        "sendVideo",
+        PeerRecording.listedCommands(PeerRecording.packets(answered))
+            .get(asSent.get(2).getCommand()));
     // By hand it wrote "a 160x120 image, 4061 bytes" from jaria acts' desk scene.
     ArNetPacket then =
         PeerRecording.packets(answered).stream()

@@ -177,6 +177,9 @@ public final class GuiServerCommand implements Callable<Integer> {
         throw new IllegalArgumentException(
             "give --forward-video or --camera/--video, not both: each serves sendVideo");
       }
+      if (forwardVideo != null) {
+        forwardPort(); // a wrong address is said before anything starts
+      }
       if (remote != null || serial != null) {
         return runOnRobot(m, mapName, options, out);
       }
@@ -186,16 +189,16 @@ public final class GuiServerCommand implements Callable<Integer> {
                 + " simulator serves its own camera (or none with --no-camera)");
       }
       try (SimulatedGuiServer s =
-          SimulatedGuiServer.start(
-              new SimulatedGuiServer.Options(
-                  m,
-                  mapName,
-                  model,
-                  seed,
-                  options,
-                  ArnlNavigation.Mode.THREADED,
-                  speed,
-                  !noCamera && forwardVideo == null));
+              SimulatedGuiServer.start(
+                  new SimulatedGuiServer.Options(
+                      m,
+                      mapName,
+                      model,
+                      seed,
+                      options,
+                      ArnlNavigation.Mode.THREADED,
+                      speed,
+                      !noCamera && forwardVideo == null));
           ArHybridForwarderVideo forwarder = forwarder(s.gui().getServer(), out)) {
         out.printf(
             Locale.ROOT,
@@ -317,21 +320,38 @@ public final class GuiServerCommand implements Callable<Integer> {
     if (forwardVideo == null) {
       return null;
     }
-    String host = forwardVideo;
-    int videoPort = ArHybridForwarderVideo.DEFAULT_PORT;
-    int colon = forwardVideo.lastIndexOf(':');
-    if (colon >= 0) {
-      host = forwardVideo.substring(0, colon);
-      try {
-        videoPort = Integer.parseInt(forwardVideo.substring(colon + 1));
-      } catch (NumberFormatException e) {
-        throw new IllegalArgumentException(
-            "--forward-video wants HOST or HOST:PORT, got '" + forwardVideo + "'", e);
-      }
-    }
-    ArHybridForwarderVideo f = new ArHybridForwarderVideo(server, host, videoPort);
+    ArHybridForwarderVideo f =
+        new ArHybridForwarderVideo(
+            server,
+            forwardHost(),
+            forwardPort(),
+            java.time.Duration.ofSeconds(2),
+            System::nanoTime);
     out.printf(Locale.ROOT, "Forwarding video from %s%n", f.getSource());
     return f;
+  }
+
+  private String forwardHost() {
+    int colon = forwardVideo.lastIndexOf(':');
+    return colon < 0 ? forwardVideo : forwardVideo.substring(0, colon);
+  }
+
+  /** The port of --forward-video (ACTS's 7070 if it names none). */
+  private int forwardPort() {
+    int colon = forwardVideo.lastIndexOf(':');
+    if (colon < 0) {
+      return ArHybridForwarderVideo.DEFAULT_PORT;
+    }
+    try {
+      int p = Integer.parseInt(forwardVideo.substring(colon + 1));
+      if (p >= 1 && p <= 0xFFFF) {
+        return p;
+      }
+    } catch (NumberFormatException e) {
+      // said below
+    }
+    throw new IllegalArgumentException(
+        "--forward-video wants HOST or HOST:PORT, got '" + forwardVideo + "'");
   }
 
   private static void report(PrintWriter out, boolean localized, ArRobot robot, ArnlNavigation n) {
