@@ -20,6 +20,7 @@ import org.jaria.map.ArMap;
 import org.jaria.map.MapFormatException;
 import org.jaria.net.arnl.ArnlNavigation;
 import org.jaria.net.forward.ArHybridForwarderVideo;
+import org.jaria.net.forward.ForwarderStats;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ArServerUserInfo;
 import org.jaria.net.server.Authenticator;
@@ -207,7 +208,7 @@ public final class GuiServerCommand implements Callable<Integer> {
             map,
             speed == 1 ? "real time" : speed + " × real time");
         report(out, s.wasLocalized(), s.robot(), s.nav());
-        return serve(s.gui(), s.robot(), out);
+        return serve(s.gui(), s.robot(), forwarder, out);
       }
     } catch (IllegalArgumentException | IllegalStateException | IOException e) {
       err.println("guiserver: " + e.getMessage());
@@ -307,7 +308,7 @@ public final class GuiServerCommand implements Callable<Integer> {
         nav.addCommands(gui.getCommands());
         try (ArHybridForwarderVideo forwarder = forwarder(gui.getServer(), out)) {
           gui.open();
-          return serve(gui, robot, out);
+          return serve(gui, robot, forwarder, out);
         }
       }
     } finally {
@@ -364,7 +365,8 @@ public final class GuiServerCommand implements Callable<Integer> {
   }
 
   /** Prints where it listens, then a status line every 10 s until the time is up or Ctrl-C. */
-  private int serve(GuiServer gui, ArRobot robot, PrintWriter out) {
+  private int serve(
+      GuiServer gui, ArRobot robot, ArHybridForwarderVideo forwarder, PrintWriter out) {
     var server = gui.getServer();
     boolean open = server.getOptions().authenticator().isOpen();
     String host = server.getOptions().bindAddress();
@@ -397,12 +399,13 @@ public final class GuiServerCommand implements Callable<Integer> {
         ArServerModes modes = gui.getModes();
         out.printf(
             Locale.ROOT,
-            "t=%4ds  clients %d  mode %s: %s  pose %s%n",
+            "t=%4ds  clients %d  mode %s: %s  pose %s%s%n",
             s,
             server.getNumClients(),
             modes.getMode(),
             modes.getStatus(),
-            robot.getPose());
+            robot.getPose(),
+            forwarder == null ? "" : videoStatus(forwarder.getStats()));
         out.flush();
         if (System.nanoTime() >= end) {
           break;
@@ -422,6 +425,16 @@ public final class GuiServerCommand implements Callable<Integer> {
       }
     }
     return 0;
+  }
+
+  /** The forwarder's part of the status line. */
+  static String videoStatus(ForwarderStats v) {
+    return String.format(
+        Locale.ROOT,
+        "  video %s, %d frames, %d dropped",
+        v.connected() ? "forwarded" : "not connected",
+        v.frames(),
+        v.dropped());
   }
 
   private static void pause(Duration d) {
