@@ -25,10 +25,9 @@ import picocli.CommandLine;
 
 /**
  * The robot-factory recipe of docs/simulator.md as a reader follows it: the {@code ./jaria sim -R
- * ...} line builds its world through the real command line (only a free port added), the two
- * {@code ./jaria demo wander --remote ...} lines run at the same time against it (cut to two
- * seconds), each drives a robot of its own, and when both are done only the {@code -r} robot is
- * left.
+ * ...} line builds its world through the real command line (only a free port added), the two {@code
+ * ./jaria demo wander --remote ...} lines run at the same time against it (cut to two seconds),
+ * each drives a robot of its own, and when both are done only the {@code -r} robot is left.
  */
 @Tag("slow")
 class RobotFactoryRecipeTest {
