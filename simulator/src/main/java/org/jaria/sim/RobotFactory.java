@@ -42,6 +42,7 @@ public final class RobotFactory {
   /** Port asked for (0: any free port). */
   final int requestedPort;
 
+  // Guarded by the world's lock (its methods and the world thread take it).
   int boundPort = -1;
   private long made;
   private int inWorld;
