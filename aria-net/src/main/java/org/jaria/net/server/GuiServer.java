@@ -13,6 +13,8 @@ import org.jaria.net.server.info.ArServerHandlerCommands;
 import org.jaria.net.server.info.ArServerHandlerConfig;
 import org.jaria.net.server.info.ArServerHandlerLocalization;
 import org.jaria.net.server.info.ArServerHandlerMap;
+import org.jaria.net.server.info.ArServerHandlerPopup;
+import org.jaria.net.server.info.ArServerInfoDrawings;
 import org.jaria.net.server.info.ArServerInfoLocalization;
 import org.jaria.net.server.info.ArServerInfoPath;
 import org.jaria.net.server.info.ArServerInfoRobot;
@@ -62,6 +64,8 @@ public final class GuiServer implements AutoCloseable {
   private final ArServerModeRatioDrive modeRatioDrive;
   private final ArServerModeWander modeWander;
   private final ArServerModeGoto modeGoto;
+  private final ArServerInfoDrawings drawings;
+  private final ArServerHandlerPopup popups;
 
   private GuiServer(Builder b) {
     ArRobot robot = b.robot;
@@ -83,9 +87,8 @@ public final class GuiServer implements AutoCloseable {
     if (b.pathPlanning != null) {
       new ArServerInfoPath(server, b.pathPlanning);
     }
-    if (b.config != null) {
-      new ArServerHandlerConfig(server, b.config);
-    }
+    ArServerHandlerConfig configHandler =
+        b.config != null ? new ArServerHandlerConfig(server, b.config) : null;
     if (b.video != null) {
       new ArServerHandlerCamera(server, b.video);
     }
@@ -100,6 +103,13 @@ public final class GuiServer implements AutoCloseable {
     // Registered last so that the data numbers ARIA clients were recorded with stay the same.
     commands.addStringCommandList();
     strings.addStringsInfo();
+    // Added after the services above (whose numbers ARIA's recorded clients used), in this order.
+    drawings = new ArServerInfoDrawings(server);
+    popups = new ArServerHandlerPopup(server, robot.getClock()::millis);
+    if (configHandler != null) {
+      configHandler.addDefaultServerCommands();
+    }
+    GuiDrawings.addDrawings(drawings, robot, b.pathPlanning);
   }
 
   /** A builder for a guiServer driving {@code robot}. */
@@ -140,6 +150,16 @@ public final class GuiServer implements AutoCloseable {
   /** The information table, to add your own values. */
   public ArStringInfoGroup getInfoGroup() {
     return infoGroup;
+  }
+
+  /** The drawings clients may draw on the map, to add your own. */
+  public ArServerInfoDrawings getDrawings() {
+    return drawings;
+  }
+
+  /** The popups, to show one on every client. */
+  public ArServerHandlerPopup getPopups() {
+    return popups;
   }
 
   /** The map service (to serve a new map). */
