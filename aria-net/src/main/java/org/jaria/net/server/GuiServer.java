@@ -21,6 +21,7 @@ import org.jaria.net.server.info.ArServerInfoRobot;
 import org.jaria.net.server.info.ArServerInfoSensor;
 import org.jaria.net.server.info.ArServerInfoStrings;
 import org.jaria.net.server.info.ArStringInfoGroup;
+import org.jaria.net.server.modes.ArServerModeDock;
 import org.jaria.net.server.modes.ArServerModeGoto;
 import org.jaria.net.server.modes.ArServerModeRatioDrive;
 import org.jaria.net.server.modes.ArServerModeStop;
@@ -76,17 +77,17 @@ public final class GuiServer implements AutoCloseable {
     infoGroup = b.infoGroup != null ? b.infoGroup : new ArStringInfoGroup();
     infoGroup.addStringDouble("Robot cycle (ms)", 8, () -> robot.getLastCycleNanos() / 1e6, "%.2f");
     infoGroup.addStringInt("Network clients", 4, server::getNumClients);
+    ArServerInfoLocalization locInfo = null;
     if (b.localization != null) {
       LocalizationInfo loc = b.localization;
       infoGroup.addStringDouble(
           "Localization score", 8, () -> loc.getLocalizationState().score(), "%.3f");
-      new ArServerInfoLocalization(server, loc);
+      locInfo = new ArServerInfoLocalization(server, loc);
     }
     ArServerInfoStrings strings = new ArServerInfoStrings(server, infoGroup);
     new ArServerHandlerLocalization(server, robot, b.localization, b.map);
-    if (b.pathPlanning != null) {
-      new ArServerInfoPath(server, b.pathPlanning);
-    }
+    ArServerInfoPath pathInfo =
+        b.pathPlanning != null ? new ArServerInfoPath(server, b.pathPlanning) : null;
     ArServerHandlerConfig configHandler =
         b.config != null ? new ArServerHandlerConfig(server, b.config) : null;
     if (b.video != null) {
@@ -108,6 +109,15 @@ public final class GuiServer implements AutoCloseable {
     popups = new ArServerHandlerPopup(server, robot.getClock()::millis);
     if (configHandler != null) {
       configHandler.addDefaultServerCommands();
+    }
+    modeGoto.addHomeRequest();
+    new ArServerModeDock(server, b.map);
+    mapHandler.addMapBinary();
+    if (locInfo != null) {
+      locInfo.addLocalizationSnapshot();
+    }
+    if (pathInfo != null) {
+      pathInfo.addPathSnapshot();
     }
     GuiDrawings.addDrawings(drawings, robot, b.pathPlanning);
   }

@@ -162,4 +162,37 @@ class GuiServerExtrasTest {
       assertEquals(0, updatesSetter.get(), "the client that set it is not told");
     }
   }
+
+  @Test
+  void homeDrivesToTheMapsHomeAndDockIsRefusedSayingWhy() throws Exception {
+    try (GuiRig rig = GuiRig.plain(b -> b)) {
+      rig.call("gotoPose", 4000, 9500);
+      rig.run(3000);
+      rig.call("home");
+      rig.run(200);
+      assertEquals(
+          "Goto", org.jaria.net.server.modes.ArServerModes.of(rig.gui.getServer()).getMode());
+      assertTrue(
+          rig.runUntil(
+              () ->
+                  rig.sim.sim().getTruePose().findDistanceTo(new org.jaria.geom.ArPose(1500, 9500))
+                      < 300,
+              60_000),
+          "back home: " + rig.sim.sim().getTruePose());
+      var refused = Futures.failure(rig.client.requestOnce("dock"));
+      assertTrue(refused.getMessage().contains("(29300, 9500)"), refused.getMessage());
+    }
+  }
+
+  @Test
+  void getMapBinaryGivesTheSameMap() throws Exception {
+    try (GuiRig rig = GuiRig.plain(b -> b)) {
+      String text = org.jaria.net.data.MapBinaryLayout.readText(rig.call("getMapBinary"));
+      org.jaria.map.ArMap back =
+          org.jaria.map.ArMap.read(new java.io.StringReader(text), "getMapBinary");
+      assertEquals(GuiRig.OFFICE.getLines(), back.getLines());
+      assertEquals(GuiRig.OFFICE.getPoints(), back.getPoints());
+      assertEquals(GuiRig.OFFICE.getMapObjects(), back.getMapObjects());
+    }
+  }
 }
