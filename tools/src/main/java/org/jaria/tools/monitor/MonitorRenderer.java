@@ -67,6 +67,9 @@ final class MonitorRenderer {
       }
     }
     RobotUpdate u = s.robot;
+    if (u != null) {
+      DrawingsRenderer.draw(gc, vp, s.drawings, s.drawingPoints, u.x(), u.y());
+    }
     double radius = s.physical != null ? s.physical.radius() : 250;
     if (u != null) {
       drawRobot(gc, vp, u.getPose(), radius, ROBOT, ROBOT_FILL);

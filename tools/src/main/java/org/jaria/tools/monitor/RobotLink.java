@@ -49,6 +49,7 @@ final class RobotLink implements AutoCloseable {
   // The labels of getStrings's values, from getStringsInfo (asked once per connection).
   private volatile List<String> stringLabels = List.of();
   private final Runnable changed;
+  private final LinkExtras extras;
 
   /**
    * A link storing into {@code state} and calling {@code changed} (on the reader thread) after
@@ -59,9 +60,10 @@ final class RobotLink implements AutoCloseable {
     this.changed = changed;
     on("update", RobotUpdate::read, v -> state.robot = v);
     on("getSensorCurrent", SensorReadings::read, v -> state.sensors = v);
-    on("getLocState", LocalizationSnapshot::read, v -> state.localization = v);
+    on("getLocalizationSnapshot", LocalizationSnapshot::read, v -> state.localization = v);
     on("getLocPoints", Particles::read, v -> state.particles = v);
-    on("getPath", PathSnapshot::read, v -> state.path = v);
+    on("getPathSnapshot", PathSnapshot::read, v -> state.path = v);
+    extras = new LinkExtras(client, state, changed);
     on("getStrings", p -> InfoStrings.read(p, stringLabels), v -> state.strings = v);
     on("getVideo", VideoFrame::read, v -> state.video = v);
     client.addHandler(
@@ -174,10 +176,11 @@ final class RobotLink implements AutoCloseable {
     state.clear();
     unreadable.clear();
     subscribe("update", FAST_MS);
-    for (String d : List.of("getLocState", "getLocPoints", "getPath", "getStrings")) {
+    for (String d : List.of("getLocPoints", "getStrings")) {
       subscribe(d, MEDIUM_MS);
     }
     client.connect(host, port, user == null ? "" : user, password);
+    extras.connected(MEDIUM_MS);
     if (client.dataExists("getSensorCurrent")) {
       // ArNetworking sends one named sensor's readings per request.
       CompletableFuture<Duration> unused =
@@ -246,6 +249,11 @@ final class RobotLink implements AutoCloseable {
   /** Sends a request or command; the future fails with the server's message. */
   CompletableFuture<ArNetPacket> request(String name, Object... args) {
     return client.requestOnce(name, args);
+  }
+
+  /** Answers popup {@code id} with button {@code button} (ArNetworking's popupClicked). */
+  CompletableFuture<?> popupClicked(int id, int button) {
+    return extras.popupClicked(id, button);
   }
 
   /** The custom commands the server offers. */
