@@ -307,4 +307,52 @@ class AriaClientReplayTest {
           loc.params().toString());
     }
   }
+
+  @Test
+  void configClientGetsTheConfigurationAndItsDefaults() throws Exception {
+    byte[] sent = PeerRecording.bytes("configClientDefaults.c2s.bin");
+    List<ArNetPacket> asSent = PeerRecording.packets(sent);
+    // Introduction, UDP confirmation, getConfigBySections, then getConfigDefaults (the server
+    // lists it, so ArClientHandlerConfig can request the defaults).
+    assertEquals(4, asSent.size());
+    int bySections = asSent.get(2).getCommand();
+    int defaults = asSent.get(3).getCommand();
+    // By hand, JAria's client had set NumSamples to 700 first: configClient.txt said 700 and
+    // configClientDefaults.txt 2000. The recorded answers say the same.
+    List<ArNetPacket> answered =
+        PeerRecording.packets(PeerRecording.bytes("configClientDefaults.s2c.bin"));
+    ArNetPacket defaultsThen =
+        answered.stream().filter(p -> p.getCommand() == defaults).findFirst().orElseThrow();
+    assertEquals(
+        "2000",
+        org.jaria.net.data.ConfigDefaultsLayout.read(defaultsThen.toReader())
+            .get("Localization")
+            .get("NumSamples"));
+    org.jaria.net.provider.VideoSource camera =
+        new org.jaria.net.provider.VideoSource() {
+          @Override
+          public String getName() {
+            return "Camera";
+          }
+
+          @Override
+          public org.jaria.net.data.VideoFrame getLatestFrame() {
+            return null;
+          }
+        };
+    try (GuiRig rig = GuiRig.arnl(b -> b.video(camera));
+        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
+      ArServerBase s = rig.gui.getServer();
+      assertEquals(bySections, s.findCommandFromName("getConfigBySections"));
+      assertEquals(defaults, s.findCommandFromName("getConfigDefaults"), "the number it used");
+      assertEquals(
+          "", rig.call("setConfig", "Section", "Localization", "NumSamples", "700").bufToStr());
+      aria.readIntroduction();
+      aria.send(sent);
+      java.util.Map<String, java.util.Map<String, String>> got =
+          org.jaria.net.data.ConfigDefaultsLayout.read(aria.readUntil(defaults));
+      assertEquals("2000", got.get("Localization").get("NumSamples"));
+      assertTrue(got.keySet().containsAll(List.of("Localization")), got.keySet().toString());
+    }
+  }
 }
