@@ -195,4 +195,32 @@ class GuiServerExtrasTest {
       assertEquals(GuiRig.OFFICE.getMapObjects(), back.getMapObjects());
     }
   }
+
+  @Test
+  void hostileArgumentsAreRefusedOneRequestAtATime() throws Exception {
+    try (GuiRig rig = GuiRig.arnl()) {
+      // popupClicked cut short (a byte where a byte4 belongs), and with text for numbers.
+      assertEquals(
+          org.jaria.net.protocol.NetError.BAD_ARGUMENTS,
+          Futures.failure(rig.client.requestOnce("popupClicked", (byte) 1)).getCode());
+      assertEquals(
+          org.jaria.net.protocol.NetError.BAD_ARGUMENTS,
+          Futures.failure(rig.client.requestOnce("popupClicked", "ab")).getCode());
+      // Text long enough to read as numbers reads as a popup number nobody has: ignored.
+      rig.call("popupClicked", "seven");
+      // getConfigDefaults with a section name without its ending zero byte.
+      assertEquals(
+          org.jaria.net.protocol.NetError.BAD_ARGUMENTS,
+          Futures.failure(rig.client.requestOnce("getConfigDefaults", new byte[] {'L', 'o'}))
+              .getCode());
+      // An oversized section name (near the packet's limit) names no section: nothing is sent.
+      String huge = "x".repeat(31_000);
+      assertEquals(0, rig.call("getConfigDefaults", huge).getDataLength());
+      // Arguments nobody asked for are ignored, as ArNetworking ignores them.
+      assertTrue(DrawingLayout.readList(rig.call("listDrawings", 1, 2, 3)).size() > 0);
+      // The connection and the server carry on.
+      assertTrue(ConfigDefaultsLayout.read(rig.call("getConfigDefaults")).size() > 0);
+      assertTrue(rig.client.isConnected());
+    }
+  }
 }
