@@ -10,7 +10,8 @@ import org.jaria.net.ArNetPacketException;
  * <ul>
  *   <li>{@code popupCreate} (server to client): byte4 id; string ignore identifier; string title;
  *       string message; byte type (0..4); string three button labels; byte default button; byte
- *       escape button. An empty {@code popupCreate} packet ends the answer to {@code popupList}.
+ *       escape button. {@code popupList} answers with the open popups' {@code popupCreate} packets
+ *       and then an empty {@code popupList} packet.
  *   <li>{@code popupClose} (server to client): byte4 id; string what to show.
  *   <li>{@code popupClicked} (client to server): byte4 id; byte button.
  * </ul>
@@ -72,7 +73,7 @@ public final class PopupLayout {
   /**
    * Reads a {@code popupCreate} packet.
    *
-   * @return the popup, or null for the empty packet that ends a {@code popupList} answer
+   * @return the popup, or null for an empty packet
    * @throws ArNetPacketException if it is cut short or its type is not 0..4
    */
   public static Shown readCreate(ArNetPacket in) {

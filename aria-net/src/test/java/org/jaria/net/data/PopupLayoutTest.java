@@ -45,7 +45,7 @@ class PopupLayoutTest {
             0,
             1),
         PopupLayout.readCreate(p.toReader()));
-    assertNull(PopupLayout.readCreate(new ArNetPacket().toReader()), "popupList's end");
+    assertNull(PopupLayout.readCreate(new ArNetPacket().toReader()), "an empty packet");
     ArNetPacket c = new ArNetPacket();
     PopupLayout.writeClose(c, 7, "Going on");
     assertEquals(new PopupLayout.Closed(7, "Going on"), PopupLayout.readClose(c.toReader()));

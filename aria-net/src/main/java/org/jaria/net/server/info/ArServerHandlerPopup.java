@@ -101,8 +101,9 @@ public final class ArServerHandlerPopup {
             PopupLayout.writeCreate(p, o.id(), o.info());
             client.sendPacketTcp(p);
           }
-          // As ArNetworking: an empty popupCreate packet ends the list.
-          client.sendPacketTcp(new ArNetPacket(cmd));
+          // As ArNetworking's server (seen on the wire from ARIA's popupExample): an empty
+          // popupList packet ends the list, although popupList returns nothing.
+          client.sendPacketTcp(new ArNetPacket(server.findCommandFromName("popupList")));
         });
     server.addCycleTask("popup timeouts", this::checkTimeouts);
   }
