@@ -18,6 +18,7 @@ import org.jaria.net.data.CommandInfo;
 import org.jaria.net.data.ConfigLayout;
 import org.jaria.net.data.InfoStrings;
 import org.jaria.net.data.LocalizationSnapshot;
+import org.jaria.net.data.MapBinaryLayout;
 import org.jaria.net.data.MapData;
 import org.jaria.net.data.Particles;
 import org.jaria.net.data.PathSnapshot;
@@ -64,6 +65,8 @@ final class RobotLink implements AutoCloseable {
     on("getLocPoints", Particles::read, v -> state.particles = v);
     on("getPathSnapshot", PathSnapshot::read, v -> state.path = v);
     extras = new LinkExtras(client, state, changed);
+    // Another client changed the configuration (ArNetworking's configUpdated): read it again.
+    client.addHandler("configUpdated", p -> fetchConfig());
     on("getStrings", p -> InfoStrings.read(p, stringLabels), v -> state.strings = v);
     on("getVideo", VideoFrame::read, v -> state.video = v);
     client.addHandler(
@@ -104,14 +107,21 @@ final class RobotLink implements AutoCloseable {
                 });
   }
 
-  /** Asks for the map's name and then the map (ArNetworking's getMapName and getMap). */
+  /**
+   * Asks for the map's name and then the map: with getMapBinary (its points as numbers, smaller,
+   * what MobileEyes uses) if the server has it, else with getMap (text).
+   */
   private void fetchMap() {
-    if (!client.dataExists("getMap")) {
+    boolean binary = client.dataExists("getMapBinary");
+    if (!binary && !client.dataExists("getMap")) {
       return;
     }
     CompletableFuture<?> unused =
         request("getMapName")
-            .thenCompose(n -> request("getMap").thenApply(m -> mapView(m, n.bufToStr())))
+            .thenCompose(
+                n ->
+                    request(binary ? "getMapBinary" : "getMap")
+                        .thenApply(m -> mapView(m, n.bufToStr(), binary)))
             .thenAccept(
                 v -> {
                   state.map = v;
@@ -149,8 +159,11 @@ final class RobotLink implements AutoCloseable {
         });
   }
 
-  private MonitorState.MapView mapView(ArNetPacket p, String name) {
-    MapData d = MapData.read(p, name, mapVersion.get());
+  private MonitorState.MapView mapView(ArNetPacket p, String name, boolean binary) {
+    MapData d =
+        binary
+            ? new MapData(name, mapVersion.get(), MapBinaryLayout.readText(p))
+            : MapData.read(p, name, mapVersion.get());
     try {
       ArMap m = d.toArMap();
       ArMapPoints pts = m.getPoints();
@@ -187,6 +200,9 @@ final class RobotLink implements AutoCloseable {
           client.request("getSensorCurrent", FAST_MS, ArNetPacketArgs.of("sonar"));
     }
     fetchConfig();
+    if (client.dataExists("configUpdated")) {
+      subscribe("configUpdated", -1);
+    }
     if (client.dataExists("mapUpdated")) {
       subscribe("mapUpdated", -1);
     }
