@@ -32,8 +32,10 @@ import org.jaria.robot.ArRobot;
 /**
  * The thesis's guiServer (§6.1) assembled: an {@link ArServerBase} with every service a monitor
  * uses — robot state, range readings, the map, information strings, custom commands, the four modes
- * (stop by default, teleoperation, wander, goto), relocalization — plus localization, path
- * planning, configuration and video when their providers are given.
+ * (stop by default, teleoperation, wander, goto with {@code home}), relocalization, drawings and
+ * popups — plus localization, path planning, configuration and video when their providers are
+ * given. The data are registered in a fixed order (ARIA's recorded clients use their numbers); what
+ * was added later comes last (see {@code aria-net/PROTOCOL.md} §8).
  *
  * <pre>{@code
  * ArnlNavigation nav = ArnlNavigation.create(robot, map, ArnlNavigation.Mode.THREADED, 1);

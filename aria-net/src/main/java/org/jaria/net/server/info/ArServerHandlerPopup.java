@@ -1,7 +1,9 @@
 package org.jaria.net.server.info;
 
 import com.google.errorprone.annotations.concurrent.GuardedBy;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import java.util.function.LongSupplier;
 import org.jaria.net.ArNetPacket;
@@ -46,7 +48,7 @@ public final class ArServerHandlerPopup {
   private final PopupBook book = new PopupBook();
 
   @GuardedBy("this")
-  private final java.util.Map<Integer, Callback> callbacks = new java.util.HashMap<>();
+  private final Map<Integer, Callback> callbacks = new HashMap<>();
 
   /**
    * Registers the popup data with {@code server}; timeouts are checked on the server's robot cycle

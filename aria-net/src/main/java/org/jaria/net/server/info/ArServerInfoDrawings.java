@@ -1,5 +1,6 @@
 package org.jaria.net.server.info;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -48,7 +49,9 @@ public final class ArServerInfoDrawings {
   private static final String GROUP = "SensorInfo";
 
   private final ArServerBase server;
+
   // Written while the program sets up its drawings, read by the workers answering the lists.
+  @GuardedBy("drawings")
   private final Map<String, ArDrawingData> drawings = new TreeMap<>(String.CASE_INSENSITIVE_ORDER);
 
   /** Registers {@code "listDrawings"} and {@code "getDrawingList"} with {@code server}. */
