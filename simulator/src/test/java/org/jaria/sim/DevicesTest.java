@@ -138,8 +138,7 @@ class DevicesTest {
       // ADSEL is 35, an SRISim laser command by default: ARCOS meanings for this one. No gripper:
       // a gripper's switches would take DIGIN bits 0-5.
       SimRobot r =
-          w.addRobot(
-              RobotOptions.of("p3dx-sh").withLegacyLaserCommands(false).withGripper(false));
+          w.addRobot(RobotOptions.of("p3dx-sh").withLegacyLaserCommands(false).withGripper(false));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
       r.setDigitalInputs(0xA5);
       r.setAnalog(2, 1000);
