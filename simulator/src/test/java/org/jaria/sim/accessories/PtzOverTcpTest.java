@@ -73,8 +73,10 @@ class PtzOverTcpTest {
       camera.setFollowAuxPtz(true);
       ArRobot robot = connect(w);
       try {
-        ArSonyPTZ ptz = new ArSonyPTZ(robot);
-        assertTrue(ptz.init());
+        // tag::sony[]
+        ArSonyPTZ ptz = new ArSonyPTZ(robot); // a Sony EVI-D30 on the robot's AUX1 port
+        assertTrue(ptz.init()); // VISCA broadcasts, then pan 0, tilt 0, zoom 0
+        // end::sony[]
         // init: two broadcasts back, then pan-tilt and zoom each acknowledged and completed
         await(w, () -> ptz.getCompletionCount() == 2 && ptz.getRepliesOutstanding() == 0, "init");
         assertEquals(2, ptz.getAckCount());
@@ -86,7 +88,11 @@ class PtzOverTcpTest {
         assertEquals(30, p.panRightDeg(), 0.06, "the head turned right 30°");
         assertEquals(-10, p.tiltUpDeg(), 0.06);
 
+        // tag::inquiry[]
+        // inquiries out through TTY2; the answers come back through GETAUX / SERAUXpac and fill
+        // getReportedPan(), getReportedTilt() and getReportedZoom() a few cycles later
         assertTrue(ptz.requestPosition());
+        // end::inquiry[]
         await(w, () -> ptz.getReportedZoom() == 512, "position answers");
         assertEquals(30, ptz.getReportedPan(), 0.06);
         assertEquals(-10, ptz.getReportedTilt(), 0.06);
