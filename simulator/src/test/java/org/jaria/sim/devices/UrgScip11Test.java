@@ -97,10 +97,12 @@ class UrgScip11Test {
         UrgEmulator urg =
             UrgEmulator.startScip11(device, LaserSensor.of(robot), DeviceFaults.NONE, 20);
         ArUrg laser = new ArUrg("urg", new UrgSettings(-90, 90, 1, 19200, 115200))) {
-      laser.setProtocol(ArUrg.Protocol.SCIP_1_1);
+      // tag::scip11[]
+      laser.setProtocol(ArUrg.Protocol.SCIP_1_1); // ARIA's ArUrg: V, S, then a G per scan
       ArSerialConnection port = new ArSerialConnection(pty.a.toString(), 19200, Clock.system());
       laser.setDeviceConnection(port);
       assertTrue(laser.blockingConnect(), laser.getConnectFailure());
+      // end::scip11[]
       assertEquals(115200, port.getBaud(), "S switched the rate");
       assertEquals(115200, device.getBaud());
       assertEquals("SCIP 1.1", laser.getVersion().get("PROT"));
