@@ -1,10 +1,12 @@
 package org.jaria.sim.accessories;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.time.Duration;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
@@ -18,6 +20,7 @@ import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
 import org.jaria.sim.camera.SimCamera;
+import org.jaria.sim.client.SimulatedRobot;
 import org.jaria.sim.serial.PtzHead;
 import org.junit.jupiter.api.Test;
 
@@ -145,6 +148,25 @@ class PtzOverTcpTest {
       } finally {
         robot.stopRunning();
         robot.disconnect();
+      }
+    }
+  }
+
+  @Test
+  void withNothingOnTheAuxPortTheDriverStopsAskingForAnswers() {
+    try (SimWorld w = SimWorld.empty(SimOptions.builder().watchdogMillis(0).build())) {
+      SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withPtzType("none"));
+      try (SimulatedRobot sim = SimulatedRobot.connect(w, r)) {
+        ArSonyPTZ ptz = new ArSonyPTZ(sim.robot());
+        assertTrue(ptz.init());
+        assertTrue(ptz.requestPosition());
+        assertTrue(
+            sim.runUntil(() -> ptz.getRepliesOutstanding() == 0, Duration.ofSeconds(5)),
+            "an empty SERAUXpac means nothing is attached");
+        sim.runMillis(1000);
+        assertEquals(0, ptz.getReplyBytes());
+        assertFalse(ptz.canGetRealPanTilt());
+        assertNull(r.getPtzPointing());
       }
     }
   }
