@@ -157,17 +157,23 @@ public class ArDPPTU extends ArPTZ {
   }
 
   private void take(String answer) {
-    if (answer.startsWith("!")) {
+    try {
+      if (answer.startsWith("!")) {
+        errors.incrementAndGet();
+        lastError = answer;
+      } else if (answer.startsWith(PAN_ANSWER)) {
+        double steps = Double.parseDouble(answer.substring(PAN_ANSWER.length()).strip());
+        setReportedPanTilt(steps * model.panDegPerStep, getReportedTiltOrZero());
+      } else if (answer.startsWith(TILT_ANSWER)) {
+        double steps = Double.parseDouble(answer.substring(TILT_ANSWER.length()).strip());
+        setReportedPanTilt(getReportedPanOrZero(), steps * model.tiltDegPerStep);
+      } else if (answer.startsWith("*")) {
+        done.incrementAndGet();
+      }
+    } catch (NumberFormatException e) {
+      // a garbled position answer: counted, and the last good position stays
       errors.incrementAndGet();
       lastError = answer;
-    } else if (answer.startsWith(PAN_ANSWER)) {
-      double steps = Double.parseDouble(answer.substring(PAN_ANSWER.length()).strip());
-      setReportedPanTilt(steps * model.panDegPerStep, getReportedTiltOrZero());
-    } else if (answer.startsWith(TILT_ANSWER)) {
-      double steps = Double.parseDouble(answer.substring(TILT_ANSWER.length()).strip());
-      setReportedPanTilt(getReportedPanOrZero(), steps * model.tiltDegPerStep);
-    } else if (answer.startsWith("*")) {
-      done.incrementAndGet();
     }
   }
 
