@@ -118,4 +118,20 @@ class UrgScip11Test {
       assertTrue(urg.isRunning());
     }
   }
+
+  @Test
+  void theScip20DriverSwitchesAUrgThatStartsInScip11() throws Exception {
+    PipeConnection.Pair pipe = PipeConnection.pair(Clock.system());
+    pipe.a().open();
+    pipe.b().open();
+    try (UrgEmulator urg =
+            UrgEmulator.startScip11(pipe.b(), LaserSensor.of(robot), DeviceFaults.NONE, 20);
+        ArUrg laser = new ArUrg()) {
+      laser.setDeviceConnection(pipe.a());
+      assertTrue(laser.blockingConnect(), laser.getConnectFailure());
+      assertEquals("SCIP 2.0", laser.getVersion().get("PROT"), "SCIP2.0 switched it");
+      assertTrue(laser.waitForScans(3, PATIENCE_MS));
+      assertTrue(urg.getScansSent() >= 2, "MD streams");
+    }
+  }
 }
