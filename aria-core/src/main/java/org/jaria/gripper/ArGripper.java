@@ -11,41 +11,73 @@ import org.jaria.robot.ArRobot;
 
 /**
  * A Pioneer gripper: two paddles and a lift (ARIA's {@code ArGripper}). Commands go to the robot as
- * GRIPPER commands; the state comes from the GRIPPERpac the robot is asked to stream on connecting
- * (GRIPREQUEST 2), or from the SIP's GRIP_STATE byte until the first GRIPPERpac arrives. GRIP_STATE
- * bits: paddles open, closed, moving, error; lift up, down, moving, error.
+ * GRIPPER commands. The state is the gripper's switch byte (see {@link GripState}), read where ARIA
+ * reads it for the gripper's {@link Type}:
+ *
+ * <ul>
+ *   <li>{@link Type#QUERYTYPE} (the default) asks the robot for one GRIPPERpac (GRIPREQUEST 2) on
+ *       connecting; its first byte says how the gripper is wired: 1 (Pioneer gripper) becomes
+ *       {@link Type#USERIO}, 2 {@link Type#GENIO}, anything else {@link Type#NOGRIPPER}; then the
+ *       packets are stopped (GRIPREQUEST 0);
+ *   <li>{@link Type#USERIO}: switches from the user digital inputs (DIGIN), the moving bits (2 for
+ *       the paddles, 6 for the lift) from the SIP byte after GRIP_STATE ({@link
+ *       ArRobot#getAnalogPortSelected()}), as ARIA reads the high byte of its two-byte field;
+ *   <li>{@link Type#GENIO}: everything from that SIP byte;
+ *   <li>{@link Type#GRIPPAC}: everything from the streamed GRIPPERpacs.
+ * </ul>
  */
 public class ArGripper {
 
-  /** Where the gripper's state comes from (ARIA's gripper types JAria reads). */
+  /** How the gripper's state reaches the client (ARIA's gripper types). */
   public enum Type {
-    /** Not known yet: no GRIPPERpac has arrived. */
+    /** Ask the robot with a GRIPPERpac, then use what it says. */
     QUERYTYPE,
-    /** The robot sends GRIPPERpacs. */
+    /** General I/O: the SIP byte after GRIP_STATE. */
+    GENIO,
+    /** User I/O: the digital inputs. */
+    USERIO,
+    /** Streamed GRIPPERpacs. */
     GRIPPAC,
-    /** The robot says it has no gripper. */
-    NOGRIPPER
-  }
+    /** No gripper. */
+    NOGRIPPER;
 
-  private final ArRobot robot;
-  private final Runnable onConnect = this::requestPackets;
-  private volatile Type type = Type.QUERYTYPE;
-  private volatile int packetState = -1;
-  private volatile int graspTime;
-  private final AtomicLong packets = new AtomicLong();
-
-  /** A gripper on {@code robot}; asks for its packets now (if connected) and on every connect. */
-  public ArGripper(ArRobot robot) {
-    this.robot = robot;
-    robot.addPacketHandler(this::handle, ArListPos.FIRST);
-    robot.addConnectCB(onConnect);
-    if (robot.isConnected()) {
-      requestPackets();
+    /** The type a GRIPPERpac's first byte stands for: 1 user I/O, 2 general I/O, else none. */
+    public static Type fromQuery(int hasGripper) {
+      return switch (hasGripper) {
+        case 1 -> USERIO;
+        case 2 -> GENIO;
+        default -> NOGRIPPER;
+      };
     }
   }
 
-  private void requestPackets() {
-    robot.comInt(ArCommands.GRIPREQUEST, 2);
+  private final ArRobot robot;
+  private final Runnable onConnect = this::connectHandler;
+  private volatile Type type;
+  private volatile int switches;
+  private volatile int graspTime;
+  private final AtomicLong packets = new AtomicLong();
+
+  /** A gripper on {@code robot} whose type is asked of the robot. */
+  public ArGripper(ArRobot robot) {
+    this(robot, Type.QUERYTYPE);
+  }
+
+  /** A gripper on {@code robot} of {@code type}; asks for packets now (if connected) and later. */
+  public ArGripper(ArRobot robot, Type type) {
+    this.robot = robot;
+    this.type = type;
+    robot.addPacketHandler(this::handle, ArListPos.FIRST);
+    robot.addConnectCB(onConnect);
+    if (robot.isConnected()) {
+      connectHandler();
+    }
+  }
+
+  private void connectHandler() {
+    if (type == Type.GRIPPAC || type == Type.QUERYTYPE) {
+      robot.comInt(ArCommands.GRIPREQUEST, 2);
+    }
   }
 
   private boolean handle(ArRobotPacket p) {
@@ -56,11 +88,22 @@ public class ArGripper {
     if (g == null) {
       return true;
     }
-    type = g.hasGripper() == 0 ? Type.NOGRIPPER : Type.GRIPPAC;
+    switches = g.gripState();
     graspTime = g.graspTime();
-    packetState = g.gripState();
     packets.incrementAndGet();
+    if (type == Type.QUERYTYPE) {
+      type = Type.fromQuery(g.hasGripper());
+      robot.comInt(ArCommands.GRIPREQUEST, 0);
+    } else if (type != Type.GRIPPAC) {
+      robot.comInt(ArCommands.GRIPREQUEST, 0); // a packet after the stop was asked for
+    }
     return true;
+  }
+
+  /** Changes the type; GRIPPAC and QUERYTYPE ask for packets again. */
+  public void setType(Type t) {
+    type = t;
+    connectHandler();
   }
 
   private boolean command(int arg) {
@@ -112,67 +155,82 @@ public class ArGripper {
     return command(ArGripperCommands.GRIPPER_HALT);
   }
 
-  /** Sets how hard the paddles squeeze (the time, in 20 ms units, they keep pushing). */
+  /** Sets how long the paddles keep squeezing after both touch, in 20 ms units. */
   public boolean gripPressure(int mSecIntervals) {
-    return robot.comInt(ArCommands.GRIPPERVAL, mSecIntervals)
-        && command(ArGripperCommands.GRIP_PRESSURE);
+    return command(ArGripperCommands.GRIP_PRESSURE)
+        && robot.comInt(ArCommands.GRIPPERVAL, mSecIntervals);
   }
 
   /** Moves the lift for {@code mSecIntervals} ms (positive up, negative down). */
   public boolean liftCarry(int mSecIntervals) {
-    return robot.comInt(ArCommands.GRIPPERVAL, mSecIntervals)
-        && command(ArGripperCommands.LIFT_CARRY);
+    return command(ArGripperCommands.LIFT_CARRY)
+        && robot.comInt(ArCommands.GRIPPERVAL, mSecIntervals);
   }
 
-  /** The GRIP_STATE byte: from the last GRIPPERpac, else from the SIP. */
-  public int getGripStateByte() {
-    int s = packetState;
-    return s >= 0 ? s : robot.getGripState();
+  private boolean known() {
+    Type t = type;
+    return t == Type.GENIO || t == Type.USERIO || t == Type.GRIPPAC;
   }
 
-  /** 1 if the paddles are open, 2 if closed, 0 if between (ARIA's values). */
-  public int getGripState() {
-    int s = getGripStateByte();
-    if ((s & GripState.PADDLES_OPEN) != 0) {
-      return 1;
-    }
-    if ((s & GripState.PADDLES_CLOSED) != 0) {
-      return 2;
-    }
-    return 0;
+  /** The byte the switches are read from for this type (paddles, beams, lift limits). */
+  private int switchByte() {
+    return switch (type) {
+      case GENIO -> robot.getAnalogPortSelected();
+      case USERIO -> robot.getDigIn();
+      default -> switches;
+    };
   }
 
-  /** Whether the paddles are moving. */
+  /** The byte the moving bits are read from for this type. */
+  private int movingByte() {
+    return type == Type.GRIPPAC ? switches : robot.getAnalogPortSelected();
+  }
+
+  /** The switch byte as this gripper's type reads it (0 while the type is not known). */
+  public int getSwitches() {
+    return known() ? switchByte() : 0;
+  }
+
+  /** Whether the paddles are moving (USERIO: bit 2 of the SIP byte, else bit 7). */
   public boolean isGripMoving() {
-    return (getGripStateByte() & GripState.PADDLES_MOVING) != 0;
+    if (!known()) {
+      return false;
+    }
+    int bit = type == Type.USERIO ? GripState.OUTER_BEAM : GripState.GRIP_MOVING;
+    return (movingByte() & bit) != 0;
   }
 
   /** Whether the lift is moving. */
   public boolean isLiftMoving() {
-    return (getGripStateByte() & GripState.LIFT_MOVING) != 0;
+    return known() && (movingByte() & GripState.LIFT_MOVING) != 0;
+  }
+
+  /** 0 no paddle touches, 1 the left, 2 the right, 3 both. */
+  public int getPaddleState() {
+    return known() ? GripState.paddleState(switchByte()) : 0;
+  }
+
+  /** 1 if the paddles are open, 2 if closed, 0 if between (ARIA's values). */
+  public int getGripState() {
+    return known() ? GripState.gripState(switchByte()) : 0;
+  }
+
+  /** 0 no break beam broken, 1 the inner, 2 the outer, 3 both. */
+  public int getBreakBeamState() {
+    return known() ? GripState.breakBeamState(switchByte()) : 0;
   }
 
   /** Whether the lift is all the way up or down. */
   public boolean isLiftMaxed() {
-    return (getGripStateByte() & (GripState.LIFT_UP | GripState.LIFT_DOWN)) != 0;
+    return known() && GripState.isLiftMaxed(switchByte());
   }
 
-  /** Whether the lift is all the way up. */
-  public boolean isLiftUp() {
-    return (getGripStateByte() & GripState.LIFT_UP) != 0;
-  }
-
-  /** Whether the paddles or the lift report an error. */
-  public boolean hasError() {
-    return (getGripStateByte() & (GripState.PADDLES_ERROR | GripState.LIFT_ERROR)) != 0;
-  }
-
-  /** Where the state comes from. */
+  /** How the state is read. */
   public Type getType() {
     return type;
   }
 
-  /** The grasp time the robot reports. */
+  /** The grasp time from the last GRIPPERpac, 20 ms units. */
   public int getGraspTime() {
     return graspTime;
   }
@@ -182,20 +240,30 @@ public class ArGripper {
     return packets.get();
   }
 
-  /** A one-line description of the state, as ARIA's {@code logState} prints. */
+  /** A one-line description of the state in the layout of ARIA's {@code logState}. */
   public String stateString() {
-    String paddles =
+    Type t = type;
+    if (t == Type.NOGRIPPER) {
+      return "There is no gripper.";
+    }
+    if (t == Type.QUERYTYPE) {
+      return "Querying gripper type.";
+    }
+    String lift = (isLiftMaxed() ? "maxed" : "between") + (isLiftMoving() ? "_moving" : "");
+    String grip =
         switch (getGripState()) {
-          case 1 -> "open";
-          case 2 -> "closed";
-          default -> "between";
+              case 1 -> "open";
+              case 2 -> "closed";
+              default -> "between";
+            }
+            + (isGripMoving() ? "_moving" : "");
+    String beam =
+        switch (getBreakBeamState()) {
+          case 1 -> "inner";
+          case 2 -> "outter"; // ARIA's spelling, so logs compare equal
+          case 3 -> "both";
+          default -> "none";
         };
-    String lift = isLiftMaxed() ? "maxed" : "between";
-    return "Grip: "
-        + paddles
-        + (isGripMoving() ? "_moving" : "")
-        + "  Lift: "
-        + lift
-        + (isLiftMoving() ? "_moving" : "");
+    return String.format("Lift: %15s  Grip: %15s  BreakBeam: %10s", lift, grip, beam);
   }
 }

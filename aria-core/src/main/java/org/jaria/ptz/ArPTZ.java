@@ -8,20 +8,100 @@ import org.jaria.robot.ArRobot;
 /**
  * A pan-tilt(-zoom) unit (ARIA's {@code ArPTZ}): commands go out of the robot's AUX1 port (the TTY2
  * command carries their bytes) or, if a connection is set with {@link #setDeviceConnection},
- * straight to that serial port. Angles are degrees, clamped to the unit's limits; the last
- * commanded position is remembered (these units are not asked where they are).
+ * straight to that serial port. Angles are degrees (pan positive to the right, tilt positive up, as
+ * ARIA), clamped to the unit's limits; the last commanded position is remembered. Through the
+ * robot, the unit's answers come back as SERAUXpacs (see {@link #requestPosition()}): a unit that
+ * can say where it points reports that in {@link #getReportedPan()} and the like.
  */
 public abstract class ArPTZ {
 
   private final ArRobot robot;
+  private final AuxReplyPump pump;
   private volatile ArDeviceConnection connection;
+  private volatile double reportedPan = Double.NaN;
+  private volatile double reportedTilt = Double.NaN;
+  private volatile int reportedZoom = -1;
   private volatile double pan;
   private volatile double tilt;
   private volatile int zoom;
 
   /** A unit on {@code robot}'s AUX1 port (robot may be null if a connection is set). */
+  @SuppressWarnings("this-escape") // the pump calls back only once the robot delivers packets
   protected ArPTZ(ArRobot robot) {
     this.robot = robot;
+    this.pump = robot == null ? null : new AuxReplyPump(robot, this::replyBytes);
+  }
+
+  /**
+   * Says that the unit will answer {@code n} more bytes to what was just sent, so they are fetched
+   * from the robot's AUX1 port (nothing happens on a direct serial connection).
+   */
+  protected void expectReply(int n) {
+    if (pump != null && connection == null) {
+      pump.expect(n);
+    }
+  }
+
+  /** Forgets the answers still expected and empties the robot's AUX1 buffer. */
+  public void flushReplies() {
+    if (pump != null) {
+      pump.flush();
+    }
+  }
+
+  /** Bytes of answer still expected from the unit. */
+  public int getRepliesOutstanding() {
+    return pump == null ? 0 : pump.outstanding();
+  }
+
+  /** Bytes the unit has answered through the robot. */
+  public long getReplyBytes() {
+    return pump == null ? 0 : pump.bytesReceived();
+  }
+
+  /**
+   * Takes the bytes of one SERAUXpac, in order (the robot's thread calls it). Units that answer
+   * parse them here; the default ignores them.
+   */
+  protected void replyBytes(byte[] data) {}
+
+  /**
+   * Asks the unit where it points; the answer arrives later in {@link #getReportedPan()} and the
+   * like. False if the unit cannot be asked or the request could not be sent.
+   */
+  public boolean requestPosition() {
+    return false;
+  }
+
+  /** Records where the unit said it points (pan, tilt in degrees). */
+  protected void setReportedPanTilt(double panDeg, double tiltDeg) {
+    reportedPan = panDeg;
+    reportedTilt = tiltDeg;
+  }
+
+  /** Records the zoom the unit reported. */
+  protected void setReportedZoom(int z) {
+    reportedZoom = z;
+  }
+
+  /** Whether the unit has said where it points. */
+  public boolean canGetRealPanTilt() {
+    return !Double.isNaN(reportedPan);
+  }
+
+  /** The pan the unit last reported, degrees (NaN before an answer). */
+  public double getReportedPan() {
+    return reportedPan;
+  }
+
+  /** The tilt the unit last reported, degrees (NaN before an answer). */
+  public double getReportedTilt() {
+    return reportedTilt;
+  }
+
+  /** The zoom the unit last reported (−1 before an answer). */
+  public int getReportedZoom() {
+    return reportedZoom;
   }
 
   /** Sends to this (open) serial connection instead of the robot's AUX port. */

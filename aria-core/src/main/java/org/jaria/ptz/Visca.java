@@ -40,6 +40,28 @@ public final class Visca {
     return b;
   }
 
+  /** Pan-tilt position inquiry; the camera answers {@code 90 50} + 8 nibbles + {@code FF}. */
+  public static byte[] panTiltInquiry() {
+    return bytes(0x81, 0x09, 0x06, 0x12, 0xff);
+  }
+
+  /** Zoom position inquiry; the camera answers {@code 90 50} + 4 nibbles + {@code FF}. */
+  public static byte[] zoomInquiry() {
+    return bytes(0x81, 0x09, 0x04, 0x47, 0xff);
+  }
+
+  /** Bytes a camera answers to a command: acknowledge and completion, 3 bytes each. */
+  public static final int COMMAND_REPLY_BYTES = 6;
+
+  /** Bytes the two broadcasts of {@link #init()} come back as (5 + 4). */
+  public static final int INIT_REPLY_BYTES = 9;
+
+  /** Bytes of the answer to {@link #panTiltInquiry()}. */
+  public static final int PAN_TILT_ANSWER_BYTES = 11;
+
+  /** Bytes of the answer to {@link #zoomInquiry()}. */
+  public static final int ZOOM_ANSWER_BYTES = 7;
+
   /** Back-lighting compensation on or off. */
   public static byte[] backLight(boolean on) {
     return bytes(0x81, 0x01, 0x04, 0x33, on ? 0x02 : 0x03, 0xff);

@@ -48,7 +48,8 @@ class PtzBytesTest {
     sony.panTilt(200, -25);
     assertEquals(95, sony.getPan(), "clamped to the unit's limit");
     assertEquals(-25, sony.getTilt());
-    assertArrayEquals(hex("81 01 06 02 18 14 00 03 07 00 0F 0E 0D 04 FF"), drain(pipe.b()));
+    // 95° is 836 = 0x344 pan units (0x370 is 100°); −25° is −300 = 0xFED4
+    assertArrayEquals(hex("81 01 06 02 18 14 00 03 04 04 0F 0E 0D 04 FF"), drain(pipe.b()));
     sony.zoom(5000);
     assertEquals(1023, sony.getZoom());
     assertArrayEquals(Visca.zoom(1023), drain(pipe.b()));

@@ -2,6 +2,7 @@ package org.jaria.sim;
 
 import java.util.Locale;
 import org.jaria.geom.ArPose;
+import org.jaria.sim.serial.AuxDevices;
 
 /**
  * What to put into a world with {@link SimWorld#addRobot(RobotOptions)}.
@@ -24,6 +25,8 @@ import org.jaria.geom.ArPose;
  * @param srisimCompat whether the rest of SRISim's old commands work too (MobileSim's {@code
  *     --srisim-compat}): 62 ends the simulator, 66 and 67 set the true x and y, 69 moves the robot
  *     back to its start; off by default, when 62, 66 and 67 keep their ARCOS meanings.
+ * @param ptzType the camera or pan-tilt unit on AUX1, by ARIA's {@code PTZType} names: {@code vcc4}
+ *     (default), {@code sony}, {@code dpptu} or {@code none} (see {@link AuxDevices})
  */
 public record RobotOptions(
     String subtype,
@@ -34,7 +37,8 @@ public record RobotOptions(
     boolean gripper,
     int port,
     boolean legacyLaserCommands,
-    boolean srisimCompat) {
+    boolean srisimCompat,
+    String ptzType) {
 
   /** Checks and normalises the values (the subtype is lower-cased). */
   public RobotOptions {
@@ -45,6 +49,7 @@ public record RobotOptions(
     if (port < -1 || port > 65535) {
       throw new IllegalArgumentException("port must be -1 (automatic) or 0..65535, was " + port);
     }
+    ptzType = AuxDevices.normalize(ptzType);
     if (legacyLaserCommands && !laser) {
       throw new IllegalArgumentException(
           "legacy laser commands need a laser: add withLaser(true) (or --laser) first");
@@ -57,19 +62,28 @@ public record RobotOptions(
    */
   public static RobotOptions of(String subtype) {
     boolean laser = subtype != null && RobotModels.carriesLaser(subtype);
-    return new RobotOptions(subtype, null, null, laser, false, true, -1, laser, false);
+    return new RobotOptions(subtype, null, null, laser, false, true, -1, laser, false, "vcc4");
   }
 
   /** These options with another name. */
   public RobotOptions withName(String n) {
     return new RobotOptions(
-        subtype, n, startPose, laser, gyro, gripper, port, legacyLaserCommands, srisimCompat);
+        subtype,
+        n,
+        startPose,
+        laser,
+        gyro,
+        gripper,
+        port,
+        legacyLaserCommands,
+        srisimCompat,
+        ptzType);
   }
 
   /** These options with another start pose. */
   public RobotOptions withStartPose(ArPose p) {
     return new RobotOptions(
-        subtype, name, p, laser, gyro, gripper, port, legacyLaserCommands, srisimCompat);
+        subtype, name, p, laser, gyro, gripper, port, legacyLaserCommands, srisimCompat, ptzType);
   }
 
   /**
@@ -79,25 +93,70 @@ public record RobotOptions(
   public RobotOptions withLaser(boolean on) {
     boolean legacy = on && (laser ? legacyLaserCommands : true);
     return new RobotOptions(
-        subtype, name, startPose, on, gyro, gripper, port, legacy, srisimCompat);
+        subtype, name, startPose, on, gyro, gripper, port, legacy, srisimCompat, ptzType);
   }
 
   /** These options with or without a gyro. */
   public RobotOptions withGyro(boolean on) {
     return new RobotOptions(
-        subtype, name, startPose, laser, on, gripper, port, legacyLaserCommands, srisimCompat);
+        subtype,
+        name,
+        startPose,
+        laser,
+        on,
+        gripper,
+        port,
+        legacyLaserCommands,
+        srisimCompat,
+        ptzType);
   }
 
   /** These options with or without a gripper. */
   public RobotOptions withGripper(boolean on) {
     return new RobotOptions(
-        subtype, name, startPose, laser, gyro, on, port, legacyLaserCommands, srisimCompat);
+        subtype,
+        name,
+        startPose,
+        laser,
+        gyro,
+        on,
+        port,
+        legacyLaserCommands,
+        srisimCompat,
+        ptzType);
+  }
+
+  /**
+   * These options with another device on AUX1: {@code vcc4}, {@code sony}, {@code dpptu}, {@code
+   * none}.
+   */
+  public RobotOptions withPtzType(String type) {
+    return new RobotOptions(
+        subtype,
+        name,
+        startPose,
+        laser,
+        gyro,
+        gripper,
+        port,
+        legacyLaserCommands,
+        srisimCompat,
+        type);
   }
 
   /** These options with another TCP port. */
   public RobotOptions withPort(int p) {
     return new RobotOptions(
-        subtype, name, startPose, laser, gyro, gripper, p, legacyLaserCommands, srisimCompat);
+        subtype,
+        name,
+        startPose,
+        laser,
+        gyro,
+        gripper,
+        p,
+        legacyLaserCommands,
+        srisimCompat,
+        ptzType);
   }
 
   /**
@@ -105,12 +164,13 @@ public record RobotOptions(
    * them (see {@link #legacyLaserCommands()}); turning them on needs a laser.
    */
   public RobotOptions withLegacyLaserCommands(boolean on) {
-    return new RobotOptions(subtype, name, startPose, laser, gyro, gripper, port, on, srisimCompat);
+    return new RobotOptions(
+        subtype, name, startPose, laser, gyro, gripper, port, on, srisimCompat, ptzType);
   }
 
   /** These options with or without SRISim's other old commands (see {@link #srisimCompat()}). */
   public RobotOptions withSrisimCompat(boolean on) {
     return new RobotOptions(
-        subtype, name, startPose, laser, gyro, gripper, port, legacyLaserCommands, on);
+        subtype, name, startPose, laser, gyro, gripper, port, legacyLaserCommands, on, ptzType);
   }
 }

@@ -9,6 +9,7 @@ import org.jaria.geom.ArPose;
 import org.jaria.protocol.DropCounters;
 import org.jaria.sim.robot.RobotBody;
 import org.jaria.sim.robot.RobotModel;
+import org.jaria.sim.serial.AuxDevices;
 import org.jaria.sim.server.ArcosSession;
 import org.jaria.sim.server.LogRateLimit;
 
@@ -101,6 +102,7 @@ final class RobotSlot {
       body.laser().setAcceptsLegacyCommands(true);
     }
     body.setSrisimCompat(o.srisimCompat());
+    body.setAuxDevice(1, AuxDevices.create(o.ptzType()));
     int base = options.basePort();
     int port = o.port() >= 0 ? o.port() : (base == 0 ? 0 : base + index);
     return new RobotSlot(world, body, o, port, factory);

@@ -10,6 +10,8 @@ import org.jaria.geom.ArPose;
 import org.jaria.protocol.DropCounters;
 import org.jaria.sim.robot.RobotBody;
 import org.jaria.sim.robot.RobotModel;
+import org.jaria.sim.serial.AuxSerialDevice;
+import org.jaria.sim.serial.PtzHead;
 import org.jaria.sim.server.ArcosSession;
 
 /**
@@ -300,6 +302,30 @@ public final class SimRobot {
     world.lock.lock();
     try {
       return slot.body.gripper() != null ? slot.body.gripper().state() : 0;
+    } finally {
+      world.lock.unlock();
+    }
+  }
+
+  /**
+   * Where the pan-tilt head on AUX1 points (see {@link RobotOptions#ptzType()}), or null if that
+   * port holds no such device.
+   */
+  public PtzHead.Pointing getPtzPointing() {
+    world.lock.lock();
+    try {
+      return slot.body.auxPort(1).device() instanceof PtzHead h ? h.pointing() : null;
+    } finally {
+      world.lock.unlock();
+    }
+  }
+
+  /** The name of the device on AUX1 ({@code vcc4}, {@code sony}, {@code dpptu}), or null. */
+  public String getAuxDeviceName() {
+    world.lock.lock();
+    try {
+      AuxSerialDevice d = slot.body.auxPort(1).device();
+      return d == null ? null : d.name();
     } finally {
       world.lock.unlock();
     }

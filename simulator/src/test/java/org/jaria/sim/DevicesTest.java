@@ -33,31 +33,37 @@ class DevicesTest {
       // GRIPREQUEST is 37, an SRISim laser command by default: ARCOS meanings for this one.
       SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withLegacyLaserCommands(false));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
-      assertEquals(GripState.PADDLES_CLOSED | GripState.LIFT_UP, r.getGripState(), "starts stored");
+      // stored: paddles closed (both paddle switches pressed, bits 4 and 5 clear), not open
+      // (bit 0 set), lift at its top (bit 1 clear), nothing moving
+      assertEquals(GripState.NOT_OPEN, r.getGripState(), "starts stored");
       c.comInt(ArCommands.GRIPPER, 8); // deploy: open paddles, lower lift
       w.step();
       int moving = r.getGripState();
-      assertTrue((moving & GripState.PADDLES_MOVING) != 0);
+      assertTrue((moving & GripState.GRIP_MOVING) != 0);
       assertTrue((moving & GripState.LIFT_MOVING) != 0);
+      assertEquals(0, GripState.paddleState(moving), "paddles leave their switches at once");
       w.advanceMillis((long) Gripper.PADDLE_TRAVEL_MS - 100);
-      assertTrue((r.getGripState() & GripState.PADDLES_MOVING) != 0, "paddles still moving");
+      assertTrue((r.getGripState() & GripState.GRIP_MOVING) != 0, "paddles still moving");
       w.advanceMillis(200);
-      assertEquals(GripState.PADDLES_OPEN, r.getGripState() & 0x0F);
+      assertEquals(1, GripState.gripState(r.getGripState()), "open");
       assertTrue((r.getGripState() & GripState.LIFT_MOVING) != 0, "the lift is slower");
+      assertFalse(GripState.isLiftMaxed(r.getGripState()));
       w.advanceMillis((long) (Gripper.LIFT_TRAVEL_MS - Gripper.PADDLE_TRAVEL_MS));
-      assertEquals(GripState.PADDLES_OPEN | GripState.LIFT_DOWN, r.getGripState());
+      int deployed = GripState.LEFT_FREE | GripState.RIGHT_FREE;
+      assertEquals(deployed, r.getGripState(), "open, lift down, still");
       assertEquals(r.getGripState(), c.lastSip().getGripState(), "GRIP_STATE in the SIP");
+      assertEquals(deployed, c.lastSip().getDigIn() & 0x3F, "and on DIGIN, where ARIA reads it");
       c.comInt(ArCommands.GRIPREQUEST, 1); // one packet
       GripperPacket g = GripperPacket.decode(c.awaitId(PacketIds.GRIPPER));
       assertEquals(1, g.hasGripper());
-      assertEquals(GripState.PADDLES_OPEN | GripState.LIFT_DOWN, g.gripState());
+      assertEquals(deployed, g.gripState());
       c.comInt(ArCommands.GRIPPER, 2); // close
       w.advanceMillis(1000);
       c.comInt(ArCommands.GRIPPER, 3); // stop half way
       w.advanceMillis(2000);
       int half = r.getGripState();
-      assertEquals(
-          0, half & (GripState.PADDLES_OPEN | GripState.PADDLES_CLOSED | GripState.PADDLES_MOVING));
+      assertEquals(0, GripState.gripState(half), "between");
+      assertEquals(0, half & GripState.GRIP_MOVING);
     }
   }
 
@@ -129,8 +135,10 @@ class DevicesTest {
   @Test
   void ioAndEncoderPacketsOnRequest() {
     try (SimWorld w = SimWorld.empty(OPTS)) {
-      // ADSEL is 35, an SRISim laser command by default: ARCOS meanings for this one.
-      SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withLegacyLaserCommands(false));
+      // ADSEL is 35, an SRISim laser command by default: ARCOS meanings for this one. No gripper:
+      // a gripper's switches would take DIGIN bits 0-5.
+      SimRobot r =
+          w.addRobot(RobotOptions.of("p3dx-sh").withLegacyLaserCommands(false).withGripper(false));
       ArcosTestClient c = new ArcosTestClient(w, r).open();
       r.setDigitalInputs(0xA5);
       r.setAnalog(2, 1000);

@@ -155,7 +155,7 @@ class PacketCodecsTest {
     JoystickPacket j = new JoystickPacket(1, 0, 512, 1000, 3);
     j.encode(p);
     assertEquals(j, JoystickPacket.decode(p));
-    GripperPacket g = new GripperPacket(1, GripState.PADDLES_OPEN | GripState.LIFT_UP, 10);
+    GripperPacket g = new GripperPacket(1, GripState.NOT_OPEN | GripState.LIFT_MOVING, 10);
     g.encode(p);
     assertEquals(g, GripperPacket.decode(p));
     GyroPacket gy = new GyroPacket(new int[] {512, 600}, new int[] {30, 31});

@@ -4,6 +4,7 @@ import java.util.List;
 import org.jaria.geom.ArPose;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
+import org.jaria.sim.serial.PtzHead;
 
 /**
  * A pan/tilt/zoom colour camera on a simulated robot (like the Canon VC-C4 of the thesis). It
@@ -39,6 +40,7 @@ public final class SimCamera {
   private volatile double pan;
   private volatile double tilt;
   private volatile int zoom;
+  private volatile boolean followAuxPtz;
   private long frame;
   private final long seed;
 
@@ -87,18 +89,41 @@ public final class SimCamera {
     zoom = Math.max(0, Math.min(MAX_ZOOM, z));
   }
 
+  /**
+   * Makes the camera point wherever the pan-tilt head on the robot's AUX1 port points (a Sony,
+   * Directed Perception or Canon unit driven over the wire), read each time the camera is used;
+   * off, {@link #setPanTilt} points it.
+   */
+  public void setFollowAuxPtz(boolean on) {
+    followAuxPtz = on;
+  }
+
+  private void followAux() {
+    if (!followAuxPtz) {
+      return;
+    }
+    PtzHead.Pointing p = robot.getPtzPointing();
+    if (p != null) {
+      setPanTilt(-p.panRightDeg(), p.tiltUpDeg()); // ARIA pans + right, this camera + left
+      setZoom((int) Math.round(p.zoomFraction() * MAX_ZOOM));
+    }
+  }
+
   /** Pan, degrees. */
   public double getPan() {
+    followAux();
     return pan;
   }
 
   /** Tilt, degrees. */
   public double getTilt() {
+    followAux();
     return tilt;
   }
 
   /** Zoom, 0 .. {@link #MAX_ZOOM}. */
   public int getZoom() {
+    followAux();
     return zoom;
   }
 
@@ -109,6 +134,7 @@ public final class SimCamera {
 
   /** Where the camera is and which way it looks (pan included), in world coordinates. */
   public ArPose getViewPose() {
+    followAux();
     ArPose p = robot.getTruePose();
     double r = Math.toRadians(p.th());
     return new ArPose(p.x() + mountX * Math.cos(r), p.y() + mountX * Math.sin(r), p.th() + pan);

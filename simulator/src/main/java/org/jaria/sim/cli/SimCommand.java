@@ -125,6 +125,14 @@ public final class SimCommand implements Callable<Integer> {
   @Option(names = "--no-laser", description = "No robot carries a laser")
   boolean noLaser;
 
+  @Option(
+      names = "--ptz-type",
+      paramLabel = "TYPE",
+      description =
+          "The camera or pan-tilt unit on every robot's AUX1 port, by ARIA's PTZType names: vcc4"
+              + " (default), sony, dpptu or none")
+  String ptzType = "vcc4";
+
   /** The old switch for what is now the default (SRISim laser commands on). */
   @Option(
       names = "--legacy-laser-commands",
@@ -243,7 +251,8 @@ public final class SimCommand implements Callable<Integer> {
       o = o.withLaser(laser);
     }
     return o.withLegacyLaserCommands(o.laser() && !noSrisimLaserCompat)
-        .withSrisimCompat(srisimCompat);
+        .withSrisimCompat(srisimCompat)
+        .withPtzType(ptzType);
   }
 
   /** The robot models to add, in order (none by default if there are robot factories). */

@@ -10,12 +10,18 @@ import java.util.concurrent.atomic.AtomicLong;
 import org.jaria.connection.ArDeviceConnection;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.laser.Scip;
+import org.jaria.laser.Scip11;
 import org.jaria.laser.UrgParams;
 
 /**
  * A Hokuyo URG-04LX as seen from its serial (or USB) port, measuring with a {@link LaserSensor}: it
  * answers the SCIP 2.0 requests a driver sends (SCIP2.0, VV, PP, BM, QT, RS, SS, GD/GS and MD/MS)
  * and, while an MD/MS request is running, sends one scan per period.
+ *
+ * <p>Started with {@link #startScip11}, it begins in SCIP 1.1, as a URG-04LX from the factory does:
+ * V (version), S (serial rate), G (one scan, 2-character distances), L (laser on/off), each
+ * answered by its echo, a one-character status ({@code 0} done, {@code 1} a bad parameter, {@code
+ * E} an unknown command) and an empty line; {@code SCIP2.0} switches it to SCIP 2.0.
  */
 public final class UrgEmulator extends EmulatedDevice {
 
@@ -29,6 +35,7 @@ public final class UrgEmulator extends EmulatedDevice {
   private String streamCommand;
   private int streamScansLeft;
   private long nextScanAt;
+  private boolean scip11;
 
   /**
    * A URG on {@code connection}.
@@ -52,6 +59,16 @@ public final class UrgEmulator extends EmulatedDevice {
     return e;
   }
 
+  /** Starts a URG emulator that speaks SCIP 1.1 until told {@code SCIP2.0}; close it to stop. */
+  public static UrgEmulator startScip11(
+      ArDeviceConnection connection, LaserSensor sensor, DeviceFaults faults, long periodMs)
+      throws IOException {
+    UrgEmulator e = new UrgEmulator(connection, sensor, faults, periodMs);
+    e.scip11 = true;
+    e.start();
+    return e;
+  }
+
   @Override
   protected void received(byte[] b, int n) throws IOException, InterruptedException {
     for (int i = 0; i < n; i++) {
@@ -69,7 +86,9 @@ public final class UrgEmulator extends EmulatedDevice {
   }
 
   private void handle(String cmd) throws IOException, InterruptedException {
-    if (cmd.equals("SCIP2.0")) {
+    if (scip11) {
+      handle11(cmd);
+    } else if (cmd.equals("SCIP2.0")) {
       reply(cmd, "0E"); // already in SCIP 2.0
     } else if (cmd.startsWith("VV")) {
       reply(
@@ -98,6 +117,72 @@ public final class UrgEmulator extends EmulatedDevice {
     } else {
       reply(cmd, "0E");
     }
+  }
+
+  private void handle11(String cmd) throws IOException, InterruptedException {
+    if (cmd.equals("SCIP2.0")) {
+      scip11 = false;
+      reply11(cmd, "0");
+    } else if (cmd.equals("V")) {
+      reply11(
+          cmd,
+          "0",
+          "VEND:Hokuyo Automatic Co.,Ltd.",
+          "PROD:SOKUIKI Sensor URG-04LX",
+          "FIRM:3.3.00,06/10/13(JAria emulator)",
+          "PROT:SCIP 1.1",
+          "SERI:H0000000",
+          "STAT:sensor is working normally");
+    } else if (cmd.startsWith("S") && cmd.length() == 14) {
+      int baud;
+      try {
+        baud = Integer.parseInt(cmd.substring(1, 7));
+      } catch (NumberFormatException e) {
+        baud = -1;
+      }
+      if (baud != 19200 && baud != 38400 && baud != 57600 && baud != 115200) {
+        reply11(cmd, "1");
+        return;
+      }
+      reply11(cmd, "0");
+      if (connection instanceof ArSerialConnection serial) {
+        serial.setBaud(baud);
+      }
+    } else if (cmd.startsWith("G") && cmd.length() == 9) {
+      int[] r;
+      try {
+        r =
+            new int[] {
+              Integer.parseInt(cmd.substring(1, 4)),
+              Integer.parseInt(cmd.substring(4, 7)),
+              Math.max(1, Integer.parseInt(cmd.substring(7, 9)))
+            };
+      } catch (NumberFormatException e) {
+        reply11(cmd, "1");
+        return;
+      }
+      if (!validRange(r)) {
+        reply11(cmd, "1");
+        return;
+      }
+      reply11(cmd, "0", Scip11.dataLines(encoded(r, 2)).toArray(String[]::new));
+    } else if (cmd.equals("L1") || cmd.equals("L0")) {
+      laserOn = cmd.equals("L1");
+      reply11(cmd, "0");
+    } else {
+      reply11(cmd, "E");
+    }
+  }
+
+  private void reply11(String echo, String status, String... lines)
+      throws IOException, InterruptedException {
+    StringBuilder sb = new StringBuilder();
+    sb.append(echo).append('\n').append(status).append('\n');
+    for (String l : lines) {
+      sb.append(l).append('\n');
+    }
+    sb.append('\n');
+    answer(sb.toString().getBytes(StandardCharsets.US_ASCII));
   }
 
   private void setBaud(String cmd) throws IOException, InterruptedException {
@@ -172,6 +257,16 @@ public final class UrgEmulator extends EmulatedDevice {
 
   /** Time stamp line, then the distance lines. */
   private List<String> scanLines(int[] r, int chars) {
+    long ms = TimeUnit.NANOSECONDS.toMillis(connection.clock().nanoTime() - startNanos);
+    String stamp = Scip.encode((int) (ms & 0xffffff), 4);
+    List<String> lines = new ArrayList<>();
+    lines.add(stamp + Scip.checksum(stamp));
+    lines.addAll(Scip.dataLines(encoded(r, chars)));
+    return lines;
+  }
+
+  /** The distances of steps {@code r} encoded in {@code chars} characters each. */
+  private String encoded(int[] r, int chars) {
     int count = (r[1] - r[0]) / r[2] + 1;
     double firstDeg = params.angleOf(r[0] + (r[2] - 1) / 2.0);
     double inc = r[2] * 360.0 / params.stepsPerTurn();
@@ -181,14 +276,10 @@ public final class UrgEmulator extends EmulatedDevice {
     for (double v : d) {
       // Beyond the maximum range the URG reports an error code (below DMIN): 0 here.
       int mm = v >= Math.min(sensor.maxRange(), params.maxRange()) ? 0 : (int) Math.round(v);
-      enc.append(Scip.encode(Math.min(mm, cap), chars));
+      // two characters carry at most 4095: a farther echo reads as "no echo" (0), as in 1.1
+      enc.append(Scip.encode(mm > cap ? 0 : mm, chars));
     }
-    long ms = TimeUnit.NANOSECONDS.toMillis(connection.clock().nanoTime() - startNanos);
-    String stamp = Scip.encode((int) (ms & 0xffffff), 4);
-    List<String> lines = new ArrayList<>();
-    lines.add(stamp + Scip.checksum(stamp));
-    lines.addAll(Scip.dataLines(enc));
-    return lines;
+    return enc.toString();
   }
 
   private void reply(String echo, String status, String... lines)

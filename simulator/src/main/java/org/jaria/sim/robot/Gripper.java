@@ -4,12 +4,15 @@ import org.jaria.protocol.packets.GripState;
 
 /**
  * The Pioneer 2-axis gripper: paddles that open and close and a lift that goes up and down, each
- * taking a fixed travel time end to end, reported in the GRIP_STATE bits. It starts stored (paddles
- * closed, lift up).
+ * taking a fixed travel time end to end, reported as the switch byte ARIA's {@code ArGripper}
+ * decodes ({@link GripState}: active-low limit and paddle switches, moving bits 6 and 7). Nothing
+ * passes between the paddles, so the break beams stay clear. It starts stored (paddles closed, lift
+ * up).
  *
  * <p>GRIPPER commands: 1 open, 2 close, 3 stop paddles, 4 lift up, 5 lift down, 6 stop lift, 7
- * store (close and lift), 8 deploy (open and lower), 15 halt both, 16 grasp pressure (GRIPPERVAL),
- * 17 lift carry (move the lift for GRIPPERVAL ms, + up).
+ * store (close and lift), 8 deploy (open and lower), 15 halt both, 16 grasp pressure, 17 lift carry
+ * (move the lift for the value ms, + up). The value of 16 and 17 is the GRIPPERVAL sent right after
+ * the command (ARIA's order), or else the last one sent before it.
  *
  * <p>Not thread-safe: used by the world thread.
  */
@@ -27,6 +30,7 @@ public final class Gripper {
   private double liftTarget = 1;
   private int graspTime = 10;
   private int gripperVal;
+  private int awaitingValueFor;
 
   /** Returns to the stored position instantly (a fresh robot). */
   public void reset() {
@@ -39,10 +43,23 @@ public final class Gripper {
   /** GRIPPERVAL: the value used by the next pressure or carry command. */
   public void setGripperVal(int v) {
     gripperVal = v;
+    if (awaitingValueFor != 0) {
+      applyValue(awaitingValueFor);
+      awaitingValueFor = 0;
+    }
+  }
+
+  private void applyValue(int cmd) {
+    if (cmd == 16) {
+      graspTime = Math.max(0, Math.min(255, gripperVal));
+    } else {
+      liftTarget = Math.max(0, Math.min(1, lift + gripperVal / LIFT_TRAVEL_MS));
+    }
   }
 
   /** Executes a GRIPPER command; unknown codes are ignored. */
   public void command(int cmd) {
+    awaitingValueFor = cmd == 16 || cmd == 17 ? cmd : 0;
     switch (cmd) {
       case 1 -> paddleTarget = 1;
       case 2 -> paddleTarget = 0;
@@ -62,8 +79,7 @@ public final class Gripper {
         paddleTarget = paddle;
         liftTarget = lift;
       }
-      case 16 -> graspTime = Math.max(0, Math.min(255, gripperVal));
-      case 17 -> liftTarget = Math.max(0, Math.min(1, lift + gripperVal / LIFT_TRAVEL_MS));
+      case 16, 17 -> applyValue(cmd);
       default -> {
         // not a gripper command ARCOS knows: ignored, as on the robot
       }
@@ -83,26 +99,23 @@ public final class Gripper {
     return Math.max(target, cur - step);
   }
 
-  /** The GRIP_STATE byte. */
+  /** The switch byte (see {@link GripState}). */
   public int state() {
     int s = 0;
-    if (paddle >= 1) {
-      s |= GripState.PADDLES_OPEN;
+    if (paddle < 1) {
+      s |= GripState.NOT_OPEN;
     }
-    if (paddle <= 0) {
-      s |= GripState.PADDLES_CLOSED;
+    if (lift > 0 && lift < 1) {
+      s |= GripState.LIFT_BETWEEN;
     }
-    if (paddle != paddleTarget) {
-      s |= GripState.PADDLES_MOVING;
-    }
-    if (lift >= 1) {
-      s |= GripState.LIFT_UP;
-    }
-    if (lift <= 0) {
-      s |= GripState.LIFT_DOWN;
+    if (paddle > 0) {
+      s |= GripState.LEFT_FREE | GripState.RIGHT_FREE; // closed paddles press both switches
     }
     if (lift != liftTarget) {
       s |= GripState.LIFT_MOVING;
+    }
+    if (paddle != paddleTarget) {
+      s |= GripState.GRIP_MOVING;
     }
     return s;
   }

@@ -6,6 +6,7 @@ import org.jaria.geom.ArPose;
 import org.jaria.sim.OdometryError;
 import org.jaria.sim.SonarOptions;
 import org.jaria.sim.serial.AuxPort;
+import org.jaria.sim.serial.AuxSerialDevice;
 import org.jaria.sim.serial.Vcc4Camera;
 import org.jaria.sim.world.Contact;
 import org.jaria.sim.world.Footprint;
@@ -65,7 +66,10 @@ public final class RobotBody {
   private final Gripper gripper;
   private final RobotIo io = new RobotIo();
 
-  /** AUX1..AUX3; a Canon VC-C4 on AUX1, where a Pioneer's PTZ camera is wired. */
+  /**
+   * AUX1..AUX3; a Canon VC-C4 on AUX1 (where a Pioneer's PTZ camera is wired) unless {@link
+   * #setAuxDevice} puts another device there.
+   */
   private final AuxPort[] auxPorts = {
     new AuxPort(1, new Vcc4Camera()), new AuxPort(2, null), new AuxPort(3, null)
   };
@@ -263,6 +267,12 @@ public final class RobotBody {
     if (gyro != null) {
       gyro.setStreaming(false);
     }
+  }
+
+  /** Plugs {@code device} (null: nothing) into auxiliary serial port {@code n} (1..3). */
+  public void setAuxDevice(int n, AuxSerialDevice device) {
+    auxPort(n); // checks n
+    auxPorts[n - 1] = new AuxPort(n, device);
   }
 
   /** Auxiliary serial port {@code n} (1..3). */

@@ -22,7 +22,7 @@ import java.util.function.Consumer;
  * <p>The head reaches a commanded position at once (a client polling the position sees the target
  * on its next request). Not thread-safe: the world thread uses it.
  */
-public final class Vcc4Camera implements AuxSerialDevice {
+public final class Vcc4Camera implements AuxSerialDevice, PtzHead {
 
   /** Degrees per pan/tilt unit. */
   public static final double DEGREES_PER_UNIT = 0.1125;
@@ -230,6 +230,15 @@ public final class Vcc4Camera implements AuxSerialDevice {
       v = v * 16 + d;
     }
     return v;
+  }
+
+  /**
+   * {@inheritDoc} JAria's {@code ArVCC4} sends pan positive to the left, so the head's right is the
+   * negative of {@link #getPan()}.
+   */
+  @Override
+  public Pointing pointing() {
+    return new Pointing(-getPan(), getTilt(), zoom / (double) MAX_ZOOM);
   }
 
   /** Pan, degrees, with the sign the client commanded. */

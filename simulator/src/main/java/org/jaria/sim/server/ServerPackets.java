@@ -105,10 +105,19 @@ public final class ServerPackets {
     }
     s.clearPending();
     int grip = b.gripper() != null ? b.gripper().state() : 0;
-    sip.setIo(grip, io.getAnPort(), io.selectedAnalogByte(), io.getDigIn(), io.getDigOut());
+    sip.setIo(grip, io.getAnPort(), io.selectedAnalogByte(), digIn(b), io.getDigOut());
     sip.setPower(io.getBattery(), 0, (int) Math.round(w * 10), 0);
     sip.setOptionalCount(SIP_OPTIONALS);
     return sip.encode(p);
+  }
+
+  /**
+   * DIGIN: the user inputs, with a Pioneer gripper's switches on bits 0–5 where it is wired (ARIA
+   * reads a user-I/O gripper there).
+   */
+  static int digIn(RobotBody b) {
+    int in = b.io().getDigIn();
+    return b.gripper() == null ? in : (in & 0xC0) | (b.gripper().state() & 0x3F);
   }
 
   /**
@@ -199,8 +208,7 @@ public final class ServerPackets {
       an[i] = io.getAnalog(i);
     }
     an[RobotIo.ANALOG_PORTS] = io.batteryAnalog();
-    return new IoPacket(
-            new int[] {io.getDigIn(), front, rear, 0xFF}, new int[] {io.getDigOut()}, an)
+    return new IoPacket(new int[] {digIn(b), front, rear, 0xFF}, new int[] {io.getDigOut()}, an)
         .encode(p);
   }
 
