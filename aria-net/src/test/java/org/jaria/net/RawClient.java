@@ -88,6 +88,25 @@ public final class RawClient implements AutoCloseable {
     }
   }
 
+  /**
+   * Reads until one packet of each of {@code commands} has come, whatever their order (a worker's
+   * answer may overtake or trail an answer sent at once), and returns the first of each by command.
+   */
+  public java.util.Map<Integer, ArNetPacket> readUntilAll(int... commands) throws IOException {
+    java.util.Map<Integer, ArNetPacket> got = new java.util.HashMap<>();
+    java.util.Set<Integer> wanted = new java.util.HashSet<>();
+    for (int c : commands) {
+      wanted.add(c);
+    }
+    while (!got.keySet().containsAll(wanted)) {
+      ArNetPacket p = read();
+      if (wanted.contains(p.getCommand())) {
+        got.putIfAbsent(p.getCommand(), p);
+      }
+    }
+    return got;
+  }
+
   /** Reads the server's introduction (keeping its password key). */
   public ArNetPacket readIntroduction() throws IOException {
     ArNetPacket p = readUntil(Protocol.SERVER_INTRODUCTION);
