@@ -18,6 +18,7 @@ import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
+import org.jaria.sim.StartPlace;
 import org.jaria.sim.world.WorldMap;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
