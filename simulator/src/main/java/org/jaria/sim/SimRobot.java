@@ -8,6 +8,7 @@ import org.jaria.connection.ArDeviceConnection;
 import org.jaria.connection.PipeConnection;
 import org.jaria.geom.ArPose;
 import org.jaria.protocol.DropCounters;
+import org.jaria.sim.camera.CameraMount;
 import org.jaria.sim.robot.RobotBody;
 import org.jaria.sim.robot.RobotModel;
 import org.jaria.sim.server.ArcosSession;
@@ -17,7 +18,7 @@ import org.jaria.sim.server.ArcosSession;
  * its true pose, read what its sensors really saw. Every method is thread-safe (it takes the
  * world's lock).
  */
-public final class SimRobot {
+public final class SimRobot implements CameraMount {
 
   private final SimWorld world;
   private final RobotSlot slot;
@@ -33,6 +34,7 @@ public final class SimRobot {
   }
 
   /** The robot's number in its world (0 for the first). */
+  @Override
   public int getIndex() {
     return slot.body.index();
   }
@@ -137,6 +139,7 @@ public final class SimRobot {
   }
 
   /** Where the robot really is. */
+  @Override
   public ArPose getTruePose() {
     world.lock.lock();
     try {
