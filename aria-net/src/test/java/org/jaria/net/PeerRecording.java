@@ -64,4 +64,62 @@ public final class PeerRecording {
     }
     return names;
   }
+
+  /** The data the LIST packets among {@code packets} name: command number to name. */
+  public static java.util.Map<Integer, String> listedCommands(List<ArNetPacket> packets) {
+    java.util.Map<Integer, String> names = new java.util.LinkedHashMap<>();
+    for (ArNetPacket p : packets) {
+      if (p.getCommand() == org.jaria.net.protocol.Protocol.SERVER_LIST) {
+        ArNetPacket r = p.toReader();
+        int n = r.bufToUByte2();
+        for (int k = 0; k < n; k++) {
+          int cmd = r.bufToUByte2();
+          names.put(cmd, r.bufToStr());
+          r.bufToStr();
+        }
+      }
+    }
+    return names;
+  }
+
+  /**
+   * The client's recorded packets {@code c2s} with each data number (as a command, or in a REQUEST
+   * or REQUEST_STOP) changed from what the recorded server listed ({@code s2c}) to what {@code
+   * numberOf} gives for the same name now. ArNetworking numbers data in the order a server
+   * registers them, so a recording stays valid when services are added to the server.
+   */
+  public static byte[] renumbered(
+      byte[] c2s, byte[] s2c, java.util.function.ToIntFunction<String> numberOf) {
+    java.util.Map<Integer, String> then = listedCommands(packets(s2c));
+    java.util.function.IntUnaryOperator now =
+        cmd -> {
+          String name = then.get(cmd);
+          if (name == null) {
+            throw new IllegalStateException("data " + cmd + " was not listed in the recording");
+          }
+          int n = numberOf.applyAsInt(name);
+          if (n <= 0) {
+            throw new IllegalStateException("the server has no data '" + name + "' now");
+          }
+          return n;
+        };
+    java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+    for (ArNetPacket p : packets(c2s)) {
+      int cmd = p.getCommand();
+      byte[] body = p.toByteArray();
+      if (cmd >= org.jaria.net.protocol.Protocol.FIRST_DATA_COMMAND) {
+        cmd = now.applyAsInt(cmd);
+      } else if ((cmd == org.jaria.net.protocol.Protocol.CLIENT_REQUEST
+              || cmd == org.jaria.net.protocol.Protocol.CLIENT_REQUEST_STOP)
+          && body.length >= 2) {
+        int data = now.applyAsInt((body[0] & 0xff) | (body[1] & 0xff) << 8);
+        body[0] = (byte) data;
+        body[1] = (byte) (data >> 8);
+      }
+      ArNetPacket q = new ArNetPacket(cmd);
+      q.dataToBuf(body);
+      out.writeBytes(q.toWire());
+    }
+    return out.toByteArray();
+  }
 }

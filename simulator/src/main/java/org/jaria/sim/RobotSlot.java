@@ -12,7 +12,10 @@ import org.jaria.sim.robot.RobotModel;
 import org.jaria.sim.server.ArcosSession;
 import org.jaria.sim.server.LogRateLimit;
 
-/** A robot in a world with its server side: TCP port, current client session, drop counters. */
+/**
+ * A robot in a world with its server side: TCP port (none for a robot a {@link RobotFactory} made
+ * for one client), current client session, drop counters.
+ */
 final class RobotSlot {
 
   final RobotBody body;
@@ -20,8 +23,14 @@ final class RobotSlot {
   final DropCounters drops;
   final SimRobot handle;
 
-  /** Port asked for (-1 automatic, 0 any free). */
+  /** Port asked for (-1 automatic, 0 any free); unused for a factory's robot. */
   final int requestedPort;
+
+  /** The factory that made this robot for its one client, or null for a robot with its own port. */
+  final RobotFactory factory;
+
+  /** Set once the robot has left its world; the handle then refuses new clients. */
+  boolean removed;
 
   ServerSocketChannel server;
   int boundPort = -1;
@@ -39,10 +48,16 @@ final class RobotSlot {
   long timedOut;
   final LogRateLimit refusalLog;
 
-  RobotSlot(SimWorld world, RobotBody body, RobotOptions options, int requestedPort) {
+  RobotSlot(
+      SimWorld world,
+      RobotBody body,
+      RobotOptions options,
+      int requestedPort,
+      RobotFactory factory) {
     this.body = body;
     this.options = options;
     this.requestedPort = requestedPort;
+    this.factory = factory;
     this.drops = new DropCounters(body.name());
     this.handle = new SimRobot(world, this);
     this.refusalLog =
@@ -53,7 +68,7 @@ final class RobotSlot {
   /**
    * A new robot number {@code index}: its body, with one random stream per noisy part derived from
    * the world's seed and the robot's number (so adding robots in the same order gives the same
-   * noise), and its port.
+   * noise), and its port (none if {@code factory} made it).
    */
   static RobotSlot create(
       SimWorld world,
@@ -62,7 +77,8 @@ final class RobotSlot {
       SimOptions options,
       RobotModel model,
       String name,
-      ArPose start) {
+      ArPose start,
+      RobotFactory factory) {
     RandomGenerator[] rngs = new RandomGenerator[4];
     for (int k = 0; k < rngs.length; k++) {
       long seed =
@@ -87,7 +103,7 @@ final class RobotSlot {
     body.setSrisimCompat(o.srisimCompat());
     int base = options.basePort();
     int port = o.port() >= 0 ? o.port() : (base == 0 ? 0 : base + index);
-    return new RobotSlot(world, body, o, port);
+    return new RobotSlot(world, body, o, port, factory);
   }
 
   /** Lets the session read and execute what its client sent; forgets it if the client left. */
@@ -117,11 +133,21 @@ final class RobotSlot {
     }
   }
 
+  /** Whether a factory made this robot and its client has gone (so the robot leaves the world). */
+  boolean isOrphan() {
+    return factory != null && session == null;
+  }
+
   /** Ends the current session, if any. */
   void endSession(String why) {
     if (session != null) {
       session.end(why);
       session = null;
     }
+  }
+
+  @Override
+  public String toString() {
+    return "robot " + body.name();
   }
 }

@@ -33,7 +33,10 @@ public final class SimRobot implements CameraMount {
     return slot.body.name();
   }
 
-  /** The robot's number in its world (0 for the first). */
+  /**
+   * The robot's number in its world: 0 for the first robot added, 1 for the next, and so on. A
+   * number is never given to another robot, even after this one was removed.
+   */
   @Override
   public int getIndex() {
     return slot.body.index();
@@ -44,20 +47,44 @@ public final class SimRobot implements CameraMount {
     return slot.body.model();
   }
 
-  /** The world it lives in. */
+  /** The world it lives in (or lived in, once removed). */
   public SimWorld getWorld() {
     return world;
+  }
+
+  /** The robot factory that made it for its client, or null for a robot with its own port. */
+  public RobotFactory getFactory() {
+    return slot.factory;
+  }
+
+  /**
+   * Whether it was taken out of its world ({@link SimWorld#removeRobot}, or its client left a robot
+   * factory's robot).
+   */
+  public boolean isRemoved() {
+    world.lock.lock();
+    try {
+      return slot.removed;
+    } finally {
+      world.lock.unlock();
+    }
   }
 
   /**
    * Connects an in-process client: returns the client's end of a new in-memory connection (open, on
    * the world's clock) whose other end the world serves like a TCP client. A client connected
    * before is dropped.
+   *
+   * @throws IllegalStateException if the world is closed or the robot was removed from it
    */
   public ArDeviceConnection connectInMemory() {
     world.lock.lock();
     try {
       world.requireOpen();
+      if (slot.removed) {
+        throw new IllegalStateException(
+            "robot " + getName() + " was removed from its world; connect to a robot that is in it");
+      }
       slot.endSession("replaced by a new in-memory connection");
       PipeConnection.Pair pair = PipeConnection.pair(world.getClock(), "sim-" + getName());
       try {
@@ -319,6 +346,11 @@ public final class SimRobot implements CameraMount {
     } finally {
       world.lock.unlock();
     }
+  }
+
+  /** Its slot in the world (for the world). */
+  RobotSlot slot() {
+    return slot;
   }
 
   /** Direct access for this package's tests and tools (call under the world's lock). */

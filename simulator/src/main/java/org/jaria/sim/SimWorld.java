@@ -3,7 +3,6 @@ package org.jaria.sim;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -18,7 +17,6 @@ import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
 import org.jaria.sim.camera.CameraScene;
 import org.jaria.sim.camera.ColoredObjects;
-import org.jaria.sim.robot.RobotModel;
 import org.jaria.sim.server.CommandPolicy;
 import org.jaria.sim.world.WorldGeometry;
 import org.jaria.sim.world.WorldMap;
@@ -61,7 +59,6 @@ public final class SimWorld implements AutoCloseable, CameraScene {
   private final VirtualClock clock;
   private final long tickNanos;
   private final WorldGeometry geometry = new WorldGeometry();
-  private final List<RobotSlot> slots = new ArrayList<>();
   private final WorldStatics statics;
   private final List<Runnable> stepListeners = new CopyOnWriteArrayList<>();
   private final ColoredObjects colored =
@@ -77,18 +74,19 @@ public final class SimWorld implements AutoCloseable, CameraScene {
   private final WorldObstacles obstacles;
   private final WorldQueries queries;
   private final WorldServing serving = new WorldServing(lock);
+  private final WorldRobots robots;
   private final ClientMapLoader mapLoader;
   private final CommandPolicy commandPolicy;
   private volatile IntConsumer exitHandler =
       code -> log.warn("a client asked the simulator to exit with code {}; no exit handler", code);
   private long steps;
-  private double maxSpeed;
   private boolean closed;
 
   private SimWorld(WorldMap map, SimOptions options, VirtualClock clock) {
     this.statics = new WorldStatics(map, geometry);
     this.obstacles = new WorldObstacles(statics, geometry, colored);
     this.queries = new WorldQueries(statics, geometry);
+    this.robots = new WorldRobots(this, statics, geometry, serving);
     this.options = options;
     this.clock = clock;
     this.tickNanos = options.tick().toNanos();
@@ -187,53 +185,74 @@ public final class SimWorld implements AutoCloseable, CameraScene {
     lock.lock();
     try {
       requireOpen();
-      statics.rebuild();
-      int index = slots.size();
-      RobotModel model = RobotModels.forSubtype(o.subtype());
-      String name = o.name() != null ? o.name() : o.subtype() + "_" + (index + 1);
-      ArPose start =
-          o.startPose() != null
-              ? o.startPose()
-              : Placement.freeSpot(statics.map().home(), model, geometry);
-      RobotSlot slot = RobotSlot.create(this, index, o, options, model, name, start);
-      int added = geometry.addRobot(slot.body.footprint());
-      if (added != index) {
-        throw new IllegalStateException("robot numbering out of step: " + added + " vs " + index);
-      }
-      maxSpeed = Math.max(maxSpeed, model.getTransVelTop());
-      slots.add(slot);
-      serving.robotAdded(slot);
-      log.info("added robot {} ({}) at {}", name, model.getSubtype(), start);
-      return slot.handle;
+      return robots.add(o, null).handle;
     } finally {
       lock.unlock();
     }
+  }
+
+  /**
+   * Takes a robot out of the world: its client is disconnected, its TCP port closes, other robots'
+   * sensors and bumpers stop meeting it from the next tick on, and {@link #snapshot()} and {@link
+   * #getRobots()} no longer show it. Its number is not given to another robot; its handle then
+   * answers with its last state and refuses new clients. Returns whether it was in this world.
+   */
+  public boolean removeRobot(SimRobot robot) {
+    lock.lock();
+    try {
+      return robot.getWorld() == this && robots.remove(robot.slot(), "removed from the world");
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /**
+   * Adds a robot factory (MobileSim's {@code -R MODEL}): a TCP port where each client that connects
+   * gets a new robot with the options {@code template}, starting where {@code start} says (null:
+   * the map's start position), removed when its client disconnects. The port opens with {@link
+   * #listen()} (at once if the world listens already).
+   *
+   * @param port the TCP port (0: any free port)
+   * @throws IllegalArgumentException if the model is unknown or the port out of range
+   * @throws java.io.UncheckedIOException if the world listens already and the port is in use
+   */
+  public RobotFactory addRobotFactory(
+      RobotOptions template, int port, RobotFactory.StartPose start) {
+    RobotModels.forSubtype(template.subtype()); // an unknown model fails now, not per client
+    lock.lock();
+    try {
+      requireOpen();
+      RobotFactory f = new RobotFactory(this, template, port, start);
+      serving.factoryAdded(f);
+      return f;
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /** The robot factories, in the order they were added. */
+  public List<RobotFactory> getRobotFactories() {
+    return locked(serving::factories);
   }
 
   /** The robots, in the order they were added. */
   public List<SimRobot> getRobots() {
-    lock.lock();
-    try {
-      List<SimRobot> out = new ArrayList<>(slots.size());
-      for (RobotSlot s : slots) {
-        out.add(s.handle);
-      }
-      return out;
-    } finally {
-      lock.unlock();
-    }
+    return locked(robots::handles);
   }
 
-  /** Robot number {@code index}. */
+  /**
+   * The robot numbered {@code index} ({@link SimRobot#getIndex()}; the n-th robot added, counting
+   * from 0).
+   *
+   * @throws IndexOutOfBoundsException if there is no such robot (any more)
+   */
   public SimRobot getRobot(int index) {
-    return locked(() -> slots.get(index).handle);
+    return locked(() -> robots.handle(index));
   }
 
   /** The robot named {@code name}, if any. */
   public Optional<SimRobot> findRobot(String name) {
-    return locked(
-        () ->
-            slots.stream().filter(s -> s.body.name().equals(name)).map(s -> s.handle).findFirst());
+    return locked(() -> robots.named(name));
   }
 
   // ---------------------------------------------------------------- time
@@ -277,7 +296,8 @@ public final class SimWorld implements AutoCloseable, CameraScene {
       host.mapLoadFinished(loaded);
     }
     statics.rebuild();
-    serving.acceptPending(clock, host, slots);
+    serving.acceptPending(clock, host, robots);
+    List<RobotSlot> slots = robots.slots();
     for (RobotSlot s : slots) {
       s.poll(now);
       if (closed) {
@@ -286,7 +306,7 @@ public final class SimWorld implements AutoCloseable, CameraScene {
     }
     long after = now + tickNanos;
     double dt = tickNanos / 1e9;
-    geometry.indexRobots(maxSpeed * dt + 1);
+    geometry.indexRobots(robots.maxSpeed() * dt + 1);
     for (RobotSlot s : slots) {
       s.body.physics(dt, geometry, after);
     }
@@ -294,6 +314,7 @@ public final class SimWorld implements AutoCloseable, CameraScene {
     for (RobotSlot s : slots) {
       s.afterPhysics(after);
     }
+    robots.removeOrphans();
     steps++;
   }
 
@@ -344,7 +365,7 @@ public final class SimWorld implements AutoCloseable, CameraScene {
     lock.lock();
     try {
       requireOpen();
-      serving.listen(slots);
+      serving.listen(robots.slots());
     } finally {
       lock.unlock();
     }
@@ -416,11 +437,11 @@ public final class SimWorld implements AutoCloseable, CameraScene {
 
   /** Replaces the map; robots move to free spots near the new map's start position. */
   public void loadMap(ArMap newMap, String source) {
-    whileLocked(() -> obstacles.loadMap(newMap, source, slots));
+    whileLocked(() -> obstacles.loadMap(newMap, source, robots.slots()));
   }
 
   void setMap(WorldMap m) {
-    whileLocked(() -> obstacles.setMap(m, slots));
+    whileLocked(() -> obstacles.setMap(m, robots.slots()));
   }
 
   /** Whether the world has a map with anything solid in it. */
@@ -497,28 +518,17 @@ public final class SimWorld implements AutoCloseable, CameraScene {
 
   /** A consistent picture of every robot and obstacle, safe to use from any thread. */
   public SimSnapshot snapshot() {
-    return locked(() -> queries.snapshot(clock.nanoTime(), slots));
+    return locked(() -> queries.snapshot(clock.nanoTime(), robots.slots()));
   }
 
   /** Number of robots with a client connected. */
   public int connectedClientCount() {
-    return locked(() -> queries.connectedClientCount(slots));
+    return locked(() -> queries.connectedClientCount(robots.slots()));
   }
 
   /** What the robots' ports did with their clients so far. */
   public ServerCounters getServerCounters() {
-    return locked(
-        () -> {
-          long sessions = 0;
-          long refused = 0;
-          long timedOut = 0;
-          for (RobotSlot s : slots) {
-            sessions += s.sessionsStarted;
-            refused += s.refused;
-            timedOut += s.timedOut;
-          }
-          return new ServerCounters(sessions, refused, timedOut);
-        });
+    return locked(() -> queries.serverCounters(robots.slots()));
   }
 
   WorldHost host() {
@@ -558,7 +568,12 @@ public final class SimWorld implements AutoCloseable, CameraScene {
   }
 
   List<RobotSlot> slots() {
-    return slots;
+    return robots.slots();
+  }
+
+  /** The robot numbered {@code number}, or null if it is not (or no longer) in the world. */
+  RobotSlot slotByNumber(int number) {
+    return robots.byNumber(number);
   }
 
   /** Runs {@code query} under the world's lock. */
@@ -597,10 +612,10 @@ public final class SimWorld implements AutoCloseable, CameraScene {
         return;
       }
       closed = true;
-      for (RobotSlot s : slots) {
+      for (RobotSlot s : robots.slots()) {
         s.endSession("the simulator is shutting down");
       }
-      serving.closePorts(slots);
+      serving.closePorts(robots.slots());
     } finally {
       lock.unlock();
     }

@@ -22,9 +22,9 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The robots' listening TCP ports. Nothing here has a thread: the world thread checks for new
- * clients on every tick with a non-blocking select, so a simulator with a hundred robots still has
- * one thread.
+ * The robots' and robot factories' listening TCP ports. Nothing here has a thread: the world thread
+ * checks for new clients on every tick with a non-blocking select, so a simulator with a hundred
+ * robots still has one thread.
  */
 final class TcpServers implements AutoCloseable {
 
@@ -46,12 +46,18 @@ final class TcpServers implements AutoCloseable {
    *
    * @throws IOException naming the port that is taken
    */
-  static TcpServers openAll(List<RobotSlot> slots, java.net.InetAddress bindAddress)
+  static TcpServers openAll(
+      List<RobotSlot> slots, List<RobotFactory> factories, java.net.InetAddress bindAddress)
       throws IOException {
     TcpServers servers = new TcpServers(bindAddress);
     try {
+      for (RobotFactory f : factories) {
+        servers.bind(f);
+      }
       for (RobotSlot s : slots) {
-        servers.bind(s, s.requestedPort);
+        if (s.factory == null) {
+          servers.bind(s, s.requestedPort);
+        }
       }
       return servers;
     } catch (IOException e) {
@@ -59,6 +65,9 @@ final class TcpServers implements AutoCloseable {
       for (RobotSlot t : slots) {
         t.server = null;
         t.boundPort = -1;
+      }
+      for (RobotFactory f : factories) {
+        f.boundPort = -1;
       }
       throw e;
     }
@@ -103,7 +112,8 @@ final class TcpServers implements AutoCloseable {
     }
   }
 
-  private static void start(RobotSlot slot, SocketChannel c, Clock clock, SessionHost host) {
+  /** Starts a session between {@code slot}'s robot and the client {@code c}. */
+  static void start(RobotSlot slot, SocketChannel c, Clock clock, SessionHost host) {
     try {
       SocketAddress remote = c.getRemoteAddress();
       ClientKind kind = ClientKind.ofTcpPeer(remote);
@@ -139,19 +149,40 @@ final class TcpServers implements AutoCloseable {
    * @throws IOException naming the port and what to do if it is taken
    */
   void bind(RobotSlot slot, int port) throws IOException {
+    ServerSocketChannel ch = open(port, slot, "robot " + slot.body.name());
+    slot.server = ch;
+    slot.boundPort = ((InetSocketAddress) ch.getLocalAddress()).getPort();
+    log.info("robot {} listens on TCP port {}", slot.body.name(), slot.boundPort);
+  }
+
+  /**
+   * Opens a robot factory's port.
+   *
+   * @throws IOException naming the port and what to do if it is taken
+   */
+  void bind(RobotFactory f) throws IOException {
+    ServerSocketChannel ch = open(f.requestedPort, f, "the " + f.getModel() + " robot factory");
+    f.boundPort = ((InetSocketAddress) ch.getLocalAddress()).getPort();
+    log.info("robot factory for {} listens on TCP port {}", f.getModel(), f.boundPort);
+  }
+
+  /** Opens a non-blocking listening port whose clients go to {@code owner}. */
+  private ServerSocketChannel open(int port, Object owner, String what) throws IOException {
     ServerSocketChannel ch = ServerSocketChannel.open();
     try {
       ch.setOption(StandardSocketOptions.SO_REUSEADDR, true);
-      ch.bind(new InetSocketAddress(bindAddress, port), 8);
+      // a factory expects many clients at once (each gets a robot); a robot, one
+      ch.bind(new InetSocketAddress(bindAddress, port), owner instanceof RobotFactory ? 64 : 8);
       ch.configureBlocking(false);
-      ch.register(selector, SelectionKey.OP_ACCEPT, slot);
+      ch.register(selector, SelectionKey.OP_ACCEPT, owner);
+      return ch;
     } catch (BindException e) {
       closeQuietly(ch);
       throw new IOException(
           "TCP port "
               + port
-              + " for robot "
-              + slot.body.name()
+              + " for "
+              + what
               + " is in use ("
               + e.getMessage()
               + "): is another simulator running? Stop it or choose another --port",
@@ -160,9 +191,6 @@ final class TcpServers implements AutoCloseable {
       closeQuietly(ch);
       throw e;
     }
-    slot.server = ch;
-    slot.boundPort = ((InetSocketAddress) ch.getLocalAddress()).getPort();
-    log.info("robot {} listens on TCP port {}", slot.body.name(), slot.boundPort);
   }
 
   /** Opens the port of a robot added while listening. */
@@ -174,8 +202,13 @@ final class TcpServers implements AutoCloseable {
     }
   }
 
-  /** Accepts every waiting client and hands it to {@code accepted} (never blocks). */
-  void acceptPending(BiConsumer<RobotSlot, SocketChannel> accepted) {
+  /**
+   * Accepts every waiting client and hands it to {@code robotClient} or, if it came to a robot
+   * factory's port, to {@code factoryClient} (never blocks).
+   */
+  void acceptPending(
+      BiConsumer<RobotSlot, SocketChannel> robotClient,
+      BiConsumer<RobotFactory, SocketChannel> factoryClient) {
     try {
       if (selector.selectNow() == 0) {
         return;
@@ -191,15 +224,19 @@ final class TcpServers implements AutoCloseable {
       if (!key.isValid()) {
         continue;
       }
-      RobotSlot slot = (RobotSlot) key.attachment();
+      Object owner = key.attachment();
       ServerSocketChannel ch = (ServerSocketChannel) key.channel();
       try {
         SocketChannel c;
         while ((c = ch.accept()) != null) {
-          accepted.accept(slot, c);
+          if (owner instanceof RobotFactory f) {
+            factoryClient.accept(f, c);
+          } else {
+            robotClient.accept((RobotSlot) owner, c);
+          }
         }
       } catch (IOException e) {
-        log.warn("accepting a client for {} failed: {}", slot.body.name(), e.getMessage());
+        log.warn("accepting a client for {} failed: {}", owner, e.getMessage());
       }
     }
   }

@@ -81,7 +81,10 @@ final class WorldHost implements SessionHost {
 
   @Override
   public void loadMapRequested(String path, int robotIndex) {
-    RobotSlot asker = world.slots().get(robotIndex);
+    RobotSlot asker = world.slotByNumber(robotIndex);
+    if (asker == null) {
+      return; // the robot left the world while its command was being read
+    }
     if (!world.mapLoader().submit(path, robotIndex, asker.body.name())) {
       log.warn(
           "{}: client map '{}' refused: another map is still loading",
@@ -97,7 +100,10 @@ final class WorldHost implements SessionHost {
    */
   void mapLoadFinished(ClientMapLoader.Result r) {
     if (r.map() == null) {
-      answer(world.slots().get(r.robotIndex()), -1, r.requested());
+      RobotSlot asker = world.slotByNumber(r.robotIndex());
+      if (asker != null) { // not if the robot left the world while its map loaded
+        answer(asker, -1, r.requested());
+      }
       return;
     }
     world.setMap(r.map());

@@ -46,4 +46,17 @@ final class WorldQueries {
     }
     return n;
   }
+
+  /** What the robots' ports did with their clients so far (robots that left not counted). */
+  ServerCounters serverCounters(List<RobotSlot> slots) {
+    long sessions = 0;
+    long refused = 0;
+    long timedOut = 0;
+    for (RobotSlot s : slots) {
+      sessions += s.sessionsStarted;
+      refused += s.refused;
+      timedOut += s.timedOut;
+    }
+    return new ServerCounters(sessions, refused, timedOut);
+  }
 }

@@ -1,14 +1,15 @@
 package org.jaria.sim;
 
 import java.io.IOException;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.locks.ReentrantLock;
 import org.jaria.clock.VirtualClock;
 import org.jaria.sim.server.SessionHost;
 
 /**
- * How a world meets the outside: the robots' TCP ports and the thread that steps the world in real
- * time. Everything but {@link #stopRealTime} runs under the world's lock.
+ * How a world meets the outside: the robots' and robot factories' TCP ports and the thread that
+ * steps the world in real time. Everything but {@link #stopRealTime} runs under the world's lock.
  */
 final class WorldServing {
 
@@ -16,16 +17,38 @@ final class WorldServing {
   private TcpServers servers;
   private RealTimeRunner runner;
   private java.net.InetAddress bindAddress;
+  private final List<RobotFactory> factories = new ArrayList<>();
 
   WorldServing(ReentrantLock worldLock) {
     this.lock = worldLock;
   }
 
-  /** Opens every robot's port, once (idempotent). */
+  /** Opens every factory's and robot's port, once (idempotent). */
   void listen(List<RobotSlot> slots) throws IOException {
     if (servers == null) {
-      servers = TcpServers.openAll(slots, bindAddress);
+      servers = TcpServers.openAll(slots, factories, bindAddress);
     }
+  }
+
+  /**
+   * Adds a robot factory; its port opens now if the world listens already.
+   *
+   * @throws java.io.UncheckedIOException if its port cannot be opened
+   */
+  void factoryAdded(RobotFactory f) {
+    if (servers != null) {
+      try {
+        servers.bind(f);
+      } catch (IOException e) {
+        throw new java.io.UncheckedIOException(e);
+      }
+    }
+    factories.add(f);
+  }
+
+  /** The robot factories, in the order they were added. */
+  List<RobotFactory> factories() {
+    return List.copyOf(factories);
   }
 
   /** Listens on {@code address} only (null: every interface); before {@link #listen}. */
@@ -44,13 +67,15 @@ final class WorldServing {
   }
 
   /**
-   * Gives clients that connected since the last tick to their robots, and waiting clients to robots
-   * that became free.
+   * Gives clients that connected since the last tick to their robots (a factory's client to a new
+   * robot made for it), and waiting clients to robots that became free.
    */
-  void acceptPending(VirtualClock clock, SessionHost host, List<RobotSlot> slots) {
+  void acceptPending(VirtualClock clock, SessionHost host, WorldRobots robots) {
     if (servers != null) {
-      servers.acceptPending((slot, c) -> TcpServers.attach(slot, c, clock, host));
-      for (RobotSlot s : slots) {
+      servers.acceptPending(
+          (slot, c) -> TcpServers.attach(slot, c, clock, host),
+          (factory, c) -> TcpServers.start(robots.makeFor(factory, c), c, clock, host));
+      for (RobotSlot s : robots.slots()) {
         TcpServers.serveWaiting(s, clock, host);
       }
     }

@@ -79,6 +79,9 @@ public final class ArClientBase implements AutoCloseable {
   private static final int MAX_GATHERED = 64 << 20;
 
   private volatile Socket socket;
+  // The socket being connected: disconnect() closes it so that a server that never finishes the
+  // login cannot keep the caller waiting.
+  private volatile Socket connecting;
   private volatile OutputStream out;
   private volatile Thread reader;
   private volatile boolean connected;
@@ -119,15 +122,18 @@ public final class ArClientBase implements AutoCloseable {
     byCommand.clear();
     byName.clear();
     Socket s = new Socket();
+    connecting = s;
     try {
       int timeout = (int) options.connectTimeout().toMillis();
       s.connect(new InetSocketAddress(host, port), timeout);
       s.setTcpNoDelay(true);
-      s.setSoTimeout(timeout);
-      DataInputStream in = new DataInputStream(new BufferedInputStream(s.getInputStream()));
+      // The whole login, not each read, must fit in the timeout: a server that trickles bytes
+      // would otherwise hold the caller for ever.
+      LoginDeadline deadline = new LoginDeadline(s, options.connectTimeout());
+      DataInputStream in = new DataInputStream(new BufferedInputStream(deadline));
       OutputStream o = s.getOutputStream();
       login(in, o, user == null ? "" : user, password == null ? "" : password);
-      s.setSoTimeout(0);
+      deadline.lift();
       socket = s;
       out = o;
       connected = true;
@@ -159,6 +165,8 @@ public final class ArClientBase implements AutoCloseable {
     } catch (ArNetPacketException e) {
       closeQuietly(s);
       throw fail(host + ":" + port + " sent something that is not ArNetworking: " + e.getMessage());
+    } finally {
+      connecting = null;
     }
     for (Map.Entry<String, Long> r : requests.entrySet()) {
       if (byName.containsKey(r.getKey())) {
@@ -371,6 +379,14 @@ public final class ArClientBase implements AutoCloseable {
     return true;
   }
 
+  private synchronized void forget(int id, CompletableFuture<ArNetPacket> f) {
+    Deque<CompletableFuture<ArNetPacket>> q = waiting.get(id);
+    if (q != null) {
+      // By identity: a future has no equals of its own.
+      q.removeIf(x -> x == f);
+    }
+  }
+
   private void failRequest(ArNetPacket p) {
     String name = p.bufToStr();
     String why = p.bufToStr();
@@ -442,6 +458,7 @@ public final class ArClientBase implements AutoCloseable {
 
   /** Says goodbye (ArNetworking's SHUTDOWN) and closes the connection; safe to call again. */
   public void disconnect() {
+    closeQuietly(connecting);
     if (connected) {
       try {
         send(new ArNetPacket(Protocol.CLIENT_SHUTDOWN));
@@ -559,7 +576,12 @@ public final class ArClientBase implements AutoCloseable {
       if (none) {
         f.complete(new ArNetPacket(d.id()).toReader());
       } else {
-        f.orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS);
+        int id = d.id();
+        // A request the server never answers must not stay queued for ever (a client that asks
+        // again and again, as a video forwarder does, would grow the queue without bound).
+        var unused =
+            f.orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS)
+                .whenComplete((r, e) -> forget(id, f));
       }
     } catch (ArClientException | ArNetPacketException e) {
       f.completeExceptionally(e);

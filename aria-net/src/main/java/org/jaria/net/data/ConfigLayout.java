@@ -64,7 +64,10 @@ public final class ConfigLayout {
         comment = in.bufToStr();
         params = new ArrayList<>();
       } else if (kind == 'P' && name != null) {
-        params.add(readParam(in));
+        ConfigParam p = readParam(in);
+        if (p != null) {
+          params.add(p);
+        }
       } else {
         throw new ArNetPacketException(
             "not ArNetworking's getConfigBySections layout: record kind " + kind);
@@ -76,13 +79,32 @@ public final class ConfigLayout {
     return sections;
   }
 
+  /**
+   * One parameter, or null for what is not a value to edit: a separator ('.'), or a list ('l'),
+   * whose items are read past. A lower-case type letter is followed by a display hint, an
+   * upper-case one (from a server that parses no display hints) is not; a separator carries one.
+   */
   private static ConfigParam readParam(ArNetPacket in) {
     String name = in.bufToStr();
     String description = in.bufToStr();
     in.bufToByte(); // priority
-    int type = in.bufToByte();
+    int letter = in.bufToByte();
+    boolean hinted = Character.isLowerCase(letter) || letter == '.';
+    int type = Character.toLowerCase(letter);
     ConfigParam p =
         switch (type) {
+          case '.' -> null;
+          case 'l' -> {
+            int items = in.bufToByte4();
+            if (items < 0 || items > in.getRemaining()) {
+              throw new ArNetPacketException(
+                  "configuration list " + name + " announces " + items + " items");
+            }
+            for (int i = 0; i < items; i++) {
+              readParam(in);
+            }
+            yield null;
+          }
           case 'b' ->
               new ConfigParam(
                   name, "BOOL", Boolean.toString(in.bufToByte() != 0), "", "", "", description);
@@ -117,7 +139,9 @@ public final class ConfigLayout {
               throw new ArNetPacketException(
                   "configuration parameter " + name + " has a type this reader lacks: " + type);
         };
-    in.bufToStr(); // display hint
+    if (hinted) {
+      in.bufToStr(); // display hint
+    }
     return p;
   }
 

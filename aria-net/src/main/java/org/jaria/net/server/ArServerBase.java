@@ -2,20 +2,17 @@ package org.jaria.net.server;
 
 import java.io.IOException;
 import java.security.SecureRandom;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
 import org.jaria.net.ArNetPacket;
-import org.jaria.net.ArNetPacketException;
 import org.jaria.net.data.DataInfo;
 import org.jaria.net.protocol.NetError;
 import org.jaria.net.protocol.Protocol;
@@ -61,20 +58,18 @@ public class ArServerBase implements AutoCloseable {
 
   private static final int USER_TASK_POSITION = 10;
 
-  private record CycleTask(String name, Runnable task) {}
-
   private final ServerOptions options;
   private final ArRobot robot;
   final ServerStats stats = new ServerStats();
   final SecureRandom random = new SecureRandom();
   private final LoginLimiter loginLimiter;
-  private final List<DataEntry> entries = new CopyOnWriteArrayList<>();
-  private final Map<String, DataEntry> byName = new ConcurrentHashMap<>();
+  private final DataRegistry data = new DataRegistry();
   private final List<ArServerClient> clients = new CopyOnWriteArrayList<>();
   private final List<ServerListener> listeners = new CopyOnWriteArrayList<>();
-  private final List<CycleTask> cycleTasks = new CopyOnWriteArrayList<>();
+  private final List<CallRunner.CycleTask> cycleTasks = new CopyOnWriteArrayList<>();
   private final Map<Class<?>, Object> services = new ConcurrentHashMap<>();
   private final ArrayBlockingQueue<Runnable> cycleQueue;
+  private final CallRunner calls;
   private final Dispatcher dispatcher;
   private final Publisher publisher;
   private IoLoop io;
@@ -83,7 +78,6 @@ public class ArServerBase implements AutoCloseable {
   private Thread publisherThread;
   private volatile boolean open;
   private boolean closed;
-  private long cycleFailures;
 
   /** A server without a robot (all handlers run on workers). */
   public ArServerBase(ServerOptions options) {
@@ -98,6 +92,7 @@ public class ArServerBase implements AutoCloseable {
     this.options = Objects.requireNonNull(options, "options");
     this.robot = robot;
     this.cycleQueue = new ArrayBlockingQueue<>(options.cycleQueue());
+    this.calls = new CallRunner(this, cycleQueue, cycleTasks);
     this.dispatcher = new Dispatcher(this, options);
     this.publisher = new Publisher(this);
     this.loginLimiter =
@@ -158,7 +153,7 @@ public class ArServerBase implements AutoCloseable {
     publisherThread.setDaemon(true);
     open = true;
     if (robot != null) {
-      robot.addUserTask(USER_TASK, USER_TASK_POSITION, this::cycle);
+      robot.addUserTask(USER_TASK, USER_TASK_POSITION, calls::cycle);
     }
     ioThread.start();
     publisherThread.start();
@@ -331,7 +326,7 @@ public class ArServerBase implements AutoCloseable {
         publication);
   }
 
-  private synchronized DataInfo register(
+  private DataInfo register(
       String name,
       String description,
       String argDesc,
@@ -341,53 +336,27 @@ public class ArServerBase implements AutoCloseable {
       Where where,
       RequestHandler handler,
       Publication publication) {
-    if (name == null || name.isEmpty()) {
-      throw new IllegalArgumentException("data needs a name");
-    }
-    if (byName.containsKey(name)) {
-      throw new IllegalArgumentException("data '" + name + "' is already registered");
-    }
-    if (entries.size() >= 0xFFFF - Protocol.FIRST_DATA_COMMAND) {
-      throw new IllegalStateException("no command numbers left for '" + name + "'");
-    }
-    DataInfo info =
-        new DataInfo(
-            Protocol.FIRST_DATA_COMMAND + entries.size(),
-            name,
-            Objects.toString(description, ""),
-            Objects.toString(argDesc, "none"),
-            Objects.toString(retDesc, "none"),
-            Objects.toString(group, ""),
-            Objects.toString(flags, ""));
-    DataEntry e = new DataEntry(info, where, handler, publication);
-    entries.add(e);
-    byName.put(name, e);
-    return info;
+    return data.register(
+        name, description, argDesc, retDesc, group, flags, where, handler, publication);
   }
 
   /** Every registered data, in registration order. */
   public List<DataInfo> dataList() {
-    List<DataInfo> l = new ArrayList<>(entries.size());
-    for (DataEntry e : entries) {
-      l.add(e.info);
-    }
-    return l;
+    return data.dataList();
   }
 
   /** Whether data of this name is registered (ArNetworking's {@code dataExists}). */
   public boolean dataExists(String name) {
-    return byName.containsKey(name);
+    return data.byName(name) != null;
   }
 
   DataEntry entry(int command) {
-    List<DataEntry> l = entries;
-    int i = command - Protocol.FIRST_DATA_COMMAND;
-    return i >= 0 && i < l.size() ? l.get(i) : null;
+    return data.entry(command);
   }
 
   /** The command number of data {@code name}, or 0 if there is none. */
   public int findCommandFromName(String name) {
-    DataEntry e = byName.get(name);
+    DataEntry e = data.byName(name);
     return e == null ? 0 : e.id();
   }
 
@@ -428,33 +397,12 @@ public class ArServerBase implements AutoCloseable {
    */
   public void addCycleTask(String name, Runnable task) {
     remCycleTask(name);
-    cycleTasks.add(new CycleTask(name, task));
+    cycleTasks.add(new CallRunner.CycleTask(name, task));
   }
 
   /** Removes a cycle task by name. */
   public void remCycleTask(String name) {
     cycleTasks.removeIf(t -> t.name().equals(name));
-  }
-
-  private void cycle() {
-    int max = options.maxCommandsPerCycle();
-    Runnable r;
-    for (int i = 0; i < max && (r = cycleQueue.poll()) != null; i++) {
-      runSafely(r, "a queued command");
-    }
-    for (CycleTask t : cycleTasks) {
-      runSafely(t.task(), t.name());
-    }
-  }
-
-  private void runSafely(Runnable r, String what) {
-    try {
-      r.run();
-    } catch (RuntimeException e) {
-      if (++cycleFailures == 1 || cycleFailures % 100 == 0) {
-        log.warn("{} failed on the robot's cycle (#{})", what, cycleFailures, e);
-      }
-    }
   }
 
   /**
@@ -536,6 +484,14 @@ public class ArServerBase implements AutoCloseable {
     return io;
   }
 
+  ThreadPoolExecutor workers() {
+    return workers;
+  }
+
+  ArRobot robotOrNull() {
+    return robot;
+  }
+
   Publisher publisher() {
     return publisher;
   }
@@ -564,14 +520,23 @@ public class ArServerBase implements AutoCloseable {
    * @return false if there is no such data
    */
   public boolean broadcastPacketTcp(ArNetPacket packet, String name) {
-    DataEntry e = byName.get(name);
+    return broadcastPacketTcpWithExclusion(packet, name, null);
+  }
+
+  /**
+   * As {@link #broadcastPacketTcp}, to every such client but {@code excluded} (ArNetworking's name;
+   * for example the client whose change the broadcast announces).
+   */
+  public boolean broadcastPacketTcpWithExclusion(
+      ArNetPacket packet, String name, ArServerClient excluded) {
+    DataEntry e = data.byName(name);
     if (e == null) {
       return false;
     }
     packet.setCommand(e.id());
     byte[] wire = null;
     for (ArServerClient c : clients) {
-      if (c.isLoggedIn() && c.requests.containsKey(e.id())) {
+      if (c != excluded && c.isLoggedIn() && c.requests.containsKey(e.id())) {
         if (wire == null) {
           wire = packet.toWire();
         }
@@ -586,11 +551,11 @@ public class ArServerBase implements AutoCloseable {
     return broadcastPacketTcp(packet, name);
   }
 
-  private boolean onIoThread() {
+  boolean onIoThread() {
     return Thread.currentThread() == ioThread;
   }
 
-  private void enqueue(ArServerClient c, Outgoing o, boolean wakeup) {
+  void enqueue(ArServerClient c, Outgoing o, boolean wakeup) {
     if (c.isClosed()) {
       return;
     }
@@ -613,89 +578,11 @@ public class ArServerBase implements AutoCloseable {
   }
 
   /**
-   * Runs a request of {@code e} where its data says (cycle or worker). {@code r} is the interval
-   * request it runs for, or null for a request once. The caller has counted it in the client's
-   * pending calls.
+   * Runs a request of {@code e} where its data says (cycle or worker); see {@link CallRunner}. The
+   * caller has counted it in the client's pending calls.
    */
   void execute(ArServerClient c, DataEntry e, byte[] args, ArServerClient.Request r) {
-    Runnable task = () -> runCall(c, e, args, r);
-    boolean queued;
-    if (e.publication == null && e.where == Where.CYCLE && robot != null) {
-      queued = cycleQueue.offer(task);
-    } else {
-      try {
-        workers.execute(task);
-        queued = true;
-      } catch (RejectedExecutionException ex) {
-        queued = false;
-      }
-    }
-    if (!queued) {
-      c.pendingCalls.decrementAndGet();
-      if (r != null) {
-        r.running.set(false);
-      }
-      stats.busy.increment();
-      requestFailed(c, e, NetError.BUSY, "the server is busy; try again in a moment");
-    }
-  }
-
-  private void runCall(ArServerClient c, DataEntry e, byte[] args, ArServerClient.Request r) {
-    try {
-      if (c.isClosed()) {
-        return;
-      }
-      if (e.publication != null) {
-        DataEntry.Encoded enc = e.currentEncoded();
-        if (enc == null) {
-          requestFailed(c, e, NetError.UNAVAILABLE, e.name() + " has no value yet");
-        } else {
-          enqueue(c, Outgoing.update(-1, enc.version(), enc.wire()), !onIoThread());
-        }
-        return;
-      }
-      ArNetPacket reply = new ArNetPacket(e.id());
-      if (e.where == Where.WORKER) {
-        // One client's handlers run one at a time, as in ArNetworking's single server loop, so
-        // the packets of a multi-packet answer (getMap) never interleave with another's.
-        synchronized (c.handlerLock) {
-          e.handler.handle(c, ArNetPacket.wrap(e.id(), args, 0, args.length), reply);
-          sendReply(c, e, r, reply);
-        }
-      } else {
-        e.handler.handle(c, ArNetPacket.wrap(e.id(), args, 0, args.length), reply);
-        sendReply(c, e, r, reply);
-      }
-    } catch (ArNetPacketException ex) {
-      requestFailed(c, e, NetError.BAD_ARGUMENTS, e.name() + ": " + ex.getMessage());
-    } catch (NetRequestException ex) {
-      requestFailed(c, e, ex.getCode(), ex.getMessage());
-    } catch (InterruptedException ex) {
-      Thread.currentThread().interrupt();
-      requestFailed(c, e, NetError.FAILED, e.name() + " was interrupted");
-    } catch (Exception ex) {
-      log.warn("{} failed for {}", e.name(), c, ex);
-      requestFailed(c, e, NetError.FAILED, e.name() + " failed: " + ex);
-    } finally {
-      c.pendingCalls.decrementAndGet();
-      if (r != null) {
-        r.running.set(false);
-      }
-    }
-  }
-
-  /**
-   * Sends a handler's reply: always when it holds something; an empty one to a request once unless
-   * the data returns nothing (then only to a JAria client, as its acknowledgement); never an empty
-   * one for a request at an interval (an ArNetworking handler that sends nothing sends nothing).
-   */
-  private void sendReply(ArServerClient c, DataEntry e, ArServerClient.Request r, ArNetPacket p) {
-    boolean send =
-        p.getDataLength() > 0 || (r == null && (!e.info.returnsNothing() || c.wantsAcks));
-    if (send) {
-      p.setCommand(e.id());
-      sendPacket(c, p);
-    }
+    calls.execute(c, e, args, r);
   }
 
   /** The UDP port (0 if none is open). */

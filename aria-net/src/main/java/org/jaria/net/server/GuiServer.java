@@ -13,12 +13,15 @@ import org.jaria.net.server.info.ArServerHandlerCommands;
 import org.jaria.net.server.info.ArServerHandlerConfig;
 import org.jaria.net.server.info.ArServerHandlerLocalization;
 import org.jaria.net.server.info.ArServerHandlerMap;
+import org.jaria.net.server.info.ArServerHandlerPopup;
+import org.jaria.net.server.info.ArServerInfoDrawings;
 import org.jaria.net.server.info.ArServerInfoLocalization;
 import org.jaria.net.server.info.ArServerInfoPath;
 import org.jaria.net.server.info.ArServerInfoRobot;
 import org.jaria.net.server.info.ArServerInfoSensor;
 import org.jaria.net.server.info.ArServerInfoStrings;
 import org.jaria.net.server.info.ArStringInfoGroup;
+import org.jaria.net.server.modes.ArServerModeDock;
 import org.jaria.net.server.modes.ArServerModeGoto;
 import org.jaria.net.server.modes.ArServerModeRatioDrive;
 import org.jaria.net.server.modes.ArServerModeStop;
@@ -29,8 +32,10 @@ import org.jaria.robot.ArRobot;
 /**
  * The thesis's guiServer (§6.1) assembled: an {@link ArServerBase} with every service a monitor
  * uses — robot state, range readings, the map, information strings, custom commands, the four modes
- * (stop by default, teleoperation, wander, goto), relocalization — plus localization, path
- * planning, configuration and video when their providers are given.
+ * (stop by default, teleoperation, wander, goto with {@code home}), relocalization, drawings and
+ * popups — plus localization, path planning, configuration and video when their providers are
+ * given. The data are registered in a fixed order (ARIA's recorded clients use their numbers); what
+ * was added later comes last (see {@code aria-net/PROTOCOL.md} §8).
  *
  * <pre>{@code
  * ArnlNavigation nav = ArnlNavigation.create(robot, map, ArnlNavigation.Mode.THREADED, 1);
@@ -62,6 +67,8 @@ public final class GuiServer implements AutoCloseable {
   private final ArServerModeRatioDrive modeRatioDrive;
   private final ArServerModeWander modeWander;
   private final ArServerModeGoto modeGoto;
+  private final ArServerInfoDrawings drawings;
+  private final ArServerHandlerPopup popups;
 
   private GuiServer(Builder b) {
     ArRobot robot = b.robot;
@@ -72,20 +79,19 @@ public final class GuiServer implements AutoCloseable {
     infoGroup = b.infoGroup != null ? b.infoGroup : new ArStringInfoGroup();
     infoGroup.addStringDouble("Robot cycle (ms)", 8, () -> robot.getLastCycleNanos() / 1e6, "%.2f");
     infoGroup.addStringInt("Network clients", 4, server::getNumClients);
+    ArServerInfoLocalization locInfo = null;
     if (b.localization != null) {
       LocalizationInfo loc = b.localization;
       infoGroup.addStringDouble(
           "Localization score", 8, () -> loc.getLocalizationState().score(), "%.3f");
-      new ArServerInfoLocalization(server, loc);
+      locInfo = new ArServerInfoLocalization(server, loc);
     }
     ArServerInfoStrings strings = new ArServerInfoStrings(server, infoGroup);
     new ArServerHandlerLocalization(server, robot, b.localization, b.map);
-    if (b.pathPlanning != null) {
-      new ArServerInfoPath(server, b.pathPlanning);
-    }
-    if (b.config != null) {
-      new ArServerHandlerConfig(server, b.config);
-    }
+    ArServerInfoPath pathInfo =
+        b.pathPlanning != null ? new ArServerInfoPath(server, b.pathPlanning) : null;
+    ArServerHandlerConfig configHandler =
+        b.config != null ? new ArServerHandlerConfig(server, b.config) : null;
     if (b.video != null) {
       new ArServerHandlerCamera(server, b.video);
     }
@@ -100,6 +106,22 @@ public final class GuiServer implements AutoCloseable {
     // Registered last so that the data numbers ARIA clients were recorded with stay the same.
     commands.addStringCommandList();
     strings.addStringsInfo();
+    // Added after the services above (whose numbers ARIA's recorded clients used), in this order.
+    drawings = new ArServerInfoDrawings(server);
+    popups = new ArServerHandlerPopup(server, robot.getClock()::millis);
+    if (configHandler != null) {
+      configHandler.addDefaultServerCommands();
+    }
+    modeGoto.addHomeRequest();
+    new ArServerModeDock(server, b.map);
+    mapHandler.addMapBinary();
+    if (locInfo != null) {
+      locInfo.addLocalizationSnapshot();
+    }
+    if (pathInfo != null) {
+      pathInfo.addPathSnapshot();
+    }
+    GuiDrawings.addDrawings(drawings, robot, b.pathPlanning);
   }
 
   /** A builder for a guiServer driving {@code robot}. */
@@ -140,6 +162,16 @@ public final class GuiServer implements AutoCloseable {
   /** The information table, to add your own values. */
   public ArStringInfoGroup getInfoGroup() {
     return infoGroup;
+  }
+
+  /** The drawings clients may draw on the map, to add your own. */
+  public ArServerInfoDrawings getDrawings() {
+    return drawings;
+  }
+
+  /** The popups, to show one on every client. */
+  public ArServerHandlerPopup getPopups() {
+    return popups;
   }
 
   /** The map service (to serve a new map). */

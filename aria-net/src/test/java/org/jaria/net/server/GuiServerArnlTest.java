@@ -30,8 +30,12 @@ class GuiServerArnlTest {
   @Test
   void localizationStateAndParticles() throws Exception {
     try (GuiRig rig = GuiRig.arnl()) {
-      LocalizationSnapshot s = LocalizationSnapshot.read(rig.call("getLocState"));
+      LocalizationSnapshot s = LocalizationSnapshot.read(rig.call("getLocalizationSnapshot"));
       assertEquals("LOCALIZATION_SUCCESS", s.state());
+      // ARNL's layout of the same state: ubyte state, ubyte2 score 0..100.
+      org.jaria.net.data.LocState aria = org.jaria.net.data.LocState.read(rig.call("getLocState"));
+      assertEquals("LOCALIZATION_SUCCESS", aria.stateName());
+      assertEquals(s.score() * 100, aria.score(), 5);
       assertNotNull(s.pose());
       assertTrue(s.pose().findDistanceTo(rig.sim.sim().getTruePose()) < 200, "" + s.pose());
       assertFalse(s.lost());
@@ -49,9 +53,9 @@ class GuiServerArnlTest {
     try (GuiRig rig = GuiRig.arnl()) {
       List<PathSnapshot> paths = new CopyOnWriteArrayList<>();
       AtomicReference<RobotUpdate> update = new AtomicReference<>();
-      rig.client.addHandler("getPath", p -> paths.add(PathSnapshot.read(p)));
+      rig.client.addHandler("getPathSnapshot", p -> paths.add(PathSnapshot.read(p)));
       rig.client.addHandler("update", p -> update.set(RobotUpdate.read(p)));
-      Futures.get(rig.client.request("getPath", 20));
+      Futures.get(rig.client.request("getPathSnapshot", 20));
       Futures.get(rig.client.request("update", 20));
       rig.call("gotoGoal", "Room 101");
       assertEquals("Goto", ArServerModes.of(rig.gui.getServer()).getMode());
@@ -62,6 +66,10 @@ class GuiServerArnlTest {
           paths.stream().filter(p -> p.state().equals("MOVING_TO_GOAL")).findFirst().orElseThrow();
       assertTrue(moving.path().size() >= 2, "a path of points");
       assertEquals(new ArPose(3000, 15000), moving.goal());
+      // ARNL's layout of the path: byte2 count, byte4 x, y.
+      org.jaria.net.data.PlannedPath aria =
+          org.jaria.net.data.PlannedPath.read(rig.call("getPath"));
+      assertTrue(aria.path().size() >= 2, "the path in getPath: " + aria.path());
       assertTrue(
           rig.runUntil(
               () ->
@@ -106,7 +114,7 @@ class GuiServerArnlTest {
       assertTrue(rig.robot.getPose().findDistanceTo(elsewhere) > 5000, "it believes it is home");
       rig.call("localizeToPose", 15000, 9500, 180); // byte4 x, y, th; acknowledged when done
       rig.run(500);
-      LocalizationSnapshot s = LocalizationSnapshot.read(rig.call("getLocState"));
+      LocalizationSnapshot s = LocalizationSnapshot.read(rig.call("getLocalizationSnapshot"));
       assertTrue(s.pose().findDistanceTo(elsewhere) < 300, "localized there: " + s.pose());
     }
   }

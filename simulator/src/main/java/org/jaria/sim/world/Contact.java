@@ -18,7 +18,7 @@ public final class Contact {
   /** What was touched. */
   public RayHit.HitKind kind = RayHit.HitKind.NONE;
 
-  /** Index of the robot touched (only for {@link RayHit.HitKind#ROBOT}), else -1. */
+  /** Number of the robot touched (only for {@link RayHit.HitKind#ROBOT}), else -1. */
   public int robot = -1;
 
   /** Whether anything was touched. */

@@ -15,7 +15,7 @@ public final class RayHit {
   /** What was hit: a map line, a map point, an injected obstacle or another robot. */
   public HitKind kind = HitKind.NONE;
 
-  /** Index of the robot that was hit (only for {@link HitKind#ROBOT}), else -1. */
+  /** Number of the robot that was hit (only for {@link HitKind#ROBOT}), else -1. */
   public int robot = -1;
 
   /** Whether the ray hit anything within range. */

@@ -9,6 +9,11 @@ import java.util.List;
  * obstacles) in a {@link SegmentIndex}, plus the moving robots' footprints. Rays and collision
  * queries see both; a robot never sees or bumps into itself.
  *
+ * <p>Robots are known by their number in the world, which is never given to another robot: a robot
+ * can be {@link #removeRobot removed}, and rays and collisions stop seeing it at once, while hits
+ * ({@link RayHit#robot}, {@link Contact#robot}) keep naming robots by number. Internally the
+ * footprints stay packed in the order they were added.
+ *
  * <p>Used by the world thread only (not thread-safe).
  */
 public final class WorldGeometry {
@@ -18,6 +23,10 @@ public final class WorldGeometry {
 
   private SegmentIndex statics = SegmentIndex.builder().build();
   private final List<Footprint> robots = new ArrayList<>();
+
+  /** The number of the robot at each place of {@link #robots}. */
+  private int[] numbers = new int[8];
+
   private boolean[] solid = new boolean[8];
   private final RobotGrid grid = new RobotGrid();
   private boolean gridValid;
@@ -34,15 +43,51 @@ public final class WorldGeometry {
     return statics;
   }
 
-  /** Registers a robot's footprint (kept up to date by the caller); returns its index. */
-  public int addRobot(Footprint f) {
-    robots.add(f);
-    if (robots.size() > solid.length) {
-      solid = Arrays.copyOf(solid, solid.length * 2);
+  /**
+   * Registers the footprint of robot {@code number} (kept up to date by the caller).
+   *
+   * @throws IllegalArgumentException if a robot with that number is registered
+   */
+  public void addRobot(int number, Footprint f) {
+    if (place(number) >= 0) {
+      throw new IllegalArgumentException("robot " + number + " is registered already");
     }
-    solid[robots.size() - 1] = true;
+    int n = robots.size();
+    if (n == solid.length) {
+      solid = Arrays.copyOf(solid, n * 2);
+      numbers = Arrays.copyOf(numbers, n * 2);
+    }
+    robots.add(f);
+    numbers[n] = number;
+    solid[n] = true;
     gridValid = false;
-    return robots.size() - 1;
+  }
+
+  /**
+   * Forgets robot {@code number}: from now on no ray or collision meets it. Returns whether it was
+   * registered.
+   */
+  public boolean removeRobot(int number) {
+    int i = place(number);
+    if (i < 0) {
+      return false;
+    }
+    int tail = robots.size() - i - 1;
+    robots.remove(i);
+    System.arraycopy(numbers, i + 1, numbers, i, tail);
+    System.arraycopy(solid, i + 1, solid, i, tail);
+    gridValid = false;
+    return true;
+  }
+
+  /** Where robot {@code number} sits in {@link #robots}, or -1. */
+  private int place(int number) {
+    for (int i = 0, n = robots.size(); i < n; i++) {
+      if (numbers[i] == number) {
+        return i;
+      }
+    }
+    return -1;
   }
 
   /**
@@ -65,9 +110,12 @@ public final class WorldGeometry {
     gridValid = false;
   }
 
-  /** Makes a robot invisible to rays and collisions of others (or solid again). */
-  public void setSolid(int robot, boolean isSolid) {
-    solid[robot] = isSolid;
+  /** Makes robot {@code number} invisible to rays and collisions of others (or solid again). */
+  public void setSolid(int number, boolean isSolid) {
+    int i = place(number);
+    if (i >= 0) {
+      solid[i] = isSolid;
+    }
   }
 
   /** Number of robots registered. */
@@ -79,7 +127,7 @@ public final class WorldGeometry {
    * Casts a ray and stores the nearest hit (map, obstacle or another robot) in {@code out}, which
    * is reset first.
    *
-   * @param ignoreRobot the robot the ray starts from (-1 for none)
+   * @param ignoreRobot the number of the robot the ray starts from (-1 for none)
    */
   public void cast(
       double ox, double oy, double dx, double dy, double maxRange, int ignoreRobot, RayHit out) {
@@ -90,8 +138,8 @@ public final class WorldGeometry {
       grid.visitRay(ox, oy, dx, dy, out, maxRange, rayVisitor);
     } else {
       for (int i = 0, n = robots.size(); i < n; i++) {
-        if (i != ignoreRobot && solid[i]) {
-          robots.get(i).cast(ox, oy, dx, dy, out, i);
+        if (numbers[i] != ignoreRobot && solid[i]) {
+          robots.get(i).cast(ox, oy, dx, dy, out, numbers[i]);
         }
       }
     }
@@ -103,6 +151,7 @@ public final class WorldGeometry {
   /**
    * Whether {@code candidate} (a footprint placed where robot {@code self} wants to go) overlaps
    * anything; the touching point nearest the footprint's centre goes to {@code out} (reset first).
+   * {@code self} is the robot's number (-1 for none).
    */
   public boolean collides(Footprint candidate, int self, Contact out) {
     out.reset();
@@ -128,13 +177,14 @@ public final class WorldGeometry {
     return any;
   }
 
+  /** Whether the robot at place {@code i} touches {@code candidate} (never robot {@code self}). */
   private boolean touchRobot(Footprint candidate, int self, int i, Contact out) {
-    if (i == self || !solid[i]) {
+    if (numbers[i] == self || !solid[i]) {
       return false;
     }
     Footprint other = robots.get(i);
     if (candidate.overlaps(other)) {
-      other.offerContact(candidate, out, i);
+      other.offerContact(candidate, out, numbers[i]);
       return true;
     }
     return false;
@@ -160,8 +210,8 @@ public final class WorldGeometry {
 
     @Override
     public boolean visit(int robot) {
-      if (robot != ignore && solid[robot]) {
-        robots.get(robot).cast(ox, oy, dx, dy, out, robot);
+      if (numbers[robot] != ignore && solid[robot]) {
+        robots.get(robot).cast(ox, oy, dx, dy, out, numbers[robot]);
       }
       return true;
     }

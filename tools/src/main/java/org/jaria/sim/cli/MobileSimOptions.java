@@ -26,7 +26,10 @@ public final class MobileSimOptions {
   @Option(
       names = {"-R", "--robot-factory", "-robot-factory"},
       paramLabel = "MODEL",
-      description = "MobileSim's robot factory (a new robot per client): not supported yet")
+      description =
+          "A robot factory (repeatable): each client that connects to its port gets a new robot of"
+              + " MODEL, removed when the client disconnects (MobileSim's -R; ports from -p on,"
+              + " before the -r robots')")
   List<String> robotFactories = new ArrayList<>();
 
   @Option(

@@ -13,8 +13,10 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.jaria.geom.ArPose;
 import org.jaria.sim.OdometryError;
+import org.jaria.sim.RobotFactory;
 import org.jaria.sim.RobotOptions;
 import org.jaria.sim.ServerOptions;
+import org.jaria.sim.ServerPlan;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
@@ -177,20 +179,23 @@ public final class SimCommand implements Callable<Integer> {
    */
   public SimWorld createWorld() throws IOException {
     SimOptions options = buildOptions();
-    if (!mobileSim.robotFactories.isEmpty()) {
-      throw new ParameterException(
-          spec.commandLine(),
-          "-R/--robot-factory (a new robot for each client) is not supported yet: give one -r"
-              + " MODEL per client instead");
-    }
     SimWorld world = openMap(options);
     try {
       world.setBindAddress(mobileSim.bindAddress());
       StartPlace start = mobileSim.startPlace();
       SplittableRandom rng = new SplittableRandom(seed);
       List<String> specs = robotModels();
+      List<String> factories = mobileSim.robotFactories;
+      ServerPlan plan = new ServerPlan(port, factories.size(), specs.size());
+      for (int i = 0; i < factories.size(); i++) {
+        // MobileSim starts each factory robot at the start place (random: a new one each time)
+        world.addRobotFactory(
+            robotOptions(factories.get(i)),
+            plan.factoryPort(i),
+            m -> start == null ? null : start.poseFor(0, m, rng));
+      }
       for (int i = 0; i < specs.size(); i++) {
-        RobotOptions o = robotOptions(specs.get(i));
+        RobotOptions o = robotOptions(specs.get(i)).withPort(plan.robotPort(i));
         ArPose pose = start == null ? null : start.poseFor(i, world.getMap(), rng);
         world.addRobot(pose == null ? o : o.withStartPose(pose));
       }
@@ -242,15 +247,16 @@ public final class SimCommand implements Callable<Integer> {
         .withSrisimCompat(srisimCompat);
   }
 
-  /** The robot models to add, in order. */
+  /** The robot models to add, in order (none by default if there are robot factories). */
   List<String> robotModels() {
-    List<String> models = new ArrayList<>(robots.isEmpty() ? List.of("p3dx-sh") : robots);
+    boolean none = robots.isEmpty() && mobileSim.robotFactories.isEmpty();
+    List<String> models = new ArrayList<>(none ? List.of("p3dx-sh") : robots);
     if (robotCount != null) {
       if (robotCount < 1 || robotCount > 1000) {
         throw new ParameterException(
             spec.commandLine(), "--robots must be 1..1000, was " + robotCount);
       }
-      String last = models.get(models.size() - 1);
+      String last = models.isEmpty() ? "p3dx-sh" : models.get(models.size() - 1);
       while (models.size() < robotCount) {
         models.add(last);
       }
@@ -391,6 +397,11 @@ public final class SimCommand implements Callable<Integer> {
             stop.countDown();
           });
       world.listen();
+      for (RobotFactory f : world.getRobotFactories()) {
+        out.printf(
+            "robot factory for %s listening on TCP port %d (a new robot for each client)%n",
+            f.getModel(), f.getPort());
+      }
       for (SimRobot r : world.getRobots()) {
         out.printf(
             "robot %s (%s) listening on TCP port %d%n",
@@ -463,6 +474,11 @@ public final class SimCommand implements Callable<Integer> {
           b.th(),
           Math.hypot(b.x() - a.x(), b.y() - a.y()),
           r.getSessionCount());
+    }
+    for (RobotFactory f : world.getRobotFactories()) {
+      out.printf(
+          "robot factory for %s: %d robot(s) made, %d in the world%n",
+          f.getModel(), f.getRobotsMade(), f.getRobots().size());
     }
     out.flush();
   }

@@ -111,7 +111,8 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
             DemoLaser l = laser == null ? null : new DemoLaser(laser, laserPort, null)) {
           out.println(stopsAfter(seconds));
           out.flush();
-          return GotoActionExample.run(remoteArgs(), robot -> watch(ticker, robot, null, l, out));
+          return remoteFailed(
+              GotoActionExample.run(remoteArgs(), robot -> watch(ticker, robot, null, l, out)));
         }
       }
       try (EmbeddedSimulator sim = new EmbeddedSimulator(map, model, seed);

@@ -1,8 +1,8 @@
 package org.jaria.tools.demo;
 
 import java.io.IOException;
-import java.net.InetSocketAddress;
-import java.net.Socket;
+import java.net.InetAddress;
+import java.net.UnknownHostException;
 import org.jaria.clock.Clock;
 import org.jaria.connection.RobotAddress;
 import picocli.CommandLine.Option;
@@ -47,8 +47,13 @@ class DemoOptions {
   }
 
   /**
-   * Checks that the {@code --remote} robot can be reached before the program starts, so a wrong
-   * address is said once, in the user's own option names, instead of by every layer that tries.
+   * Checks the {@code --remote} address before the program starts, so a wrong one is said once, in
+   * the user's own option names, instead of by every layer that tries: a serial port must open, a
+   * host name must resolve. A TCP port is not tried with a connection of its own: MobileSim and
+   * AMRISim take any connection for their one client, close their port while it lasts and, when it
+   * ends, may move the robot to the next port (AMRISim does while the old one is in TIME_WAIT), so
+   * the program's own connection would find nobody there. {@link #remoteFailed} explains a TCP
+   * address that the program could not connect to.
    *
    * @throws IOException saying what failed and what to try
    */
@@ -58,18 +63,30 @@ class DemoOptions {
       a.open(Clock.system(), "--remote").close();
       return;
     }
-    try (Socket s = new Socket()) {
-      s.connect(new InetSocketAddress(a.host(), a.port()), 3000);
-    } catch (IOException e) {
+    try {
+      InetAddress.getByName(a.host());
+    } catch (UnknownHostException e) {
       throw new IOException(
-          "nothing accepts connections at "
-              + a
-              + " ("
-              + e.getMessage()
-              + "): start a simulator there (./jaria sim --port "
-              + a.port()
-              + ") or give --remote the robot's HOST:PORT",
-          e);
+          "unknown host '" + a.host() + "' in --remote " + remote + ": give a name or address", e);
     }
+  }
+
+  /**
+   * What a demo's {@code --remote} run returns: {@code status}, unless it is 1 (no robot) for a TCP
+   * address, which is then explained in the user's own option names.
+   *
+   * @throws IOException saying that nothing answered at the address and what to do
+   */
+  int remoteFailed(int status) throws IOException {
+    RobotAddress a = RobotAddress.parse(remote);
+    if (status != 1 || a.isSerial()) {
+      return status;
+    }
+    throw new IOException(
+        "nothing accepts connections at "
+            + a
+            + ", or it did not answer as a robot: start a simulator there (./jaria sim --port "
+            + a.port()
+            + ") or give --remote the robot's HOST:PORT");
   }
 }

@@ -19,6 +19,9 @@ import org.jaria.connection.RobotAddress;
 import org.jaria.map.ArMap;
 import org.jaria.map.MapFormatException;
 import org.jaria.net.arnl.ArnlNavigation;
+import org.jaria.net.forward.ArHybridForwarderVideo;
+import org.jaria.net.forward.ForwarderStats;
+import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ArServerUserInfo;
 import org.jaria.net.server.Authenticator;
 import org.jaria.net.server.GuiServer;
@@ -95,6 +98,15 @@ public final class GuiServerCommand implements Callable<Integer> {
   Path video;
 
   @Option(
+      names = "--forward-video",
+      paramLabel = "HOST[:PORT]",
+      description =
+          "Forward the video of this ArNetworking video server (port 7070 if absent: ACTS's SAV"
+              + " server, ./jaria acts) to monitors, as ARIA's serverDemo does; it replaces the"
+              + " camera.")
+  String forwardVideo;
+
+  @Option(
       names = "--port",
       description = "TCP port to serve monitors on (default ${DEFAULT-VALUE}; 0: any free one).")
   int port = 7272;
@@ -162,6 +174,13 @@ public final class GuiServerCommand implements Callable<Integer> {
       if (camera != null && video != null) {
         throw new IllegalArgumentException("give --camera or --video, not both");
       }
+      if (forwardVideo != null && (camera != null || video != null)) {
+        throw new IllegalArgumentException(
+            "give --forward-video or --camera/--video, not both: each serves sendVideo");
+      }
+      if (forwardVideo != null) {
+        forwardPort(); // a wrong address is said before anything starts
+      }
       if (remote != null || serial != null) {
         return runOnRobot(m, mapName, options, out);
       }
@@ -171,16 +190,17 @@ public final class GuiServerCommand implements Callable<Integer> {
                 + " simulator serves its own camera (or none with --no-camera)");
       }
       try (SimulatedGuiServer s =
-          SimulatedGuiServer.start(
-              new SimulatedGuiServer.Options(
-                  m,
-                  mapName,
-                  model,
-                  seed,
-                  options,
-                  ArnlNavigation.Mode.THREADED,
-                  speed,
-                  !noCamera))) {
+              SimulatedGuiServer.start(
+                  new SimulatedGuiServer.Options(
+                      m,
+                      mapName,
+                      model,
+                      seed,
+                      options,
+                      ArnlNavigation.Mode.THREADED,
+                      speed,
+                      !noCamera && forwardVideo == null));
+          ArHybridForwarderVideo forwarder = forwarder(s.gui().getServer(), out)) {
         out.printf(
             Locale.ROOT,
             "guiServer: embedded simulator, a %s on %s, %s%n",
@@ -188,7 +208,7 @@ public final class GuiServerCommand implements Callable<Integer> {
             map,
             speed == 1 ? "real time" : speed + " × real time");
         report(out, s.wasLocalized(), s.robot(), s.nav());
-        return serve(s.gui(), s.robot(), out);
+        return serve(s.gui(), s.robot(), forwarder, out);
       }
     } catch (IllegalArgumentException | IllegalStateException | IOException e) {
       err.println("guiserver: " + e.getMessage());
@@ -286,12 +306,53 @@ public final class GuiServerCommand implements Callable<Integer> {
               .video(cam)
               .build()) {
         nav.addCommands(gui.getCommands());
-        gui.open();
-        return serve(gui, robot, out);
+        try (ArHybridForwarderVideo forwarder = forwarder(gui.getServer(), out)) {
+          gui.open();
+          return serve(gui, robot, forwarder, out);
+        }
       }
     } finally {
       robot.close();
     }
+  }
+
+  /** The video forwarder --forward-video asks for (its data added to {@code server}), or null. */
+  private ArHybridForwarderVideo forwarder(ArServerBase server, PrintWriter out) {
+    if (forwardVideo == null) {
+      return null;
+    }
+    ArHybridForwarderVideo f =
+        new ArHybridForwarderVideo(
+            server,
+            forwardHost(),
+            forwardPort(),
+            java.time.Duration.ofSeconds(2),
+            System::nanoTime);
+    out.printf(Locale.ROOT, "Forwarding video from %s%n", f.getSource());
+    return f;
+  }
+
+  private String forwardHost() {
+    int colon = forwardVideo.lastIndexOf(':');
+    return colon < 0 ? forwardVideo : forwardVideo.substring(0, colon);
+  }
+
+  /** The port of --forward-video (ACTS's 7070 if it names none). */
+  private int forwardPort() {
+    int colon = forwardVideo.lastIndexOf(':');
+    if (colon < 0) {
+      return ArHybridForwarderVideo.DEFAULT_PORT;
+    }
+    try {
+      int p = Integer.parseInt(forwardVideo.substring(colon + 1));
+      if (p >= 1 && p <= 0xFFFF) {
+        return p;
+      }
+    } catch (NumberFormatException e) {
+      // said below
+    }
+    throw new IllegalArgumentException(
+        "--forward-video wants HOST or HOST:PORT, got '" + forwardVideo + "'");
   }
 
   private static void report(PrintWriter out, boolean localized, ArRobot robot, ArnlNavigation n) {
@@ -304,7 +365,8 @@ public final class GuiServerCommand implements Callable<Integer> {
   }
 
   /** Prints where it listens, then a status line every 10 s until the time is up or Ctrl-C. */
-  private int serve(GuiServer gui, ArRobot robot, PrintWriter out) {
+  private int serve(
+      GuiServer gui, ArRobot robot, ArHybridForwarderVideo forwarder, PrintWriter out) {
     var server = gui.getServer();
     boolean open = server.getOptions().authenticator().isOpen();
     String host = server.getOptions().bindAddress();
@@ -337,12 +399,13 @@ public final class GuiServerCommand implements Callable<Integer> {
         ArServerModes modes = gui.getModes();
         out.printf(
             Locale.ROOT,
-            "t=%4ds  clients %d  mode %s: %s  pose %s%n",
+            "t=%4ds  clients %d  mode %s: %s  pose %s%s%n",
             s,
             server.getNumClients(),
             modes.getMode(),
             modes.getStatus(),
-            robot.getPose());
+            robot.getPose(),
+            forwarder == null ? "" : videoStatus(forwarder.getStats()));
         out.flush();
         if (System.nanoTime() >= end) {
           break;
@@ -362,6 +425,16 @@ public final class GuiServerCommand implements Callable<Integer> {
       }
     }
     return 0;
+  }
+
+  /** The forwarder's part of the status line. */
+  static String videoStatus(ForwarderStats v) {
+    return String.format(
+        Locale.ROOT,
+        "  video %s, %d frames, %d dropped",
+        v.connected() ? "forwarded" : "not connected",
+        v.frames(),
+        v.dropped());
   }
 
   private static void pause(Duration d) {

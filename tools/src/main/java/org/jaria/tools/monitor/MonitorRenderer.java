@@ -67,6 +67,10 @@ final class MonitorRenderer {
       }
     }
     RobotUpdate u = s.robot;
+    // Drawings also come from servers without a robot (ARIA's drawingsExample): arrows then point
+    // at the map's origin.
+    DrawingsRenderer.draw(
+        gc, vp, s.drawings, s.drawingPoints, u != null ? u.x() : 0, u != null ? u.y() : 0);
     double radius = s.physical != null ? s.physical.radius() : 250;
     if (u != null) {
       drawRobot(gc, vp, u.getPose(), radius, ROBOT, ROBOT_FILL);

@@ -1,13 +1,17 @@
 package org.jaria.tools.monitor;
 
 import java.util.List;
+import java.util.Map;
 import org.jaria.map.ArMap;
 import org.jaria.net.data.ConfigSection;
 import org.jaria.net.data.InfoStrings;
 import org.jaria.net.data.LocalizationSnapshot;
+import org.jaria.net.data.NamedDrawing;
 import org.jaria.net.data.Particles;
 import org.jaria.net.data.PathSnapshot;
 import org.jaria.net.data.PhysicalInfo;
+import org.jaria.net.data.Points;
+import org.jaria.net.data.PopupLayout;
 import org.jaria.net.data.RobotUpdate;
 import org.jaria.net.data.SensorReadings;
 import org.jaria.net.data.VideoFrame;
@@ -35,6 +39,14 @@ final class MonitorState {
   volatile VideoFrame video;
   volatile List<String> goals = List.of();
 
+  /** The server's drawings (ArServerInfoDrawings), in its order, and each one's latest points. */
+  volatile List<NamedDrawing> drawings = List.of();
+
+  volatile Map<String, Points> drawingPoints = Map.of();
+
+  /** The server's open popups by number (ArServerHandlerPopup). */
+  volatile Map<Integer, PopupLayout.Shown> popups = Map.of();
+
   /** Forgets everything (a new connection). */
   void clear() {
     map = null;
@@ -48,5 +60,8 @@ final class MonitorState {
     config = null;
     video = null;
     goals = List.of();
+    drawings = List.of();
+    drawingPoints = Map.of();
+    popups = Map.of();
   }
 }

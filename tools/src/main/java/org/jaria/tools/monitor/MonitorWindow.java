@@ -73,6 +73,7 @@ public final class MonitorWindow implements DesktopApp {
   private final TeleopKeys teleop;
   private final ConfigPane configPane;
   private final CameraPane cameraPane = new CameraPane();
+  private final PopupDialogs popupDialogs;
   private final CompletableFuture<Void> ready = new CompletableFuture<>();
   private final Button connect = new Button("Connect");
   private final ComboBox<String> goals = new ComboBox<>();
@@ -135,6 +136,12 @@ public final class MonitorWindow implements DesktopApp {
               }
             });
     this.configPane = new ConfigPane(this::applyConfig);
+    this.popupDialogs =
+        new PopupDialogs(
+            stage,
+            (id, button) -> {
+              java.util.concurrent.CompletableFuture<?> unused = link.popupClicked(id, button);
+            });
     link.addConnectionListener(
         new ConnectionListener() {
           @Override
@@ -531,6 +538,7 @@ public final class MonitorWindow implements DesktopApp {
     }
     configPane.show(state.config);
     cameraPane.show(state.video);
+    popupDialogs.show(state.popups);
   }
 
   // ------------------------------------------------------------------ DesktopApp
@@ -544,6 +552,10 @@ public final class MonitorWindow implements DesktopApp {
   @Override
   public CompletableFuture<Void> ready() {
     return ready;
+  }
+
+  PopupDialogs popupDialogs() {
+    return popupDialogs;
   }
 
   MonitorCanvas canvas() {

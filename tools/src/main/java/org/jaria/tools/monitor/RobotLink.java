@@ -18,6 +18,7 @@ import org.jaria.net.data.CommandInfo;
 import org.jaria.net.data.ConfigLayout;
 import org.jaria.net.data.InfoStrings;
 import org.jaria.net.data.LocalizationSnapshot;
+import org.jaria.net.data.MapBinaryLayout;
 import org.jaria.net.data.MapData;
 import org.jaria.net.data.Particles;
 import org.jaria.net.data.PathSnapshot;
@@ -49,6 +50,7 @@ final class RobotLink implements AutoCloseable {
   // The labels of getStrings's values, from getStringsInfo (asked once per connection).
   private volatile List<String> stringLabels = List.of();
   private final Runnable changed;
+  private final LinkExtras extras;
 
   /**
    * A link storing into {@code state} and calling {@code changed} (on the reader thread) after
@@ -59,9 +61,12 @@ final class RobotLink implements AutoCloseable {
     this.changed = changed;
     on("update", RobotUpdate::read, v -> state.robot = v);
     on("getSensorCurrent", SensorReadings::read, v -> state.sensors = v);
-    on("getLocState", LocalizationSnapshot::read, v -> state.localization = v);
+    on("getLocalizationSnapshot", LocalizationSnapshot::read, v -> state.localization = v);
     on("getLocPoints", Particles::read, v -> state.particles = v);
-    on("getPath", PathSnapshot::read, v -> state.path = v);
+    on("getPathSnapshot", PathSnapshot::read, v -> state.path = v);
+    extras = new LinkExtras(client, state, changed);
+    // Another client changed the configuration (ArNetworking's configUpdated): read it again.
+    client.addHandler("configUpdated", p -> fetchConfig());
     on("getStrings", p -> InfoStrings.read(p, stringLabels), v -> state.strings = v);
     on("getVideo", VideoFrame::read, v -> state.video = v);
     client.addHandler(
@@ -102,14 +107,21 @@ final class RobotLink implements AutoCloseable {
                 });
   }
 
-  /** Asks for the map's name and then the map (ArNetworking's getMapName and getMap). */
+  /**
+   * Asks for the map's name and then the map: with getMapBinary (its points as numbers, smaller,
+   * what MobileEyes uses) if the server has it, else with getMap (text).
+   */
   private void fetchMap() {
-    if (!client.dataExists("getMap")) {
+    boolean binary = client.dataExists("getMapBinary");
+    if (!binary && !client.dataExists("getMap")) {
       return;
     }
     CompletableFuture<?> unused =
         request("getMapName")
-            .thenCompose(n -> request("getMap").thenApply(m -> mapView(m, n.bufToStr())))
+            .thenCompose(
+                n ->
+                    request(binary ? "getMapBinary" : "getMap")
+                        .thenApply(m -> mapView(m, n.bufToStr(), binary)))
             .thenAccept(
                 v -> {
                   state.map = v;
@@ -147,8 +159,11 @@ final class RobotLink implements AutoCloseable {
         });
   }
 
-  private MonitorState.MapView mapView(ArNetPacket p, String name) {
-    MapData d = MapData.read(p, name, mapVersion.get());
+  private MonitorState.MapView mapView(ArNetPacket p, String name, boolean binary) {
+    MapData d =
+        binary
+            ? new MapData(name, mapVersion.get(), MapBinaryLayout.readText(p))
+            : MapData.read(p, name, mapVersion.get());
     try {
       ArMap m = d.toArMap();
       ArMapPoints pts = m.getPoints();
@@ -174,16 +189,20 @@ final class RobotLink implements AutoCloseable {
     state.clear();
     unreadable.clear();
     subscribe("update", FAST_MS);
-    for (String d : List.of("getLocState", "getLocPoints", "getPath", "getStrings")) {
+    for (String d : List.of("getLocPoints", "getStrings")) {
       subscribe(d, MEDIUM_MS);
     }
     client.connect(host, port, user == null ? "" : user, password);
+    extras.connected(MEDIUM_MS);
     if (client.dataExists("getSensorCurrent")) {
       // ArNetworking sends one named sensor's readings per request.
       CompletableFuture<Duration> unused =
           client.request("getSensorCurrent", FAST_MS, ArNetPacketArgs.of("sonar"));
     }
     fetchConfig();
+    if (client.dataExists("configUpdated")) {
+      subscribe("configUpdated", -1);
+    }
     if (client.dataExists("mapUpdated")) {
       subscribe("mapUpdated", -1);
     }
@@ -246,6 +265,11 @@ final class RobotLink implements AutoCloseable {
   /** Sends a request or command; the future fails with the server's message. */
   CompletableFuture<ArNetPacket> request(String name, Object... args) {
     return client.requestOnce(name, args);
+  }
+
+  /** Answers popup {@code id} with button {@code button} (ArNetworking's popupClicked). */
+  CompletableFuture<?> popupClicked(int id, int button) {
+    return extras.popupClicked(id, button);
   }
 
   /** The custom commands the server offers. */

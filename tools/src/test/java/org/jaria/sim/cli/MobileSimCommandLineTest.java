@@ -99,12 +99,23 @@ class MobileSimCommandLineTest {
   }
 
   @Test
-  void robotFactoryIsRefusedWithWhatToDoInstead() {
-    SimCommand cmd = new SimCommand();
-    new CommandLine(cmd).parseArgs("-R", "p3dx-sh", "-p", "0");
-    CommandLine.ParameterException e =
-        assertThrows(CommandLine.ParameterException.class, cmd::createWorld);
-    assertTrue(e.getMessage().contains("-r MODEL per client"), e.getMessage());
+  void robotFactoriesComeWithoutADefaultRobotAndBesideTheRobotsGiven() throws IOException {
+    SimCommand only = new SimCommand();
+    new CommandLine(only).parseArgs("-R", "p3dx-sh", "-p", "0");
+    try (SimWorld w = only.createWorld()) {
+      assertEquals(List.of(), w.getRobots(), "as MobileSim: no default robot beside a factory");
+      assertEquals("p3dx-sh", w.getRobotFactories().get(0).getModel());
+    }
+    SimCommand both = new SimCommand();
+    new CommandLine(both).parseArgs("-R", "amigo", "--robot-factory", "p3at-sh", "-r", "p3dx-sh");
+    try (SimWorld w = both.createWorld()) {
+      assertEquals(2, w.getRobotFactories().size());
+      assertEquals("p3at-sh", w.getRobotFactories().get(1).getModel());
+      assertEquals(1, w.getRobots().size());
+    }
+    SimCommand bad = new SimCommand();
+    new CommandLine(bad).parseArgs("-R", "no-such-robot", "-p", "0");
+    assertThrows(CommandLine.ParameterException.class, bad::createWorld);
   }
 
   /** A command that embeds {@code jaria sim}'s options, as {@code jaria sim --gui} does. */

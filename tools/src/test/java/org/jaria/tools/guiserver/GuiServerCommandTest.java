@@ -122,12 +122,16 @@ class GuiServerCommandTest {
     String[][] cases = {
       {"--camera", "0"},
       {"--remote", "127.0.0.1:1", "--serial", "/dev/ttyS0"},
-      {"--remote", "127.0.0.1:1", "--camera", "0", "--video", "x.png"}
+      {"--remote", "127.0.0.1:1", "--camera", "0", "--video", "x.png"},
+      {"--remote", "127.0.0.1:1", "--video", "x.png", "--forward-video", "localhost"},
+      {"--forward-video", "localhost:seventy"}
     };
     String[] reasons = {
       "--camera and --video are for a real robot",
       "--remote or --serial, not both",
-      "--camera or --video, not both"
+      "--camera or --video, not both",
+      "--forward-video or --camera/--video, not both",
+      "--forward-video wants HOST or HOST:PORT, got 'localhost:seventy'"
     };
     for (int i = 0; i < cases.length; i++) {
       CommandLine cli = JariaCli.commandLine();
@@ -140,6 +144,64 @@ class GuiServerCommandTest {
       System.arraycopy(cases[i], 0, args, 2, cases[i].length);
       assertEquals(2, cli.execute(args), String.join(" ", args));
       assertTrue(err.toString().contains(reasons[i]), err.toString());
+    }
+  }
+
+  /**
+   * docs/networking.md's recipe: the guiServer passes on a SAV server's pictures ({@code jaria
+   * acts}'s, here its SavServer on a free port) as {@code sendVideo}, byte for byte.
+   */
+  @Test
+  void forwardsAVideoServersPictures() throws Exception {
+    int[] px = new int[160 * 120];
+    java.util.Arrays.fill(px, 0x3366cc);
+    try (SimWorld world =
+            SimWorld.bundled("office", SimOptions.builder().basePort(0).seed(2).build());
+        org.jaria.acts.sav.SavServer sav =
+            org.jaria.acts.sav.SavServer.open(px::clone, () -> 1, 160, 120, "127.0.0.1", 0);
+        ArClientBase direct = new ArClientBase("direct")) {
+      SimRobot r = world.addRobot("p3dx-sh");
+      world.listen();
+      world.startRealTime(1);
+      direct.connect("127.0.0.1", sav.getPort(), "", "");
+      byte[] fromSav =
+          direct.requestOnce("sendVideo", (byte) 90).get(10, TimeUnit.SECONDS).remainingBytes();
+      CommandLine cli = JariaCli.commandLine();
+      Output out = new Output();
+      StringWriter err = new StringWriter();
+      cli.setOut(new PrintWriter(out, true));
+      cli.setErr(new PrintWriter(err, true));
+      CompletableFuture<Integer> run =
+          CompletableFuture.supplyAsync(
+              () ->
+                  cli.execute(
+                      "demo",
+                      "guiserver",
+                      "--map",
+                      "office",
+                      "--remote",
+                      "127.0.0.1:" + r.getPort(),
+                      "--forward-video",
+                      "127.0.0.1:" + sav.getPort(),
+                      "--port",
+                      "0",
+                      "--seconds",
+                      "8"));
+      assertTrue(out.listening.await(60, TimeUnit.SECONDS), "listening: " + out.text() + err);
+      String text = out.text();
+      assertTrue(text.contains("Forwarding video from 127.0.0.1:" + sav.getPort()), text);
+      Matcher m = Pattern.compile("Listening on [0-9.]+:(\\d+)").matcher(text);
+      assertTrue(m.find(), text);
+      try (ArClientBase c = new ArClientBase("getVideoExample")) {
+        c.connect("127.0.0.1", Integer.parseInt(m.group(1)), "", "");
+        byte[] got = new byte[0];
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (got.length <= 4 && System.nanoTime() < end) {
+          got = c.requestOnce("sendVideo", (byte) 90).get(10, TimeUnit.SECONDS).remainingBytes();
+        }
+        org.junit.jupiter.api.Assertions.assertArrayEquals(fromSav, got, "the SAV server's frame");
+      }
+      assertEquals(0, run.get(60, TimeUnit.SECONDS), err.toString());
     }
   }
 }

@@ -276,6 +276,37 @@ class MonitorWindowTest {
   }
 
   @Test
+  void aServerPopupIsShownAndAnsweredAndTheDrawingsArrive(FxRobot robot) throws Exception {
+    MonitorWindow w = connected();
+    waitFor(
+        "the sonar drawing's points", () -> w.state().drawingPoints.containsKey("sonarCurrent"));
+    java.util.concurrent.atomic.AtomicInteger pressed =
+        new java.util.concurrent.atomic.AtomicInteger(99);
+    org.jaria.net.data.PopupInfo ask =
+        new org.jaria.net.data.PopupInfo(
+            "",
+            "Goal",
+            "Carry on to the goal?",
+            org.jaria.net.data.PopupInfo.PopupType.QUESTION,
+            0,
+            1,
+            0,
+            "",
+            "Carry on",
+            "Carrying on",
+            "Stop here",
+            "Stopped",
+            "",
+            "");
+    server.gui().getPopups().createPopup(ask, (id, button) -> pressed.set(button));
+    waitFor("the popup is shown", () -> FxRuntime.call(() -> w.popupDialogs().count(), 10) == 1);
+    robot.clickOn("Stop here");
+    waitFor("the server hears the button", () -> pressed.get() == 1);
+    waitFor("the dialog is gone", () -> FxRuntime.call(() -> w.popupDialogs().count(), 10) == 0);
+    assertTrue(server.gui().getPopups().getOpenPopups().isEmpty());
+  }
+
+  @Test
   void aWrongPasswordIsRefusedWithAClearMessage() {
     MonitorWindow w = open(stage, "pioneeR");
     ExecutionException e =

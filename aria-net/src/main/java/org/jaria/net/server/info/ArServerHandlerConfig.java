@@ -1,6 +1,7 @@
 package org.jaria.net.server.info;
 
 import org.jaria.net.ArNetPacket;
+import org.jaria.net.data.ConfigDefaultsLayout;
 import org.jaria.net.data.ConfigLayout;
 import org.jaria.net.data.ConfigSection;
 import org.jaria.net.provider.ConfigRegistry;
@@ -13,12 +14,19 @@ import org.jaria.net.server.Where;
  * "getConfigBySections"} answers one packet per section (see {@link ConfigLayout}) ended by an
  * empty packet; {@code "setConfig"} takes pairs of strings (parameter, value), where the parameter
  * {@code "Section"} names the section of the pairs after it, sets every parameter it can and
- * answers one string: empty when all were set, otherwise the first refusal.
+ * answers one string: empty when all were set, otherwise the first refusal. After a {@code
+ * "setConfig"}, {@code "configUpdated"} (an empty packet) goes to every other client that asked for
+ * it, once {@link #addDefaultServerCommands} has registered it with {@code "getConfigDefaults"}.
  */
 public final class ArServerHandlerConfig {
 
+  private final ArServerBase server;
+  private final ConfigRegistry config;
+
   /** Registers the configuration data with {@code server}. */
   public ArServerHandlerConfig(ArServerBase server, ConfigRegistry config) {
+    this.server = server;
+    this.config = config;
     server.addData(
         "getConfigBySections",
         "gets the configuration, one packet per section",
@@ -62,6 +70,48 @@ public final class ArServerHandlerConfig {
             }
           }
           reply.strToBuf(first);
+          // As ArNetworking: every setConfig tells the other clients to read the config again.
+          server.broadcastPacketTcpWithExclusion(new ArNetPacket(), "configUpdated", client);
         });
+  }
+
+  /**
+   * Registers {@code "getConfigDefaults"} (the defaults in {@link ConfigDefaultsLayout}), {@code
+   * "configDefaultsUpdated"} and {@code "configUpdated"}: ArNetworking's names and layouts. They
+   * are registered separately from the constructor so that a server can add them after its other
+   * data and keep the numbers clients know.
+   */
+  public void addDefaultServerCommands() {
+    server.addData(
+        "getConfigDefaults",
+        "Gets the config default values ",
+        "string: section to load, empty string means get the whole thing",
+        "repeating strings that are the parameters and arguments to parse, but use"
+            + " ArClientHandlerConfig to handle this if you want",
+        "ConfigEditing",
+        "RETURN_SINGLE",
+        Where.WORKER,
+        (client, request, reply) -> {
+          String section = request.hasMore() ? request.bufToStr() : "";
+          ConfigDefaultsLayout.write(reply, config.getSections(), section);
+        });
+    server.addData(
+        "configDefaultsUpdated",
+        "Gets sent when the config defaults are updated",
+        "none",
+        "none",
+        "ConfigEditing",
+        "RETURN_SINGLE",
+        Where.WORKER,
+        (client, request, reply) -> {});
+    server.addData(
+        "configUpdated",
+        "gets sent when the config is updated",
+        "none",
+        "none",
+        "ConfigEditing",
+        "RETURN_SINGLE",
+        Where.WORKER,
+        (client, request, reply) -> {});
   }
 }

@@ -5,6 +5,7 @@ import java.io.StringWriter;
 import java.io.UncheckedIOException;
 import org.jaria.map.ArMap;
 import org.jaria.net.ArNetPacket;
+import org.jaria.net.data.MapBinaryLayout;
 import org.jaria.net.data.MapData;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.Where;
@@ -81,6 +82,37 @@ public final class ArServerHandlerMap {
     if (arMap != null) {
       setMap(arMap, name);
     }
+  }
+
+  /**
+   * Registers {@code "getMapBinary"} (the map with its lines and points as numbers, {@link
+   * MapBinaryLayout}); separate from the constructor so a server can add it after its other data.
+   */
+  public void addMapBinary() {
+    server.addData(
+        "getMapBinary",
+        "gets the map objects as ascii and the data points as binary",
+        "none",
+        "packets of '<string>: line' for header, followed by packets of '<byte4>: numPtsInPacket,"
+            + " (<double>:x, <double>:y)*' until numPtsInPacket == 0",
+        "Map",
+        "RETURN_UNTIL_EMPTY",
+        Where.WORKER,
+        (client, request, reply) -> {
+          int cmd = server.findCommandFromName("getMapBinary");
+          MapData m = current;
+          if (m == null) {
+            ArNetPacket none = new ArNetPacket(cmd);
+            none.strToBuf("");
+            client.sendPacketTcp(none);
+            return;
+          }
+          for (ArNetPacket p : MapBinaryLayout.bodies(m.text())) {
+            p.setCommand(cmd);
+            client.sendPacketTcp(p);
+          }
+          // The (empty) reply packet the server sends next ends the answer.
+        });
   }
 
   /**

@@ -115,6 +115,39 @@ public class ArServerModeGoto extends ArServerMode {
         });
   }
 
+  /**
+   * Registers ARNL's {@code "home"}: drive to the map's home (its first RobotHome, else its first
+   * Dock), as a goal with heading. Separate from the constructor so that a server can add it after
+   * its other data. Without a home on the map the request fails with a message saying so.
+   */
+  public void addHomeRequest() {
+    server.addData(
+        "home",
+        "Activate Goal mode and send the robot to the Home point in the map (if any)",
+        "none",
+        "none",
+        "Movement",
+        planner == null ? Where.CYCLE : Where.WORKER,
+        (client, request, reply) -> {
+          ArPose home =
+              map == null
+                  ? null
+                  : map.findFirstMapObjectOfType("RobotHome")
+                      .or(() -> map.findFirstMapObjectOfType("Dock"))
+                      .map(ArMapObject::pose)
+                      .orElse(null);
+          if (home == null) {
+            throw new NetRequestException(
+                NetError.UNAVAILABLE, "the map has no RobotHome (or Dock) to return to");
+          }
+          if (planner != null) {
+            startWithPlanner("home", () -> planner.pathPlanToPose(home, true));
+          } else {
+            gotoPose(home, true, "home");
+          }
+        });
+  }
+
   /** The names of the map's goals, in map order. */
   public List<String> getGoals() {
     List<String> l = new ArrayList<>();
