@@ -1,4 +1,4 @@
-import org.jaria.action.LaserScan;
+import org.jaria.range.LaserScan;
 import org.jaria.connection.ArTcpConnection;
 import org.jaria.range.ArSimulatedLaser;
 import org.jaria.robot.ArRobot;

@@ -5,6 +5,8 @@ import java.util.concurrent.TimeUnit;
 import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
 import org.jaria.geom.ArTransform;
+import org.jaria.range.LaserScan;
+import org.jaria.range.LaserScanSource;
 import org.jaria.robot.ArRobot;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;

@@ -2,6 +2,7 @@ package org.jaria.action;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.jaria.range.LaserScan;
 
 /**
  * Finds straight lines in a laser scan (ARIA's {@code ArLineFinder}, with its own method): the

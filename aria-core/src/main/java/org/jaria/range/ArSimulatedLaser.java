@@ -1,7 +1,5 @@
 package org.jaria.range;
 
-import org.jaria.action.LaserScan;
-import org.jaria.action.LaserScanSource;
 import org.jaria.geom.ArPose;
 import org.jaria.params.ArRobotParams;
 import org.jaria.protocol.ArCommands;

@@ -11,6 +11,7 @@ import java.util.Random;
 import org.jaria.action.ArActionTriangleDriveTo.State;
 import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
+import org.jaria.range.LaserScan;
 import org.junit.jupiter.api.Test;
 
 /** The line finder, the triangle finder, and driving up to a docking target. */

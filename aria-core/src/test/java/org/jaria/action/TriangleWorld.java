@@ -3,6 +3,7 @@ package org.jaria.action;
 import java.util.ArrayList;
 import java.util.List;
 import org.jaria.geom.ArPose;
+import org.jaria.range.LaserScan;
 
 /** A few wall segments and a laser that ray-casts them, for triangle-target tests. */
 final class TriangleWorld {

@@ -8,6 +8,7 @@ import org.jaria.connection.ArDeviceConnection;
 import org.jaria.connection.PipeConnection;
 import org.jaria.geom.ArPose;
 import org.jaria.protocol.DropCounters;
+import org.jaria.sim.camera.CameraMount;
 import org.jaria.sim.robot.RobotBody;
 import org.jaria.sim.robot.RobotModel;
 import org.jaria.sim.serial.AuxSerialDevice;
@@ -19,7 +20,7 @@ import org.jaria.sim.server.ArcosSession;
  * its true pose, read what its sensors really saw. Every method is thread-safe (it takes the
  * world's lock).
  */
-public final class SimRobot {
+public final class SimRobot implements CameraMount {
 
   private final SimWorld world;
   private final RobotSlot slot;
@@ -38,6 +39,7 @@ public final class SimRobot {
    * The robot's number in its world: 0 for the first robot added, 1 for the next, and so on. A
    * number is never given to another robot, even after this one was removed.
    */
+  @Override
   public int getIndex() {
     return slot.body.index();
   }
@@ -166,6 +168,7 @@ public final class SimRobot {
   }
 
   /** Where the robot really is. */
+  @Override
   public ArPose getTruePose() {
     world.lock.lock();
     try {
@@ -311,6 +314,7 @@ public final class SimRobot {
    * Where the pan-tilt head on AUX1 points (see {@link RobotOptions#ptzType()}), or null if that
    * port holds no such device.
    */
+  @Override
   public PtzHead.Pointing getPtzPointing() {
     world.lock.lock();
     try {

@@ -15,6 +15,7 @@ import org.jaria.clock.VirtualClock;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
+import org.jaria.sim.camera.CameraScene;
 import org.jaria.sim.camera.ColoredObjects;
 import org.jaria.sim.server.CommandPolicy;
 import org.jaria.sim.world.WorldGeometry;
@@ -45,7 +46,7 @@ import org.slf4j.LoggerFactory;
  * }
  * }</pre>
  */
-public final class SimWorld implements AutoCloseable {
+public final class SimWorld implements AutoCloseable, CameraScene {
 
   private static final Logger log = LoggerFactory.getLogger(SimWorld.class);
 
@@ -495,9 +496,22 @@ public final class SimWorld implements AutoCloseable {
         () -> queries.castRay(x, y, thDeg, maxRange, self == null ? -1 : self.getIndex()));
   }
 
+  /** As above, ignoring robot number {@code self} (none if -1): what a camera sees. */
+  @Override
+  public double castRay(double x, double y, double thDeg, double maxRange, int self) {
+    return locked(() -> queries.castRay(x, y, thDeg, maxRange, self));
+  }
+
   /** The coloured objects cameras see (from the map, or added). */
+  @Override
   public ColoredObjects coloredObjects() {
     return colored;
+  }
+
+  /** The world's seed ({@link SimOptions#seed()}), which a camera's noise derives from. */
+  @Override
+  public long seed() {
+    return options.seed();
   }
 
   // ---------------------------------------------------------------- inspection

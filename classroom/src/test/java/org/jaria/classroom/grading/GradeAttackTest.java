@@ -15,6 +15,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
+import java.time.Duration;
 import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
@@ -26,7 +27,6 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
 /**
  * A class with hostile submissions beside honest ones, graded once in the sandbox with two jobs:
@@ -208,20 +208,11 @@ class GradeAttackTest {
 
     StringWriter o = new StringWriter();
     StringWriter e = new StringWriter();
-    CommandLine cl = new CommandLine(new GradeCommand());
-    cl.setOut(new PrintWriter(o));
-    cl.setErr(new PrintWriter(e));
     int exit =
-        cl.execute(
-            "--assignment",
-            "square",
-            "--jobs",
-            "2",
-            "--timeout",
-            "10",
-            "-o",
-            out.toString(),
-            subs.toString());
+        ClassGrading.grade(
+            GradeRequest.of("square", subs, out).withJobs(2).withTimeout(Duration.ofSeconds(10)),
+            new PrintWriter(o),
+            new PrintWriter(e));
     stdout = o.toString();
     assertEquals(0, exit, e.toString());
     for (Path dir : SubmissionFolders.submissions(subs)) {

@@ -2,8 +2,6 @@ package org.jaria.sim.camera;
 
 import java.util.List;
 import org.jaria.geom.ArPose;
-import org.jaria.sim.SimRobot;
-import org.jaria.sim.SimWorld;
 import org.jaria.sim.serial.PtzHead;
 
 /**
@@ -31,8 +29,8 @@ public final class SimCamera {
   private static final int WALL = 0xB4B0A8;
   private static final int MAX_HITS = 16;
 
-  private final SimWorld world;
-  private final SimRobot robot;
+  private final CameraScene world;
+  private final CameraMount robot;
   private final int width;
   private final int height;
   private final double mountX;
@@ -46,10 +44,11 @@ public final class SimCamera {
 
   /**
    * A camera of {@code width} × {@code height} pixels, {@code mountX} mm ahead of the robot's
-   * centre and {@code mountZ} mm above the floor.
+   * centre and {@code mountZ} mm above the floor. {@code world} and {@code robot} are a {@code
+   * SimWorld} and one of its {@code SimRobot}s.
    */
   public SimCamera(
-      SimWorld world, SimRobot robot, int width, int height, double mountX, double mountZ) {
+      CameraScene world, CameraMount robot, int width, int height, double mountX, double mountZ) {
     if (width < 8 || height < 8) {
       throw new IllegalArgumentException(
           "camera image must be at least 8x8, got " + width + "x" + height);
@@ -60,11 +59,11 @@ public final class SimCamera {
     this.height = height;
     this.mountX = mountX;
     this.mountZ = mountZ;
-    this.seed = world.getOptions().seed() * 31 + robot.getIndex();
+    this.seed = world.seed() * 31 + robot.getIndex();
   }
 
   /** A 160×120 camera on top of the robot, at the front, 450 mm up (a P3-DX with a VC-C4). */
-  public static SimCamera onTop(SimWorld world, SimRobot robot) {
+  public static SimCamera onTop(CameraScene world, CameraMount robot) {
     return new SimCamera(world, robot, 160, 120, 100, 450);
   }
 
@@ -164,7 +163,7 @@ public final class SimCamera {
       double dx = Math.cos(a);
       double dy = Math.sin(a);
       int n = 0;
-      double wall = world.castRay(view.x(), view.y(), angle, 20000, robot);
+      double wall = world.castRay(view.x(), view.y(), angle, 20000, robot.getIndex());
       for (ColoredObject o : objects) {
         double d = o.intersect(view.x(), view.y(), dx, dy, normal);
         if (!Double.isNaN(d) && d < wall && n < MAX_HITS - 1) {

@@ -4,8 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import org.jaria.action.LaserScan;
 import org.jaria.range.ArSimulatedLaser;
+import org.jaria.range.LaserScan;
 import org.jaria.sim.RobotOptions;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;

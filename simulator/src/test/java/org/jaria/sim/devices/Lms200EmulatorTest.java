@@ -7,7 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import java.util.List;
-import org.jaria.action.LaserScan;
 import org.jaria.clock.Clock;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.connection.ArTcpConnection;
@@ -16,6 +15,7 @@ import org.jaria.geom.ArPose;
 import org.jaria.laser.ArLMS2xx;
 import org.jaria.laser.ArSick;
 import org.jaria.laser.LmsSettings;
+import org.jaria.range.LaserScan;
 import org.jaria.sim.RobotOptions;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;

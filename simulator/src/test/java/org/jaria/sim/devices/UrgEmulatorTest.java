@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import java.util.List;
-import org.jaria.action.LaserScan;
 import org.jaria.clock.Clock;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.connection.ArTcpConnection;
@@ -15,6 +14,7 @@ import org.jaria.geom.ArPose;
 import org.jaria.laser.ArUrg;
 import org.jaria.laser.UrgParams;
 import org.jaria.laser.UrgSettings;
+import org.jaria.range.LaserScan;
 import org.jaria.sim.RobotOptions;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;

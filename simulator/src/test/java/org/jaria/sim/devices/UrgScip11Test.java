@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
-import org.jaria.action.LaserScan;
+import org.jaria.range.LaserScan;
 import org.jaria.clock.Clock;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.connection.PipeConnection;

@@ -29,7 +29,7 @@ import picocli.CommandLine.Command;
       org.jaria.tools.monitor.MonitorCommand.class,
       org.jaria.tools.fx.ScreenshotCommand.class,
       BenchCommand.class,
-      org.jaria.classroom.grading.GradeCommand.class,
+      org.jaria.classroom.cli.GradeCommand.class,
       CommandLine.HelpCommand.class
     })
 public final class JariaCli implements Runnable {

@@ -1,7 +1,7 @@
 package org.jaria.tools.laser;
 
 import java.util.Locale;
-import org.jaria.action.LaserScan;
+import org.jaria.range.LaserScan;
 
 /**
  * One printed line about a scan: how many readings, how many echoes, the closest one and what is

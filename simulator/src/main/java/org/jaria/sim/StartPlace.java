@@ -1,4 +1,4 @@
-package org.jaria.sim.cli;
+package org.jaria.sim;
 
 import java.util.Locale;
 import java.util.random.RandomGenerator;

@@ -10,20 +10,21 @@ import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
 /**
- * The teacher's command end to end: a folder with a good, a bad, a non-compiling and an endlessly
- * looping submission is graded, each in a JVM of its own, and every one gets its grade.
+ * A teacher's grading run end to end ({@code jaria grade} without its command line): a folder with
+ * a good, a bad, a non-compiling and an endlessly looping submission is graded, each in a JVM of
+ * its own, and every one gets its grade.
  */
 @Tag("slow")
-class GradeCommandTest {
+class ClassGradingTest {
 
   private static void write(Path dir, String file, String text) throws IOException {
     Files.createDirectories(dir);
@@ -36,13 +37,10 @@ class GradeCommandTest {
 
   private record Run(int exit, String out, String err) {}
 
-  private static Run jaria(String... args) {
+  private static Run grade(GradeRequest request) throws IOException {
     StringWriter out = new StringWriter();
     StringWriter err = new StringWriter();
-    CommandLine cl = new CommandLine(new GradeCommand());
-    cl.setOut(new PrintWriter(out));
-    cl.setErr(new PrintWriter(err));
-    int exit = cl.execute(args);
+    int exit = ClassGrading.grade(request, new PrintWriter(out), new PrintWriter(err));
     return new Run(exit, out.toString(), err.toString());
   }
 
@@ -79,8 +77,7 @@ class GradeCommandTest {
         """);
     Path out = tmp.resolve("report");
     // A good submission's JVM needs about 2 s; dave's never ends and is killed at the limit.
-    Run r =
-        jaria("--assignment", "square", "--timeout", "12", "-o", out.toString(), subs.toString());
+    Run r = grade(GradeRequest.of("square", subs, out).withTimeout(Duration.ofSeconds(12)));
     assertEquals(0, r.exit(), r.err());
 
     Map<String, String> rows =
@@ -107,17 +104,7 @@ class GradeCommandTest {
 
     // bob hands in the solution: re-grade only him into the same report, in Spanish
     write(subs.resolve("bob"), "Square.java", kit("solution"));
-    Run again =
-        jaria(
-            "--assignment",
-            "square",
-            "--only",
-            "bob",
-            "--lang",
-            "es",
-            "-o",
-            out.toString(),
-            subs.toString());
+    Run again = grade(GradeRequest.of("square", subs, out).onlyStudent("bob").inLanguage("es"));
     assertEquals(0, again.exit(), again.err());
     assertTrue(again.out().contains("[1/1] bob "), again.out());
     String csv = Files.readString(out.resolve("gradebook.csv"));
@@ -139,15 +126,7 @@ class GradeCommandTest {
     write(tmp.resolve("subs/alice"), "Square.java", kit("solution"));
     Path out = tmp.resolve("report");
     String missing = tmp.resolve("no-such-bwrap").toString();
-    Run r =
-        jaria(
-            "--assignment",
-            "square",
-            "--bwrap",
-            missing,
-            "-o",
-            out.toString(),
-            tmp.resolve("subs").toString());
+    Run r = grade(GradeRequest.of("square", tmp.resolve("subs"), out).withBwrap(Path.of(missing)));
     assertEquals(2, r.exit(), r.out() + r.err());
     assertTrue(r.err().contains(missing + " is missing"), r.err());
     assertTrue(r.err().contains("Refusing to grade; --unsafe grades anyway"), r.err());
@@ -160,15 +139,10 @@ class GradeCommandTest {
     Path out = tmp.resolve("report");
     // --unsafe grades where bubblewrap is missing
     Run r =
-        jaria(
-            "--assignment",
-            "square",
-            "--unsafe",
-            "--bwrap",
-            tmp.resolve("no-such-bwrap").toString(),
-            "-o",
-            out.toString(),
-            tmp.resolve("subs").toString());
+        grade(
+            GradeRequest.of("square", tmp.resolve("subs"), out)
+                .withoutIsolation()
+                .withBwrap(tmp.resolve("no-such-bwrap")));
     assertEquals(0, r.exit(), r.err());
     assertTrue(r.err().contains("WARNING: graded with --unsafe"), r.err());
     assertTrue(r.out().contains("alice") && r.out().contains("10/10"), r.out());
@@ -179,18 +153,27 @@ class GradeCommandTest {
   }
 
   @Test
-  void listsTheAssignmentsAndExplainsBadArguments(@TempDir Path tmp) throws IOException {
-    Run list = jaria("--list");
-    assertEquals(0, list.exit());
-    for (String id : List.of("square", "wall", "goals", "ball")) {
-      assertTrue(list.out().contains(id + " "), list.out());
-    }
-    Run unknown = jaria("--assignment", "maze", tmp.toString());
-    assertEquals(2, unknown.exit());
+  void refusesRequestsItCannotCarryOutAndSaysWhatToChange(@TempDir Path tmp) throws IOException {
+    Path out = tmp.resolve("report");
+    Run unknown = grade(GradeRequest.of("maze", tmp, out));
+    assertEquals(ClassGrading.REFUSED, unknown.exit());
     assertTrue(unknown.err().contains("no assignment called 'maze'"), unknown.err());
-    Run empty = jaria("--assignment", "square", tmp.toString());
-    assertEquals(2, empty.exit());
+    Run empty = grade(GradeRequest.of("square", tmp, out));
+    assertEquals(ClassGrading.REFUSED, empty.exit());
     assertTrue(empty.err().contains("no submissions in"), empty.err());
+    write(tmp.resolve("subs/alice"), "Square.java", kit("solution"));
+    GradeRequest ok = GradeRequest.of("square", tmp.resolve("subs"), out);
+    Run inside = grade(GradeRequest.of("square", tmp.resolve("subs"), tmp.resolve("subs/r")));
+    assertTrue(inside.err().contains("put --out outside the submissions folder"), inside.err());
+    Run noTime = grade(ok.withTimeout(Duration.ZERO));
+    assertTrue(noTime.err().contains("--timeout and --jobs must be positive"), noTime.err());
+    Run noJobs = grade(ok.withJobs(0));
+    assertEquals(ClassGrading.REFUSED, noJobs.exit());
+    Run french = grade(ok.inLanguage("fr"));
+    assertTrue(french.err().contains("--lang is en or es"), french.err());
+    Run nobody = grade(ok.onlyStudent("zoe").withoutIsolation());
+    assertTrue(nobody.err().contains("no submission called 'zoe'"), nobody.err());
+    assertFalse(Files.exists(out), "nothing is graded, so no report folder");
   }
 
   @Test

@@ -6,6 +6,7 @@ import java.net.UnknownHostException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.jaria.sim.StartPlace;
 import picocli.CommandLine.Option;
 
 /**

@@ -1,13 +1,14 @@
-package org.jaria.action;
+package org.jaria.range;
 
 import java.util.Arrays;
 import org.jaria.geom.ArPose;
 
 /**
  * One sweep of a laser range finder: readings as (angle, range) pairs in sweep order, with the
- * global pose of the sensor when they were taken. {@link ArActionTriangleDriveTo} and {@link
- * ArLineFinder} work on these, so they can be fed by any laser — the simulator's laser packets, a
- * real device, or a synthetic scan in a test.
+ * global pose of the sensor when they were taken. Range data, so it lives with the range devices;
+ * actions such as {@code org.jaria.action.ArActionTriangleDriveTo} and {@code
+ * org.jaria.action.ArLineFinder} work on these, so they can be fed by any laser — the simulator's
+ * laser packets, a real device, or a synthetic scan in a test.
  *
  * <p>Angles are degrees relative to the sensor's heading (counter-clockwise positive), ranges mm. A
  * range of 0 or less, or at least the maximum range, means "no echo" and is skipped. Immutable.

@@ -20,6 +20,7 @@ import org.jaria.sim.ServerPlan;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
+import org.jaria.sim.StartPlace;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;

@@ -1,7 +1,6 @@
 package org.jaria.sim.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -13,12 +12,9 @@ import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.time.Duration;
 import java.util.List;
-import java.util.SplittableRandom;
-import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
-import org.jaria.sim.world.WorldMap;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
 
@@ -120,25 +116,6 @@ class MobileSimCommandLineTest {
     SimCommand bad = new SimCommand();
     new CommandLine(bad).parseArgs("-R", "no-such-robot", "-p", "0");
     assertThrows(CommandLine.ParameterException.class, bad::createWorld);
-  }
-
-  @Test
-  void startPlacesOutsideAndRandomFollowTheMapBounds() {
-    WorldMap box =
-        WorldMap.ofLines(
-            "box",
-            List.of(new ArLineSegment(0, 0, 10_000, 0), new ArLineSegment(0, 0, 0, 8_000)),
-            ArPose.ORIGIN);
-    ArPose out = StartPlace.parse("outside").poseFor(1, box, new SplittableRandom(1));
-    assertEquals(new ArPose(13_000, 10_000, 0), out, "2 m beyond, 1 m per robot");
-    StartPlace random = StartPlace.parse("random");
-    ArPose a = random.poseFor(0, box, new SplittableRandom(7));
-    assertEquals(a, random.poseFor(0, box, new SplittableRandom(7)), "the seed decides");
-    assertTrue(a.x() >= 0 && a.x() <= 10_000 && a.y() >= 0 && a.y() <= 8_000, a.toString());
-    assertNull(StartPlace.parse("5,6,7").poseFor(1, box, null), "a fixed pose: first robot");
-    IllegalArgumentException e =
-        assertThrows(IllegalArgumentException.class, () -> StartPlace.parse("1,2"));
-    assertTrue(e.getMessage().contains("outside or random"), e.getMessage());
   }
 
   /** A command that embeds {@code jaria sim}'s options, as {@code jaria sim --gui} does. */
