@@ -1,6 +1,7 @@
 package org.jaria.arnl.mcl;
 
 import org.jaria.geom.ArPose;
+import org.jaria.geom.ArTransform;
 
 /**
  * A laser scan for the Monte Carlo filter: each beam that returned an echo becomes one end point in
@@ -15,9 +16,7 @@ public final class LaserScans {
   public static final double MIN_RANGE = 50;
 
   /**
-   * Prepares a scan taken at odometry pose {@code encoderNow} (the scan's end points are in the
-   * robot's frame at that pose, so the pose itself is not needed here; the parameter keeps the
-   * signature of the sonar's preparation).
+   * Prepares a scan taken at odometry pose {@code encoderNow}.
    *
    * @param anglesDeg beam directions relative to the laser, degrees
    * @param ranges beam ranges, mm (at or beyond {@code maxRange}: no echo, not used)
@@ -32,6 +31,22 @@ public final class LaserScans {
       ArPose encoderNow,
       double maxRange,
       int every) {
+    return prepare(anglesDeg, ranges, mount, encoderNow, encoderNow, maxRange, every);
+  }
+
+  /**
+   * Prepares a scan taken at odometry pose {@code encoderTaken} for an update at odometry pose
+   * {@code encoderNow}: the end points are placed in the robot's frame at {@code encoderNow}, so a
+   * scan that is older than the update is not misplaced by the distance driven since.
+   */
+  public static SonarScan prepare(
+      double[] anglesDeg,
+      double[] ranges,
+      ArPose mount,
+      ArPose encoderTaken,
+      ArPose encoderNow,
+      double maxRange,
+      int every) {
     int step = Math.max(1, every);
     int cap = (ranges.length + step - 1) / step;
     double[] ex = new double[cap];
@@ -40,7 +55,11 @@ public final class LaserScans {
     double[] fy = new double[cap];
     double[] axis = new double[cap];
     double[] range = new double[cap];
-    double mth = Math.toRadians(mount.th());
+    // The sensor's pose in the robot's frame at encoderNow.
+    ArTransform toNow = ArTransform.ofPose(encoderNow).inverse();
+    ArPose sensor =
+        toNow.compose(ArTransform.ofPose(encoderTaken)).doTransform(mount);
+    double sth = Math.toRadians(sensor.th());
     int used = 0;
     int ignored = 0;
     for (int i = 0; i < ranges.length; i += step) {
@@ -49,13 +68,13 @@ public final class LaserScans {
         ignored++;
         continue;
       }
-      double a = mth + Math.toRadians(anglesDeg[i]);
-      fx[used] = mount.x();
-      fy[used] = mount.y();
+      double a = sth + Math.toRadians(anglesDeg[i]);
+      fx[used] = sensor.x();
+      fy[used] = sensor.y();
       axis[used] = a;
       range[used] = r;
-      ex[used] = mount.x() + r * Math.cos(a);
-      ey[used] = mount.y() + r * Math.sin(a);
+      ex[used] = sensor.x() + r * Math.cos(a);
+      ey[used] = sensor.y() + r * Math.sin(a);
       used++;
     }
     return SonarScan.ofBeams(ex, ey, fx, fy, axis, range, used, ignored);
