@@ -10,7 +10,7 @@ import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.jaria.action.ArAction;
 import org.jaria.action.ArActionDesired;
-import org.jaria.arnl.ArSonarLocalizationTask.UpdateMode;
+import org.jaria.arnl.ArBaseLocalizationTask.UpdateMode;
 import org.jaria.arnl.mcl.PoseEstimate;
 import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;

@@ -161,11 +161,16 @@ final class LocalizationBench {
 
   /** As {@link #tracking(int)}, localizing with {@code sensor}. */
   static Tracking tracking(int laps, Sensor sensor) {
+    return tracking(laps, sensor, 11);
+  }
+
+  /** As {@link #tracking(int, Sensor)}, with the world's and the filter's seed. */
+  static Tracking tracking(int laps, Sensor sensor, long seed) {
     ArMap office = ArMap.loadBundled("office");
-    SimulatedRobot sim = world(office, 11, null);
+    SimulatedRobot sim = world(office, seed, null);
     try {
       ArRobot robot = sim.robot();
-      ArBaseLocalizationTask loc = sensor.task(sim, office, 11);
+      ArBaseLocalizationTask loc = sensor.task(sim, office, seed);
       sim.runMillis(1000);
       loc.localizeRobotAtHomeBlocking();
       List<ArPose> route = BenchSupport.officeLaps(laps);
