@@ -13,6 +13,7 @@ import org.jaria.config.ArConfigException;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
 import org.jaria.map.ArMapObject;
+import org.jaria.range.ArRangeDevice;
 import org.jaria.robot.ArRobot;
 
 /**
@@ -26,10 +27,10 @@ import org.jaria.robot.ArRobot;
  * <p><b>How it runs.</b> A cheap sensor-interpretation task on the robot's cycle notes new readings
  * and, once the robot has moved {@code TriggerDistance} mm or turned {@code TriggerAngle} degrees
  * since the last update, hands the odometry pose and the readings to the filter. In {@link
- * UpdateMode#THREADED} mode (the default, for real robots) the filter runs on its own thread, so the
- * cycle never waits for it; in {@link UpdateMode#SYNCHRONOUS} mode it runs inside that task, which
- * is what lockstep simulations and benchmarks need. Both compute exactly the same estimates from the
- * same inputs.
+ * UpdateMode#THREADED} mode (the default, for real robots) the filter runs on its own thread, so
+ * the cycle never waits for it; in {@link UpdateMode#SYNCHRONOUS} mode it runs inside that task,
+ * which is what lockstep simulations and benchmarks need. Both compute exactly the same estimates
+ * from the same inputs.
  *
  * <p><b>Thread safety.</b> Every public method may be called from any thread. Callbacks run on the
  * thread that did the update and must return quickly.
@@ -117,6 +118,26 @@ public abstract class ArBaseLocalizationTask implements AutoCloseable {
     public B name(String n) {
       name = Objects.requireNonNull(n, "name");
       return self();
+    }
+
+    /**
+     * Refuses a sensor that was added to another robot: its readings would be that robot's.
+     *
+     * @throws IllegalArgumentException naming both robots
+     */
+    void requireThisRobots(ArRangeDevice device, String kind) {
+      if (device.getRobot() != null && device.getRobot() != robot) {
+        throw new IllegalArgumentException(
+            "the "
+                + kind
+                + " '"
+                + device.getName()
+                + "' belongs to robot '"
+                + device.getRobot().getName()
+                + "': pass the "
+                + kind
+                + " added to the robot being localized");
+      }
     }
 
     /** The config to register the parameters in: the one given, or a new one. */

@@ -86,14 +86,7 @@ public final class ArLocalizationTask extends ArBaseLocalizationTask {
                 + "' gives no laser scans: pass an ArLaser (ArLMS2xx, ArUrg) or an"
                 + " ArSimulatedLaser");
       }
-      if (laser.getRobot() != null && laser.getRobot() != robot) {
-        throw new IllegalArgumentException(
-            "the laser '"
-                + laser.getName()
-                + "' belongs to robot '"
-                + laser.getRobot().getName()
-                + "': pass the laser added to the robot being localized");
-      }
+      requireThisRobots(laser, "laser");
       ArPose at;
       if (laser instanceof ArLaser real) {
         at = real.getSensorPosition();

@@ -65,14 +65,7 @@ public final class ArSonarLocalizationTask extends ArBaseLocalizationTask {
     public Builder sonar(ArSonarDevice sonar) {
       Objects.requireNonNull(
           sonar, "sonar: sonar localization needs the robot's ArSonarDevice, not null");
-      if (sonar.getRobot() != null && sonar.getRobot() != robot) {
-        throw new IllegalArgumentException(
-            "the sonar '"
-                + sonar.getName()
-                + "' belongs to robot '"
-                + sonar.getRobot().getName()
-                + "': pass the sonar added to the robot being localized");
-      }
+      requireThisRobots(sonar, "sonar");
       return this;
     }
 

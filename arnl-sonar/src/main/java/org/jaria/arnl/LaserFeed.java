@@ -110,13 +110,7 @@ final class LaserFeed implements ScanFeed {
     }
     double range = Math.min(maxRange, params.laserMaxRange.getDouble());
     return LaserScans.prepare(
-        angles,
-        ranges,
-        mount,
-        n.encoderTaken(),
-        encoderNow,
-        range,
-        params.laserBeamStep.getInt());
+        angles, ranges, mount, n.encoderTaken(), encoderNow, range, params.laserBeamStep.getInt());
   }
 
   @Override

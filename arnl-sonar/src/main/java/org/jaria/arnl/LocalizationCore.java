@@ -15,11 +15,11 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The state machine behind a localization task ({@link ArBaseLocalizationTask}): runs the filter ({@link
- * LocalizationEngine}) under one lock for updates and (re)initializations, judges each update
- * against the pass threshold, counts failures towards "lost", follows a global search until it has
- * really converged, corrects the robot's pose, and collects the callbacks to run once the lock is
- * released. Published state is readable from any thread.
+ * The state machine behind a localization task ({@link ArBaseLocalizationTask}): runs the filter
+ * ({@link LocalizationEngine}) under one lock for updates and (re)initializations, judges each
+ * update against the pass threshold, counts failures towards "lost", follows a global search until
+ * it has really converged, corrects the robot's pose, and collects the callbacks to run once the
+ * lock is released. Published state is readable from any thread.
  */
 final class LocalizationCore {
 
@@ -81,8 +81,7 @@ final class LocalizationCore {
       if (in.generation() != generation.get() || !engine.hasParticles()) {
         return;
       }
-      LocalizationEngine.Result r =
-          engine.update(in.encoderPose(), in.scan(), isLost(), global);
+      LocalizationEngine.Result r = engine.update(in.encoderPose(), in.scan(), isLost(), global);
       updates.incrementAndGet();
       estimate = r.estimate();
       currentNumSamples = r.numSamples();

@@ -13,10 +13,11 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The computing part of a localization task ({@link ArBaseLocalizationTask}): the map model and the particle filter, and
- * the three things done with them (track, localize at candidate poses, search the whole map). Knows
- * nothing about threads or the robot: the task calls it under its lock, with the odometry poses and
- * readings it captured, so that threaded and synchronous runs compute exactly the same thing.
+ * The computing part of a localization task ({@link ArBaseLocalizationTask}): the map model and the
+ * particle filter, and the three things done with them (track, localize at candidate poses, search
+ * the whole map). Knows nothing about threads or the robot: the task calls it under its lock, with
+ * the odometry poses and readings it captured, so that threaded and synchronous runs compute
+ * exactly the same thing.
  */
 final class LocalizationEngine {
 
@@ -115,12 +116,11 @@ final class LocalizationEngine {
   }
 
   /**
-   * As {@link #update(ArPose, SonarScan, boolean)}; {@code searching} (global localization in progress)
-   * keeps scattering a few particles, so that a wrong early guess can still be replaced by the
-   * right place when the robot sees more.
+   * As {@link #update(ArPose, SonarScan, boolean)}; {@code searching} (global localization in
+   * progress) keeps scattering a few particles, so that a wrong early guess can still be replaced
+   * by the right place when the robot sees more.
    */
-  Result update(
-      ArPose encoderNow, SonarScan scan, boolean lost, boolean searching) {
+  Result update(ArPose encoderNow, SonarScan scan, boolean lost, boolean searching) {
     MclFilter f = filter(Math.max(p.numSamples.getInt(), filterSizeOrZero()));
     // While searching, a smooth model and a fixed count: no particle is near the true pose at
     // first, and shrinking early would lose the right place.

@@ -15,8 +15,9 @@ import org.slf4j.LoggerFactory;
 /**
  * The cycle side of a localization task ({@link ArBaseLocalizationTask}): a cheap
  * sensor-interpretation step that lets the {@link ScanFeed} note new readings and, once the robot
- * has moved far enough, hands the odometry pose and the fresh readings, prepared, to the filter — inline (synchronous mode) or through a bounded queue
- * to the localization thread (threaded mode), so the robot's cycle never waits for the filter.
+ * has moved far enough, hands the odometry pose and the fresh readings, prepared, to the filter —
+ * inline (synchronous mode) or through a bounded queue to the localization thread (threaded mode),
+ * so the robot's cycle never waits for the filter.
  */
 final class UpdateFeeder {
 

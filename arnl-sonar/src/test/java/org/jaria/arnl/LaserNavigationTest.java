@@ -8,6 +8,8 @@ import org.jaria.arnl.ArPathPlanningTask.PathPlanningState;
 import org.jaria.arnl.ArPathPlanningTask.PlanMode;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
+import org.jaria.range.ArSimulatedLaser;
+import org.jaria.robot.ArRobot;
 import org.jaria.sim.client.SimulatedRobot;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -25,11 +27,21 @@ class LaserNavigationTest {
     ArMap office = ArMap.loadBundled("office");
     SimulatedRobot sim = SimSetup.start(office, 6);
     try {
-      ArLocalizationTask loc = ArLocalizationTaskTest.laserTask(sim, office, 6);
+      ArRobot robot = sim.robot();
+      // tag::setup[]
+      ArSimulatedLaser laser = new ArSimulatedLaser(); // or an ArLMS2xx, ArUrg
+      robot.addRangeDevice(laser);
+      ArLocalizationTask loc =
+          ArLocalizationTask.builder(robot, office)
+              .laser(laser)
+              .mode(ArLocalizationTask.UpdateMode.SYNCHRONOUS) // lockstep; THREADED on a robot
+              .seed(6)
+              .build();
       ArPathPlanningTask path =
-          ArPathPlanningTask.builder(sim.robot(), office).mode(PlanMode.SYNCHRONOUS).build();
+          ArPathPlanningTask.builder(robot, office).mode(PlanMode.SYNCHRONOUS).build();
       path.getPathPlanActionGroup().addAction(new ArActionSlowDownWhenNotCertain(loc), 140);
       path.getPathPlanActionGroup().addAction(new ArActionLost(loc, path), 150);
+      // end::setup[]
       sim.runMillis(1000);
       assertTrue(loc.localizeRobotAtHomeBlocking(), "localized at home");
       for (String goal : new String[] {"Lab Entrance", "Corridor West"}) {

@@ -57,8 +57,7 @@ public final class LaserScans {
     double[] range = new double[cap];
     // The sensor's pose in the robot's frame at encoderNow.
     ArTransform toNow = ArTransform.ofPose(encoderNow).inverse();
-    ArPose sensor =
-        toNow.compose(ArTransform.ofPose(encoderTaken)).doTransform(mount);
+    ArPose sensor = toNow.compose(ArTransform.ofPose(encoderTaken)).doTransform(mount);
     double sth = Math.toRadians(sensor.th());
     int used = 0;
     int ignored = 0;

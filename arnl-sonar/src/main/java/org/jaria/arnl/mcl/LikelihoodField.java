@@ -8,9 +8,10 @@ import org.jaria.map.ArMap;
 
 /**
  * What the sonar model needs to know about the map, precomputed once: for every cell of a fine
- * grid, the distance to the nearest face of a mapped wall ({@link MapSurfaces}), and the log-likelihood of an echo coming
- * from that cell ({@code log(zRand + (1 − zRand)·exp(−d²/2σ²))}). Also the free space a lost robot
- * may be in, for global localization and recovery. Immutable and shared between threads.
+ * grid, the distance to the nearest face of a mapped wall ({@link MapSurfaces}), and the
+ * log-likelihood of an echo coming from that cell ({@code log(zRand + (1 − zRand)·exp(−d²/2σ²))}).
+ * Also the free space a lost robot may be in, for global localization and recovery. Immutable and
+ * shared between threads.
  */
 public final class LikelihoodField {
 
@@ -67,8 +68,9 @@ public final class LikelihoodField {
   }
 
   /**
-   * Cells where the robot fits: outside walls and clear of their faces by {@code radius}, and connected to {@code home} if
-   * the home is such a cell (so that the insides of closed furniture are not candidates).
+   * Cells where the robot fits: outside walls and clear of their faces by {@code radius}, and
+   * connected to {@code home} if the home is such a cell (so that the insides of closed furniture
+   * are not candidates).
    */
   private static int[] freeSpace(
       GridSpec g, float[] d, boolean[] solid, double radius, ArPose home) {

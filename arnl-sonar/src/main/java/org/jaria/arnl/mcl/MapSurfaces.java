@@ -13,8 +13,8 @@ import org.jaria.map.ArMapPoints;
  *
  * <p>A DATA point of a map stands for an occupied square of the map's {@code Resolution} (a laser
  * map is a grid of hit cells; MobileSim and JAria's simulator block half a resolution around each
- * point). A beam therefore ends half a resolution <em>before</em> the point, on the cell's face, not
- * on the point itself. Drawing only the points' own cells put every such wall half a resolution
+ * point). A beam therefore ends half a resolution <em>before</em> the point, on the cell's face,
+ * not on the point itself. Drawing only the points' own cells put every such wall half a resolution
  * (50 mm on a 100 mm map) behind where the laser sees it, and the filter then pulled the robot
  * forward by that much (the along-track bias of the first laser benchmark). So the distances are
  * measured to the faces of walls: to the rim of a disc of half the map's resolution around each

@@ -76,9 +76,9 @@ final class PoseClusters {
   }
 
   /**
-   * Mean x, y, heading; std x, y, heading; and total weight of particles within radius. {@code
-   * cs} holds the cosines and sines of the headings, computed once per estimate by the caller
-   * (they were the estimate's main cost).
+   * Mean x, y, heading; std x, y, heading; and total weight of particles within radius. {@code cs}
+   * holds the cosines and sines of the headings, computed once per estimate by the caller (they
+   * were the estimate's main cost).
    */
   private static double[] clusterMean(
       double cx,

@@ -86,13 +86,14 @@ class LaserScansTest {
     double sum = 0;
     int poses = 0;
     for (double[] tp :
-        new double[][] {{15000, 12500, 0}, {15000, 12500, 90}, {9000, 11000, 90}, {20000, 9500, 180}}) {
+        new double[][] {
+          {15000, 12500, 0}, {15000, 12500, 90}, {9000, 11000, 90}, {20000, 9500, 180}
+        }) {
       ArPose truth = new ArPose(tp[0], tp[1], tp[2]);
       double[] ranges;
       double max;
       try (SimWorld w = SimWorld.create(office, SimOptions.defaults())) {
-        SimRobot r =
-            w.addRobot(RobotOptions.of("p3dx-sh").withGripper(false).withStartPose(truth));
+        SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withGripper(false).withStartPose(truth));
         LaserSensor sensor = LaserSensor.of(r);
         ranges = sensor.ranges(-90, 1, 181);
         max = sensor.maxRange();

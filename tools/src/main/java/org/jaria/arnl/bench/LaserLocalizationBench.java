@@ -16,8 +16,8 @@ import org.jaria.sim.devices.LaserSensor;
 
 /**
  * Laser localization figures beside the sonar ones ({@link org.jaria.arnl.ArLocalizationTask}
- * against {@link org.jaria.arnl.ArSonarLocalizationTask}): update time, tracking error on the office
- * route and global localization success, in one table.
+ * against {@link org.jaria.arnl.ArSonarLocalizationTask}): update time, tracking error on the
+ * office route and global localization success, in one table.
  */
 final class LaserLocalizationBench {
 
