@@ -60,8 +60,8 @@ final class PoseClusters {
 
   /**
    * The mean of the particles around {@code hint} (the previous estimate moved by odometry) if they
-   * hold at least half the weight, else {@link #estimate(double[], double[], double[], double[],
-   * int)}. Tracking thus follows its own cluster instead of jumping to a compact group of
+   * hold at least half the weight, else {@link #estimate(double[], double[], double[], double[][],
+   * double[], int)}. Tracking thus follows its own cluster instead of jumping to a compact group of
    * stragglers elsewhere.
    */
   PoseEstimate estimateNear(
