@@ -12,17 +12,15 @@ import org.jaria.map.ArMapPoints;
  * LikelihoodField}.
  *
  * <p>A DATA point of a map stands for an occupied square of the map's {@code Resolution} (a laser
- * map is a grid of hit cells; MobileSim and JAria's simulator block half a resolution around each
- * point). A beam therefore ends half a resolution <em>before</em> the point, on the cell's face,
- * not on the point itself. Drawing only the points' own cells put every such wall half a resolution
- * (50 mm on a 100 mm map) behind where the laser sees it, and the filter then pulled the robot
- * forward by that much (the along-track bias of the first laser benchmark). So the distances are
- * measured to the faces of walls: to the rim of a disc of half the map's resolution around each
- * point, and to lines as thin walls.
- *
- * <p>The grid is laid out so that cell centres fall on multiples of the cell size: map coordinates
- * are usually such multiples, and a wall exactly on a cell border would otherwise be drawn in the
- * cell on one side, half a cell off.
+ * map is a grid of hit cells, and JAria's simulator blocks a disc of half a resolution around each
+ * point), so a beam ends half a resolution <em>before</em> the point, on the face. The first laser
+ * field drew a wall at its points instead, and drew a wall lying on a cell border in the cell on
+ * its far side: both put walls behind the faces the laser sees, and a laser looking ahead pulled
+ * the estimate forward (a robot standing still settled about 65 mm ahead of its true pose; the
+ * tracking benchmark showed +38 mm along the track). So the distances are measured to the faces of
+ * walls: to the rim of a disc of half the map's resolution around each point, and to lines as thin
+ * walls; and the grid is laid out so that cell centres fall on multiples of the cell size, where
+ * map coordinates usually lie.
  */
 final class MapSurfaces {
 
