@@ -146,7 +146,6 @@ public final class LocalizationParams {
   private LocalizationParams(ArConfig config, boolean laser) {
     this.config = config;
     this.laser = laser;
-    String echo = laser ? "laser beam" : "sonar echo";
     triggerDistance =
         ArConfigArg.ofDouble(
             "TriggerDistance",
@@ -165,48 +164,56 @@ public final class LocalizationParams {
         ArConfigArg.ofDouble(
             "PassThreshold",
             laser ? 0.6 : 0.5,
-            "share of " + echo + "s the map must explain for an update to pass",
+            laser
+                ? "share of laser beams the map must explain for an update to pass"
+                : "share of sonar echoes the map must explain for an update to pass",
             0,
             1);
     matchDistance =
         ArConfigArg.ofDouble(
             "MatchDistance",
             laser ? 150 : 250,
-            "a "
-                + echo
-                + " is explained if the nearest mapped surface in its direction is this close to"
-                + " its range, mm",
+            laser
+                ? "a beam is explained if the nearest mapped surface along it is this close to its"
+                    + " range, mm"
+                : "an echo is explained if the nearest mapped surface in its cone is this close to"
+                    + " its range, mm",
             10,
             2000);
     minEchoes =
         ArConfigArg.ofInt(
             "MinEchoes",
             laser ? 20 : 3,
-            "an update with fewer " + echo + "s (open areas) neither passes nor fails",
+            laser
+                ? "an update with fewer beam echoes (open areas) neither passes nor fails"
+                : "an update with fewer echoes (open areas) neither passes nor fails",
             0,
             laser ? 4096 : 64);
     sensorSigma =
         ArConfigArg.ofDouble(
             "SensorSigma",
             laser ? 50 : 100,
-            "spread of a " + echo + " around the wall that caused it, mm",
+            laser
+                ? "spread of a beam's echo around the wall that caused it, mm"
+                : "spread of an echo around the wall that caused it, mm",
             5,
             2000);
     sensorZRand =
         ArConfigArg.ofDouble(
             "SensorZRand",
             laser ? 0.1 : 0.2,
-            "likelihood of a "
-                + echo
-                + " far from any wall (unmapped obstacles), relative to one on a wall",
+            "likelihood of an echo far from any wall (unmapped obstacles), relative to one on a"
+                + " wall",
             0.001,
             0.99);
     sensorBelief =
         ArConfigArg.ofDouble(
             "SensorBelief",
             laser ? 0.05 : 0.4,
-            "weight of one update (the " + echo + "s of a scan are not independent)",
-            0.001,
+            laser
+                ? "weight of one laser update (the beams of a scan are not independent)"
+                : "weight of one sonar update (echoes are not independent)",
+            laser ? 0.001 : 0.01,
             1);
     config.addSection(
         SECTION,
