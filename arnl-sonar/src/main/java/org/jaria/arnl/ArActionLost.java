@@ -11,18 +11,18 @@ import org.jaria.action.ArActionDesired;
  */
 public class ArActionLost extends ArAction {
 
-  private final ArSonarLocalizationTask loc;
+  private final ArBaseLocalizationTask loc;
   private final ArPathPlanningTask path;
   private final ArActionDesired desired = new ArActionDesired();
   private boolean wasLost;
 
   /** Stops the robot while {@code loc} is lost. */
-  public ArActionLost(ArSonarLocalizationTask loc) {
+  public ArActionLost(ArBaseLocalizationTask loc) {
     this(loc, null);
   }
 
   /** Stops the robot while {@code loc} is lost, and fails {@code path}'s goal when it gets lost. */
-  public ArActionLost(ArSonarLocalizationTask loc, ArPathPlanningTask path) {
+  public ArActionLost(ArBaseLocalizationTask loc, ArPathPlanningTask path) {
     super("lost", "stops the robot while localization is lost");
     this.loc = loc;
     this.path = path;

@@ -11,13 +11,13 @@ import org.jaria.action.ArActionDesired;
  */
 public class ArActionSlowDownWhenNotCertain extends ArAction {
 
-  private final ArSonarLocalizationTask loc;
+  private final ArBaseLocalizationTask loc;
   private final ArActionDesired desired = new ArActionDesired();
   private volatile double slowSpeed = 150;
   private volatile double slowRotSpeed = 20;
 
   /** Slows down to 150 mm/s and 20 °/s while {@code loc} is not certain. */
-  public ArActionSlowDownWhenNotCertain(ArSonarLocalizationTask loc) {
+  public ArActionSlowDownWhenNotCertain(ArBaseLocalizationTask loc) {
     super("slowDownWhenNotCertain", "slows down while localization is uncertain");
     this.loc = loc;
   }

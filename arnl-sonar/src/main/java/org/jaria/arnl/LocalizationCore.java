@@ -7,23 +7,23 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.IntConsumer;
 import org.jaria.arnl.mcl.PoseEstimate;
+import org.jaria.arnl.mcl.SonarScan;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
-import org.jaria.range.ArSensorReading;
 import org.jaria.robot.ArRobot;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The state machine behind {@link ArSonarLocalizationTask}: runs the filter ({@link
- * LocalizationEngine}) under one lock for updates and (re)initializations, judges each update
- * against the pass threshold, counts failures towards "lost", follows a global search until it has
- * really converged, corrects the robot's pose, and collects the callbacks to run once the lock is
- * released. Published state is readable from any thread.
+ * The state machine behind a localization task ({@link ArBaseLocalizationTask}): runs the filter
+ * ({@link LocalizationEngine}) under one lock for updates and (re)initializations, judges each
+ * update against the pass threshold, counts failures towards "lost", follows a global search until
+ * it has really converged, corrects the robot's pose, and collects the callbacks to run once the
+ * lock is released. Published state is readable from any thread.
  */
 final class LocalizationCore {
 
-  private static final Logger log = LoggerFactory.getLogger(ArSonarLocalizationTask.class);
+  private static final Logger log = LoggerFactory.getLogger(ArBaseLocalizationTask.class);
 
   /** Passing updates in a row a lost robot needs before it counts as localized again. */
   private static final int RELOCK_PASSES = 3;
@@ -34,7 +34,8 @@ final class LocalizationCore {
   /** Share of the weight the best cluster must hold for a global search to count as converged. */
   private static final double GLOBAL_CLUSTER = 0.8;
 
-  private final ArSonarLocalizationTask task;
+  private final ArBaseLocalizationTask task;
+  private final ScanFeed feed;
   private final ArRobot robot;
   private final LocalizationParams params;
   private final LocalizationEngine engine;
@@ -58,12 +59,14 @@ final class LocalizationCore {
   private final AtomicLong updates = new AtomicLong();
 
   LocalizationCore(
-      ArSonarLocalizationTask task,
+      ArBaseLocalizationTask task,
       ArRobot robot,
       ArMap map,
       LocalizationParams params,
-      long seed) {
+      long seed,
+      ScanFeed feed) {
     this.task = task;
+    this.feed = feed;
     this.robot = robot;
     this.params = params;
     this.engine =
@@ -78,8 +81,7 @@ final class LocalizationCore {
       if (in.generation() != generation.get() || !engine.hasParticles()) {
         return;
       }
-      LocalizationEngine.Result r =
-          engine.update(in.encoderPose(), in.readings(), isLost(), global);
+      LocalizationEngine.Result r = engine.update(in.encoderPose(), in.scan(), isLost(), global);
       updates.incrementAndGet();
       estimate = r.estimate();
       currentNumSamples = r.numSamples();
@@ -168,22 +170,23 @@ final class LocalizationCore {
   }
 
   boolean localizeAmong(List<ArPose> candidates, int numSamples, double sx, double sy, double sth) {
-    List<ArSensorReading> readings = currentReadings();
-    if (task.getUpdateMode() == ArSonarLocalizationTask.UpdateMode.THREADED) {
-      // Right after connecting the sonar may not have reported yet: give it up to two seconds
+    ArPose enc = robot.getEncoderPose();
+    SonarScan scan = feed.current(enc);
+    if (task.getUpdateMode() == ArBaseLocalizationTask.UpdateMode.THREADED) {
+      // Right after connecting the sensor may not have reported yet: give it up to two seconds
       // (the robot's cycle runs on its own thread, so waiting here lets readings arrive).
       long deadline = robot.getClock().nanoTime() + TimeUnit.SECONDS.toNanos(2);
-      while (echoes(readings) < 4 && robot.getClock().nanoTime() < deadline) {
+      while (scan.size() < 4 && robot.getClock().nanoTime() < deadline) {
         try {
           robot.getClock().sleepMillis(100);
         } catch (InterruptedException e) {
           Thread.currentThread().interrupt();
           break;
         }
-        readings = currentReadings();
+        enc = robot.getEncoderPose();
+        scan = feed.current(enc);
       }
     }
-    ArPose enc = robot.getEncoderPose();
     boolean pass;
     List<Runnable> notify = new ArrayList<>();
     lock.lock();
@@ -192,14 +195,15 @@ final class LocalizationCore {
       generation.incrementAndGet();
       global = false;
       LocalizationEngine.Result r =
-          engine.localizeAt(candidates, enc, readings, numSamples, sx, sy, sth);
+          engine.localizeAt(candidates, enc, scan, numSamples, sx, sy, sth);
       estimate = r.estimate();
       currentNumSamples = engine.numSamples();
       pass = r.score() >= params.passThreshold.getDouble();
       if (r.echoes() == 0) {
         log.warn(
-            "no sonar echoes to localize with: connect and run the robot a moment first;"
+            "no {} to localize with: connect and run the robot a moment first;"
                 + " using {} as it is",
+            feed.what(),
             r.estimate().pose());
       }
       score = Math.max(0, r.score());
@@ -217,29 +221,6 @@ final class LocalizationCore {
     }
     runAll(notify);
     return pass;
-  }
-
-  /** Latest reading of every transducer, taken within the last 3 s. */
-  private List<ArSensorReading> currentReadings() {
-    long now = robot.getClock().nanoTime();
-    List<ArSensorReading> out = new ArrayList<>();
-    for (int i = 0; i < robot.getNumSonar(); i++) {
-      ArSensorReading r = robot.getSonarReading(i);
-      if (r != null && r.range() >= 0 && now - r.timeTaken() <= TimeUnit.SECONDS.toNanos(3)) {
-        out.add(r);
-      }
-    }
-    return out;
-  }
-
-  private int echoes(List<ArSensorReading> readings) {
-    int n = 0;
-    for (ArSensorReading r : readings) {
-      if (r.range() < params.sonarMaxRange.getDouble()) {
-        n++;
-      }
-    }
-    return n;
   }
 
   /** Called under the lock after a (re)initialization: tracking restarts from here. */

@@ -9,15 +9,15 @@ import org.jaria.arnl.mcl.SonarScan;
 import org.jaria.geom.ArPose;
 import org.jaria.geom.ArTransform;
 import org.jaria.map.ArMap;
-import org.jaria.range.ArSensorReading;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The computing part of {@link ArSonarLocalizationTask}: the map model and the particle filter, and
- * the three things done with them (track, localize at candidate poses, search the whole map). Knows
- * nothing about threads or the robot: the task calls it under its lock, with the odometry poses and
- * readings it captured, so that threaded and synchronous runs compute exactly the same thing.
+ * The computing part of a localization task ({@link ArBaseLocalizationTask}): the map model and the
+ * particle filter, and the three things done with them (track, localize at candidate poses, search
+ * the whole map). Knows nothing about threads or the robot: the task calls it under its lock, with
+ * the odometry poses and readings it captured, so that threaded and synchronous runs compute
+ * exactly the same thing.
  */
 final class LocalizationEngine {
 
@@ -107,31 +107,20 @@ final class LocalizationEngine {
     return filter != null && filter.size() > 0;
   }
 
-  SonarScan scan(List<ArSensorReading> readings, ArPose encoderNow) {
-    return SonarScan.prepare(
-        readings,
-        encoderNow,
-        p.sonarMinRange.getDouble(),
-        p.sonarMaxRange.getDouble(),
-        p.coneHalfAngle.getDouble(),
-        p.arcSamples.getInt());
+  /**
+   * One tracking (or global search) step: odometry motion since the last step, then the readings
+   * (prepared at {@code encoderNow}); recovery particles if {@code lost}.
+   */
+  Result update(ArPose encoderNow, SonarScan scan, boolean lost) {
+    return update(encoderNow, scan, lost, false);
   }
 
   /**
-   * One tracking (or global search) step: odometry motion since the last step, then the sonar
-   * readings; recovery particles if {@code lost}.
+   * As {@link #update(ArPose, SonarScan, boolean)}; {@code searching} (global localization in
+   * progress) keeps scattering a few particles, so that a wrong early guess can still be replaced
+   * by the right place when the robot sees more.
    */
-  Result update(ArPose encoderNow, List<ArSensorReading> readings, boolean lost) {
-    return update(encoderNow, readings, lost, false);
-  }
-
-  /**
-   * As {@link #update(ArPose, List, boolean)}; {@code searching} (global localization in progress)
-   * keeps scattering a few particles, so that a wrong early guess can still be replaced by the
-   * right place when the robot sees more.
-   */
-  Result update(
-      ArPose encoderNow, List<ArSensorReading> readings, boolean lost, boolean searching) {
+  Result update(ArPose encoderNow, SonarScan scan, boolean lost, boolean searching) {
     MclFilter f = filter(Math.max(p.numSamples.getInt(), filterSizeOrZero()));
     // While searching, a smooth model and a fixed count: no particle is near the true pose at
     // first, and shrinking early would lose the right place.
@@ -148,7 +137,6 @@ final class LocalizationEngine {
       }
     }
     filterEncoder = encoderNow;
-    SonarScan scan = scan(readings, encoderNow);
     if (searching && seedPending && scan.size() >= SEED_MIN_ECHOES) {
       // The first scan of a global search places the particles where it fits (and so already
       // counts: it is not weighed in a second time).
@@ -187,13 +175,12 @@ final class LocalizationEngine {
   Result localizeAt(
       List<ArPose> candidates,
       ArPose encoderNow,
-      List<ArSensorReading> readings,
+      SonarScan scan,
       int numSamples,
       double stdX,
       double stdY,
       double stdTh) {
     MclFilter f = filter(numSamples);
-    SonarScan scan = scan(readings, encoderNow);
     double matchDist = p.matchDistance.getDouble();
     MclFilter.Saved best = null;
     Result bestResult = null;

@@ -6,9 +6,12 @@ import org.jaria.config.ArConfigArg;
 import org.jaria.config.ArPriority;
 
 /**
- * The parameters of {@link ArSonarLocalizationTask}, registered in the "Localization" section of an
- * {@link ArConfig} (as in ARNL's {@code arnl.p}). Values may be changed at any time, from a file or
- * one by one; the task reads them at every update.
+ * The parameters of a localization task ({@link ArSonarLocalizationTask}, {@link
+ * ArLocalizationTask}), registered in the "Localization" section of an {@link ArConfig} (as in
+ * ARNL's {@code arnl.p}). Values may be changed at any time, from a file or one by one; the task
+ * reads them at every update. The two sensors share most keys; their defaults differ where a laser
+ * beam and a sonar echo differ (spread, how much one scan counts, what a good score is), and each
+ * has a few keys of its own ({@code Sonar...}, {@code Laser...}).
  */
 public final class LocalizationParams {
 
@@ -23,27 +26,10 @@ public final class LocalizationParams {
   final ArConfigArg globalNumSamples =
       ArConfigArg.ofInt(
           "GlobalNumSamples", 20000, "particles for global localization", 100, 200000);
-  final ArConfigArg triggerDistance =
-      ArConfigArg.ofDouble(
-          "TriggerDistance", 200, "mm the robot must move before an update", 1, 10000);
-  final ArConfigArg triggerAngle =
-      ArConfigArg.ofDouble(
-          "TriggerAngle", 5, "degrees the robot must turn before an update", 0.1, 180);
-  final ArConfigArg passThreshold =
-      ArConfigArg.ofDouble(
-          "PassThreshold",
-          0.5,
-          "share of sonar echoes the map must explain for an update to pass",
-          0,
-          1);
-  final ArConfigArg matchDistance =
-      ArConfigArg.ofDouble(
-          "MatchDistance",
-          250,
-          "an echo is explained if the nearest mapped surface in its cone is this close to its"
-              + " range, mm",
-          10,
-          2000);
+  final ArConfigArg triggerDistance;
+  final ArConfigArg triggerAngle;
+  final ArConfigArg passThreshold;
+  final ArConfigArg matchDistance;
   final ArConfigArg failuresToLost =
       ArConfigArg.ofInt(
           "FailuresToLost",
@@ -51,13 +37,7 @@ public final class LocalizationParams {
           "consecutive failed updates after which the robot counts as lost",
           1,
           1000);
-  final ArConfigArg minEchoes =
-      ArConfigArg.ofInt(
-          "MinEchoes",
-          3,
-          "an update with fewer echoes (open areas) neither passes nor fails",
-          0,
-          64);
+  final ArConfigArg minEchoes;
   final ArConfigArg sonarMaxRange =
       ArConfigArg.ofDouble(
           "SonarMaxRange", 4500, "echoes at or beyond this are not used, mm", 200, 10000);
@@ -68,19 +48,23 @@ public final class LocalizationParams {
           "SonarConeHalfAngle", 15, "half the opening of a sonar cone, degrees", 0, 45);
   final ArConfigArg arcSamples =
       ArConfigArg.ofInt("SonarArcSamples", 7, "points tested across each echo's cone", 1, 31);
-  final ArConfigArg sensorSigma =
+  final ArConfigArg sensorSigma;
+  final ArConfigArg sensorZRand;
+  final ArConfigArg sensorBelief;
+  final ArConfigArg laserMaxRange =
       ArConfigArg.ofDouble(
-          "SensorSigma", 100, "spread of an echo around the wall that caused it, mm", 5, 2000);
-  final ArConfigArg sensorZRand =
-      ArConfigArg.ofDouble(
-          "SensorZRand",
-          0.2,
-          "likelihood of an echo far from any wall (unmapped obstacles), relative to one on a wall",
-          0.001,
-          0.99);
-  final ArConfigArg sensorBelief =
-      ArConfigArg.ofDouble(
-          "SensorBelief", 0.4, "weight of one sonar update (echoes are not independent)", 0.01, 1);
+          "LaserMaxRange",
+          20000,
+          "laser readings at or beyond this (or the laser's own maximum) are not used, mm",
+          500,
+          80000);
+  final ArConfigArg laserBeamStep =
+      ArConfigArg.ofInt(
+          "LaserBeamStep",
+          2,
+          "use every n-th beam of a laser scan (neighbouring beams tell nearly the same)",
+          1,
+          50);
   final ArConfigArg gridResolution =
       ArConfigArg.ofDouble("GridResolution", 50, "cell size of the map model, mm", 10, 500);
   final ArConfigArg errorTransPerSqrtM =
@@ -142,15 +126,100 @@ public final class LocalizationParams {
 
   private final ArConfig config;
 
-  /** The parameters with their default values, in a config of their own. */
+  private final boolean laser;
+
+  /** The sonar parameters with their default values, in a config of their own. */
   public LocalizationParams() {
     this(new ArConfig());
   }
 
-  /** The parameters with their default values, registered in {@code config}. */
+  /** The sonar parameters with their default values, registered in {@code config}. */
   public LocalizationParams(ArConfig config) {
+    this(config, false);
+  }
+
+  /** The laser parameters ({@link ArLocalizationTask}) with their defaults, in {@code config}. */
+  public static LocalizationParams forLaser(ArConfig config) {
+    return new LocalizationParams(config, true);
+  }
+
+  private LocalizationParams(ArConfig config, boolean laser) {
     this.config = config;
-    config.addSection(SECTION, "Monte Carlo localization with sonar (ArSonarLocalizationTask)");
+    this.laser = laser;
+    triggerDistance =
+        ArConfigArg.ofDouble(
+            "TriggerDistance",
+            laser ? 100 : 200,
+            "mm the robot must move before an update",
+            1,
+            10000);
+    triggerAngle =
+        ArConfigArg.ofDouble(
+            "TriggerAngle",
+            laser ? 3 : 5,
+            "degrees the robot must turn before an update",
+            0.1,
+            180);
+    passThreshold =
+        ArConfigArg.ofDouble(
+            "PassThreshold",
+            laser ? 0.6 : 0.5,
+            laser
+                ? "share of laser beams the map must explain for an update to pass"
+                : "share of sonar echoes the map must explain for an update to pass",
+            0,
+            1);
+    matchDistance =
+        ArConfigArg.ofDouble(
+            "MatchDistance",
+            laser ? 150 : 250,
+            laser
+                ? "a beam is explained if the nearest mapped surface along it is this close to its"
+                    + " range, mm"
+                : "an echo is explained if the nearest mapped surface in its cone is this close to"
+                    + " its range, mm",
+            10,
+            2000);
+    minEchoes =
+        ArConfigArg.ofInt(
+            "MinEchoes",
+            laser ? 20 : 3,
+            laser
+                ? "an update with fewer beam echoes (open areas) neither passes nor fails"
+                : "an update with fewer echoes (open areas) neither passes nor fails",
+            0,
+            laser ? 4096 : 64);
+    sensorSigma =
+        ArConfigArg.ofDouble(
+            "SensorSigma",
+            laser ? 50 : 100,
+            laser
+                ? "spread of a beam's echo around the wall that caused it, mm"
+                : "spread of an echo around the wall that caused it, mm",
+            5,
+            2000);
+    sensorZRand =
+        ArConfigArg.ofDouble(
+            "SensorZRand",
+            laser ? 0.1 : 0.2,
+            "likelihood of an echo far from any wall (unmapped obstacles), relative to one on a"
+                + " wall",
+            0.001,
+            0.99);
+    sensorBelief =
+        ArConfigArg.ofDouble(
+            "SensorBelief",
+            laser ? 0.05 : 0.4,
+            laser
+                ? "weight of one laser update (the beams of a scan are not independent)"
+                : "weight of one sonar update (echoes are not independent)",
+            laser ? 0.001 : 0.01,
+            1);
+    config.addSection(
+        SECTION,
+        laser
+            ? "Monte Carlo localization with a laser (ArLocalizationTask)"
+            : "Monte Carlo localization with sonar (ArSonarLocalizationTask)");
     add(numSamples, ArPriority.IMPORTANT);
     add(numSamplesAtInit, ArPriority.NORMAL);
     add(globalNumSamples, ArPriority.NORMAL);
@@ -160,10 +229,15 @@ public final class LocalizationParams {
     add(matchDistance, ArPriority.NORMAL);
     add(failuresToLost, ArPriority.NORMAL);
     add(minEchoes, ArPriority.DETAILED);
-    add(sonarMaxRange, ArPriority.IMPORTANT);
-    add(sonarMinRange, ArPriority.DETAILED);
-    add(coneHalfAngle, ArPriority.DETAILED);
-    add(arcSamples, ArPriority.EXPERT);
+    if (laser) {
+      add(laserMaxRange, ArPriority.IMPORTANT);
+      add(laserBeamStep, ArPriority.DETAILED);
+    } else {
+      add(sonarMaxRange, ArPriority.IMPORTANT);
+      add(sonarMinRange, ArPriority.DETAILED);
+      add(coneHalfAngle, ArPriority.DETAILED);
+      add(arcSamples, ArPriority.EXPERT);
+    }
     add(sensorSigma, ArPriority.DETAILED);
     add(sensorZRand, ArPriority.EXPERT);
     add(sensorBelief, ArPriority.EXPERT);
@@ -184,6 +258,11 @@ public final class LocalizationParams {
 
   private void add(ArConfigArg a, ArPriority p) {
     config.addParam(a, SECTION, p);
+  }
+
+  /** Whether these are a laser's parameters. */
+  public boolean isLaser() {
+    return laser;
   }
 
   /** The config the parameters are registered in. */

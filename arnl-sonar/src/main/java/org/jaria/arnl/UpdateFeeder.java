@@ -1,32 +1,33 @@
 package org.jaria.arnl;
 
-import java.util.ArrayList;
-import java.util.Arrays;
-import java.util.List;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
-import org.jaria.arnl.ArSonarLocalizationTask.UpdateMode;
+import org.jaria.arnl.ArBaseLocalizationTask.UpdateMode;
+import org.jaria.arnl.mcl.SonarScan;
 import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
-import org.jaria.range.ArSensorReading;
 import org.jaria.robot.ArRobot;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The cycle side of {@link ArSonarLocalizationTask}: a cheap sensor-interpretation step that notes
- * each transducer's newest reading and, once the robot has moved far enough, hands the odometry
- * pose and the fresh readings to the filter — inline (synchronous mode) or through a bounded queue
- * to the localization thread (threaded mode), so the robot's cycle never waits for the filter.
+ * The cycle side of a localization task ({@link ArBaseLocalizationTask}): a cheap
+ * sensor-interpretation step that lets the {@link ScanFeed} note new readings and, once the robot
+ * has moved far enough, hands the odometry pose and the fresh readings, prepared, to the filter —
+ * inline (synchronous mode) or through a bounded queue to the localization thread (threaded mode),
+ * so the robot's cycle never waits for the filter.
  */
 final class UpdateFeeder {
 
-  private static final Logger log = LoggerFactory.getLogger(ArSonarLocalizationTask.class);
+  private static final Logger log = LoggerFactory.getLogger(ArBaseLocalizationTask.class);
 
-  /** What one update needs: the odometry pose at the trigger and the readings since the last. */
-  record Input(ArPose encoderPose, List<ArSensorReading> readings, long generation) {}
+  /**
+   * What one update needs: the odometry pose at the trigger and the readings since the last,
+   * prepared in the robot's frame at that pose.
+   */
+  record Input(ArPose encoderPose, SonarScan scan, long generation) {}
 
   /** Does the update. */
   @FunctionalInterface
@@ -34,11 +35,12 @@ final class UpdateFeeder {
     void process(Input in);
   }
 
-  private static final Input STOP = new Input(ArPose.ORIGIN, List.of(), -1);
+  private static final Input STOP = new Input(ArPose.ORIGIN, null, -1);
 
   private final ArRobot robot;
   private final LocalizationParams params;
   private final UpdateMode mode;
+  private final ScanFeed feed;
   private final Sink sink;
   private final BlockingQueue<Input> queue = new LinkedBlockingQueue<>(16);
   private final Thread thread;
@@ -47,20 +49,21 @@ final class UpdateFeeder {
   private final AtomicLong dropped = new AtomicLong();
   private final Object idleMonitor = new Object();
 
-  // Cycle thread only.
-  private final long[] lastCounter = new long[64];
-  private final ArSensorReading[] latest = new ArSensorReading[64];
-  private long lastTriggerCounter = -1;
-
   // Set by re-initializations on other threads; a stale value only delays one trigger.
   private volatile ArPose lastTriggerPose;
 
-  UpdateFeeder(ArRobot robot, LocalizationParams params, UpdateMode mode, String name, Sink sink) {
+  UpdateFeeder(
+      ArRobot robot,
+      LocalizationParams params,
+      UpdateMode mode,
+      String name,
+      ScanFeed feed,
+      Sink sink) {
     this.robot = robot;
     this.params = params;
     this.mode = mode;
+    this.feed = feed;
     this.sink = sink;
-    Arrays.fill(lastCounter, Long.MIN_VALUE);
     if (mode == UpdateMode.THREADED) {
       thread = new Thread(this::runThread, name);
       thread.setDaemon(true);
@@ -77,14 +80,7 @@ final class UpdateFeeder {
    * @param generation the filter's current generation (updates of older ones are dropped)
    */
   void sensorInterp(boolean active, long generation) {
-    int ns = Math.min(robot.getNumSonar(), latest.length);
-    for (int i = 0; i < ns; i++) {
-      ArSensorReading r = robot.getSonarReading(i);
-      if (r != null && r.range() >= 0 && r.counterTaken() != lastCounter[i]) {
-        lastCounter[i] = r.counterTaken();
-        latest[i] = r;
-      }
-    }
+    feed.note();
     if (!active) {
       return;
     }
@@ -95,18 +91,8 @@ final class UpdateFeeder {
         && Math.abs(ArMath.subAngle(enc.th(), last.th())) < params.triggerAngle.getDouble()) {
       return;
     }
-    List<ArSensorReading> fresh = new ArrayList<>(ns);
-    long newest = lastTriggerCounter;
-    for (int i = 0; i < ns; i++) {
-      ArSensorReading r = latest[i];
-      if (r != null && r.counterTaken() > lastTriggerCounter) {
-        fresh.add(r);
-        newest = Math.max(newest, r.counterTaken());
-      }
-    }
     lastTriggerPose = enc;
-    lastTriggerCounter = newest;
-    Input in = new Input(enc, List.copyOf(fresh), generation);
+    Input in = new Input(enc, feed.takeFresh(enc), generation);
     if (mode == UpdateMode.SYNCHRONOUS) {
       sink.process(in);
       return;

@@ -14,6 +14,7 @@ import org.jaria.map.ArMap;
 import org.jaria.map.MapFormatException;
 import org.jaria.range.ArSonarDevice;
 import org.jaria.sim.OdometryError;
+import org.jaria.sim.RobotOptions;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
@@ -39,6 +40,11 @@ final class SimSetup {
 
   /** A world on {@code map} with one robot (at the map's home) connected in lockstep. */
   static SimulatedRobot start(ArMap map, long seed) {
+    return start(map, seed, null);
+  }
+
+  /** As {@link #start(ArMap, long)}, the robot at {@code pose} (null: the map's home). */
+  static SimulatedRobot start(ArMap map, long seed, ArPose pose) {
     SimWorld world =
         SimWorld.create(
             map,
@@ -46,7 +52,8 @@ final class SimSetup {
                 .seed(seed)
                 .odometryError(OdometryError.random(0.02, 0.02))
                 .build());
-    SimRobot r = world.addRobot("p3dx-sh");
+    RobotOptions o = RobotOptions.of("p3dx-sh");
+    SimRobot r = world.addRobot(pose == null ? o : o.withStartPose(pose));
     SimulatedRobot sim = SimulatedRobot.connect(world, r);
     sim.robot().addRangeDevice(new ArSonarDevice());
     sim.robot().enableMotors();

@@ -6,8 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jaria.arnl.ArBaseLocalizationTask.UpdateMode;
 import org.jaria.arnl.ArPathPlanningTask.PlanMode;
-import org.jaria.arnl.ArSonarLocalizationTask.UpdateMode;
 import org.jaria.clock.VirtualClock;
 import org.jaria.map.ArMap;
 import org.jaria.range.ArSonarDevice;

@@ -2,17 +2,16 @@ package org.jaria.arnl.mcl;
 
 import java.util.ArrayDeque;
 import java.util.Arrays;
-import org.jaria.arnl.grid.DistanceField;
 import org.jaria.arnl.grid.GridSpec;
-import org.jaria.arnl.grid.MapRaster;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
 
 /**
  * What the sonar model needs to know about the map, precomputed once: for every cell of a fine
- * grid, the distance to the nearest mapped wall or point, and the log-likelihood of an echo coming
- * from that cell ({@code log(zRand + (1 − zRand)·exp(−d²/2σ²))}). Also the free space a lost robot
- * may be in, for global localization and recovery. Immutable and shared between threads.
+ * grid, the distance to the nearest face of a mapped wall ({@link MapSurfaces}), and the
+ * log-likelihood of an echo coming from that cell ({@code log(zRand + (1 − zRand)·exp(−d²/2σ²))}).
+ * Also the free space a lost robot may be in, for global localization and recovery. Immutable and
+ * shared between threads.
  */
 public final class LikelihoodField {
 
@@ -61,25 +60,28 @@ public final class LikelihoodField {
       throw new IllegalArgumentException(
           "sensor model needs sigma > 0 and 0 < zRand < 1, got " + sigma + ", " + zRand);
     }
-    GridSpec g = MapRaster.specFor(map, res, 1000);
-    boolean[] walls = MapRaster.walls(map, g);
-    float[] d = DistanceField.compute(walls, g, 5000);
-    int[] free = freeSpace(g, d, robotRadius, map.findHomePose().orElse(null));
+    GridSpec g = MapSurfaces.centredSpec(map, res);
+    boolean[] solid = new boolean[g.size()];
+    float[] d = MapSurfaces.faceDistances(map, g, 5000, solid);
+    int[] free = freeSpace(g, d, solid, robotRadius, map.findHomePose().orElse(null));
     return new LikelihoodField(g, d, sigma, zRand, free);
   }
 
   /**
-   * Cells where the robot fits: clear of walls by {@code radius}, and connected to {@code home} if
-   * the home is such a cell (so that the insides of closed furniture are not candidates).
+   * Cells where the robot fits: outside walls and clear of their faces by {@code radius}, and
+   * connected to {@code home} if the home is such a cell (so that the insides of closed furniture
+   * are not candidates).
    */
-  private static int[] freeSpace(GridSpec g, float[] d, double radius, ArPose home) {
+  private static int[] freeSpace(
+      GridSpec g, float[] d, boolean[] solid, double radius, ArPose home) {
     int n = g.size();
     boolean[] fits = new boolean[n];
     int w = g.width();
     int h = g.height();
     for (int j = 1; j < h - 1; j++) {
       for (int i = 1; i < w - 1; i++) {
-        fits[j * w + i] = d[j * w + i] >= radius;
+        // Inside a thick wall the distance to its face can be large too: not a place to be.
+        fits[j * w + i] = !solid[j * w + i] && d[j * w + i] >= radius;
       }
     }
     int start = home == null ? -1 : g.indexOf(home.x(), home.y());

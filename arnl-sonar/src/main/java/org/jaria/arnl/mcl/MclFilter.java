@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.SplittableRandom;
-import org.jaria.arnl.grid.GridSpec;
 import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
 
@@ -32,6 +31,8 @@ public final class MclFilter {
   private final double[] ny;
   private final double[] nth;
   private final double[] ll;
+  private final double[][] cs;
+  private boolean csValid;
   private int n;
   // Scratch for injectFromScan, allocated on first use.
   private double[] cx;
@@ -69,6 +70,7 @@ public final class MclFilter {
     ny = new double[capacity];
     nth = new double[capacity];
     ll = new double[capacity];
+    cs = new double[2][capacity];
     bins = new KldBins(capacity);
     clusters = new PoseClusters(bins);
   }
@@ -158,6 +160,7 @@ public final class MclFilter {
    * and degrees), equally weighted.
    */
   public void initGaussian(ArPose mean, int count, double stdX, double stdY, double stdThDeg) {
+    csValid = false;
     n = clampCount(count);
     double m = Math.toRadians(mean.th());
     double sth = Math.toRadians(stdThDeg);
@@ -171,6 +174,7 @@ public final class MclFilter {
 
   /** Replaces the particles with {@code count} spread uniformly over the map's free space. */
   public void initUniform(int count) {
+    csValid = false;
     n = clampCount(count);
     for (int i = 0; i < n; i++) {
       placeRandom(i);
@@ -187,6 +191,7 @@ public final class MclFilter {
    */
   public void initFromScan(
       SonarScan scan, int count, double uniformShare, double step, int headings) {
+    csValid = false;
     n = clampCount(count);
     int fromScan = (int) Math.round(n * (1 - ArMath.clamp(uniformShare, 0, 1)));
     if (scan.size() == 0
@@ -219,6 +224,7 @@ public final class MclFilter {
    * in free space, to recover when the robot is lost.
    */
   public void injectRandom(double fraction) {
+    csValid = false;
     int k = (int) Math.round(ArMath.clamp(fraction, 0, 1) * n);
     if (k == 0 || field.freeCellCount() == 0) {
       return;
@@ -241,6 +247,7 @@ public final class MclFilter {
    * particles). Falls back to {@link #injectRandom} if the scan has no echoes.
    */
   public void injectFromScan(SonarScan scan, double fraction, int candidates) {
+    csValid = false;
     int k = (int) Math.round(ArMath.clamp(fraction, 0, 1) * n);
     if (k == 0 || field.freeCellCount() == 0) {
       return;
@@ -295,18 +302,7 @@ public final class MclFilter {
   }
 
   private void placeRandom(int i, double[] xs, double[] ys, double[] ths) {
-    GridSpec g = field.spec();
-    if (field.freeCellCount() == 0) {
-      xs[i] = g.originX() + rng.nextDouble() * g.width() * g.res();
-      ys[i] = g.originY() + rng.nextDouble() * g.height() * g.res();
-    } else {
-      int cell = field.freeCell(rng.nextInt(field.freeCellCount()));
-      int col = cell % g.width();
-      int row = cell / g.width();
-      xs[i] = g.originX() + (col + rng.nextDouble()) * g.res();
-      ys[i] = g.originY() + (row + rng.nextDouble()) * g.res();
-    }
-    ths[i] = (rng.nextDouble() * 2 - 1) * Math.PI;
+    Resampling.placeRandom(field, rng, i, xs, ys, ths);
   }
 
   private int clampCount(int count) {
@@ -323,6 +319,7 @@ public final class MclFilter {
    * with noise.
    */
   public void motionUpdate(ArPose from, ArPose to) {
+    csValid = false;
     double dx = to.x() - from.x();
     double dy = to.y() - from.y();
     double trans = Math.hypot(dx, dy);
@@ -352,6 +349,7 @@ public final class MclFilter {
 
   /** Spreads the particles a little without moving them (used while standing still). */
   public void jitter(double stdXy, double stdThDeg) {
+    csValid = false;
     double s = Math.toRadians(stdThDeg);
     for (int i = 0; i < n; i++) {
       x[i] += rng.nextGaussian() * stdXy;
@@ -374,7 +372,7 @@ public final class MclFilter {
     if (m == 0 || n == 0) {
       return 1;
     }
-    SonarLikelihood.score(field, scan, x, y, th, n, seeThroughLogPenalty, ll);
+    SonarLikelihood.score(field, scan, x, y, th, headingCosSin(), n, seeThroughLogPenalty, ll);
     double amax = Double.NEGATIVE_INFINITY;
     for (int i = 0; i < n; i++) {
       amax = Math.max(amax, sensorBelief * ll[i]);
@@ -445,6 +443,7 @@ public final class MclFilter {
 
   /** Low-variance draw of {@code target} particles from the current weighted set. */
   private void drawSystematic(int target) {
+    csValid = false;
     double step = 1.0 / target;
     double u = rng.nextDouble() * step;
     double c = w[0];
@@ -469,41 +468,9 @@ public final class MclFilter {
     }
   }
 
-  /**
-   * The KLD sample count: the pose bins (200 mm, 200 mm, 10°) hit by a systematic draw of {@code
-   * capacity} samples from the current weights give k, and n = (k−1)/(2ε)·(1 − 2/(9(k−1)) +
-   * √(2/(9(k−1)))·z)³ with z for 99 %.
-   */
+  /** The KLD sample count for the current weights ({@link Resampling#kldTarget}). */
   private int kldTarget() {
-    bins.clear();
-    double step = 1.0 / capacity;
-    double u = 0.5 * step;
-    double c = w[0];
-    int i = 0;
-    int lastI = -1;
-    for (int k = 0; k < capacity; k++) {
-      double pick = u + k * step;
-      while (pick > c && i < n - 1) {
-        i++;
-        c += w[i];
-      }
-      if (i != lastI) {
-        bins.add(
-            (long) Math.floor(x[i] / 200),
-            (long) Math.floor(y[i] / 200),
-            (long) Math.floor((th[i] + Math.PI) / Math.toRadians(10)));
-        lastI = i;
-      }
-    }
-    int k = bins.size();
-    if (k <= 1) {
-      return minSamples;
-    }
-    double z = 2.326;
-    double a = 2.0 / (9.0 * (k - 1));
-    double b = 1 - a + Math.sqrt(a) * z;
-    double need = (k - 1) / (2 * kldEpsilon) * b * b * b;
-    return (int) Math.max(minSamples, Math.min(capacity, Math.ceil(need)));
+    return Resampling.kldTarget(bins, x, y, th, w, n, capacity, minSamples, kldEpsilon);
   }
 
   private void normalize() {
@@ -532,7 +499,7 @@ public final class MclFilter {
    * averaged, headings on the circle.
    */
   public PoseEstimate estimate() {
-    return clusters.estimate(x, y, th, w, n);
+    return clusters.estimate(x, y, th, headingCosSin(), w, n);
   }
 
   /**
@@ -541,7 +508,25 @@ public final class MclFilter {
    * instead of jumping to a compact group of stragglers elsewhere.
    */
   public PoseEstimate estimateNear(ArPose hint) {
-    return clusters.estimateNear(hint, x, y, th, w, n);
+    return clusters.estimateNear(hint, x, y, th, headingCosSin(), w, n);
+  }
+
+  /**
+   * Cosines and sines of the particles' headings, computed once per change of the headings (the
+   * sensor model and the estimate both need them; they were a fifth of a laser update).
+   */
+  private double[][] headingCosSin() {
+    if (csValid) {
+      return cs;
+    }
+    csValid = true;
+    double[] c = cs[0];
+    double[] s = cs[1];
+    for (int i = 0; i < n; i++) {
+      c[i] = Math.cos(th[i]);
+      s[i] = Math.sin(th[i]);
+    }
+    return cs;
   }
 
   /** A saved particle set (see {@link #copyState()}). */
@@ -567,6 +552,7 @@ public final class MclFilter {
 
   /** Puts back a saved particle set. */
   public void restore(Saved s) {
+    csValid = false;
     n = Math.min(capacity, s.sx.length);
     System.arraycopy(s.sx, 0, x, 0, n);
     System.arraycopy(s.sy, 0, y, 0, n);

@@ -20,7 +20,7 @@ final class PoseClusters {
    * block of bins is found, and its particles (refined to those within 1 m of their mean) are
    * averaged, headings on the circle.
    */
-  PoseEstimate estimate(double[] x, double[] y, double[] th, double[] w, int n) {
+  PoseEstimate estimate(double[] x, double[] y, double[] th, double[][] cs, double[] w, int n) {
     if (n == 0) {
       return new PoseEstimate(ArPose.ORIGIN, Double.MAX_VALUE, Double.MAX_VALUE, 180, 0);
     }
@@ -52,31 +52,46 @@ final class PoseClusters {
     }
     double cx = (bestI + 0.5) * bin;
     double cy = (bestJ + 0.5) * bin;
-    double[] m = clusterMean(cx, cy, 1.5 * bin * Math.sqrt(2), x, y, th, w, n);
-    m = clusterMean(m[0], m[1], 1000, x, y, th, w, n);
+    double[] m = clusterMean(cx, cy, 1.5 * bin * Math.sqrt(2), x, y, th, cs, w, n);
+    m = clusterMean(m[0], m[1], 1000, x, y, th, cs, w, n);
     return new PoseEstimate(
         new ArPose(m[0], m[1], Math.toDegrees(m[2])), m[3], m[4], Math.toDegrees(m[5]), m[6]);
   }
 
   /**
    * The mean of the particles around {@code hint} (the previous estimate moved by odometry) if they
-   * hold at least half the weight, else {@link #estimate(double[], double[], double[], double[],
-   * int)}. Tracking thus follows its own cluster instead of jumping to a compact group of
+   * hold at least half the weight, else {@link #estimate(double[], double[], double[], double[][],
+   * double[], int)}. Tracking thus follows its own cluster instead of jumping to a compact group of
    * stragglers elsewhere.
    */
-  PoseEstimate estimateNear(ArPose hint, double[] x, double[] y, double[] th, double[] w, int n) {
-    double[] m = clusterMean(hint.x(), hint.y(), 1000, x, y, th, w, n);
+  PoseEstimate estimateNear(
+      ArPose hint, double[] x, double[] y, double[] th, double[][] cs, double[] w, int n) {
+    double[] m = clusterMean(hint.x(), hint.y(), 1000, x, y, th, cs, w, n);
     if (m[6] < 0.5) {
-      return estimate(x, y, th, w, n);
+      return estimate(x, y, th, cs, w, n);
     }
-    m = clusterMean(m[0], m[1], 1000, x, y, th, w, n);
+    m = clusterMean(m[0], m[1], 1000, x, y, th, cs, w, n);
     return new PoseEstimate(
         new ArPose(m[0], m[1], Math.toDegrees(m[2])), m[3], m[4], Math.toDegrees(m[5]), m[6]);
   }
 
-  /** Mean x, y, heading; std x, y, heading; and total weight of particles within radius. */
+  /**
+   * Mean x, y, heading; std x, y, heading; and total weight of particles within radius. {@code cs}
+   * holds the cosines and sines of the headings, computed once per estimate by the caller (they
+   * were the estimate's main cost).
+   */
   private static double[] clusterMean(
-      double cx, double cy, double radius, double[] x, double[] y, double[] th, double[] w, int n) {
+      double cx,
+      double cy,
+      double radius,
+      double[] x,
+      double[] y,
+      double[] th,
+      double[][] cs,
+      double[] w,
+      int n) {
+    double[] cos = cs[0];
+    double[] sin = cs[1];
     double r2 = radius * radius;
     double sw = 0;
     double sx = 0;
@@ -92,8 +107,8 @@ final class PoseClusters {
       sw += w[i];
       sx += w[i] * x[i];
       sy += w[i] * y[i];
-      sc += w[i] * Math.cos(th[i]);
-      ss += w[i] * Math.sin(th[i]);
+      sc += w[i] * cos[i];
+      ss += w[i] * sin[i];
     }
     if (!(sw > 0)) {
       return new double[] {cx, cy, 0, radius, radius, Math.PI, 0};
@@ -122,7 +137,11 @@ final class PoseClusters {
     };
   }
 
+  /** The angle in (−π, π]; a difference of two such angles needs at most one turn added. */
   private static double wrap(double a) {
-    return Math.atan2(Math.sin(a), Math.cos(a));
+    if (a > Math.PI) {
+      return a - 2 * Math.PI;
+    }
+    return a <= -Math.PI ? a + 2 * Math.PI : a;
   }
 }

@@ -12,7 +12,8 @@ final class SonarLikelihood {
 
   /**
    * Log-likelihood of {@code scan} for every particle into {@code out}: for each echo, the best
-   * likelihood among the points of its arc (the echo came from somewhere in the cone).
+   * likelihood among the points of its arc (the echo came from somewhere in the cone). A laser scan
+   * (thin beams, nothing to see through) goes to the faster {@link LaserLikelihood}.
    */
   static void score(
       LikelihoodField field,
@@ -23,6 +24,39 @@ final class SonarLikelihood {
       int n,
       double seeThroughLogPenalty,
       double[] out) {
+    score(field, scan, x, y, th, null, n, seeThroughLogPenalty, out);
+  }
+
+  /**
+   * As {@link #score(LikelihoodField, SonarScan, double[], double[], double[], int, double,
+   * double[])}, with the headings' cosines and sines in {@code cs} (or null) for laser scans.
+   */
+  static void score(
+      LikelihoodField field,
+      SonarScan scan,
+      double[] x,
+      double[] y,
+      double[] th,
+      double[][] cs,
+      int n,
+      double seeThroughLogPenalty,
+      double[] out) {
+    if (scan.isBeamScan()) {
+      int m = scan.size();
+      LaserLikelihood.score(
+          field,
+          scan,
+          x,
+          y,
+          th,
+          cs == null ? null : cs[0],
+          cs == null ? null : cs[1],
+          n,
+          out,
+          new double[m],
+          new double[m]);
+      return;
+    }
     GridSpec g = field.spec();
     float[] lik = field.logLikelihoods();
     float outside = field.outsideLogLikelihood();

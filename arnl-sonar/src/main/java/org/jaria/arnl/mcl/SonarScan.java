@@ -139,6 +139,40 @@ public final class SonarScan {
     return new SonarScan(k, used, ax, ay, rg, ox, oy, axis, ignored, tx, ty, tStart);
   }
 
+  /**
+   * A scan of thin beams (a laser): echo {@code i} ended at ({@code endX[i]}, {@code endY[i]}) in
+   * the robot's frame, from a sensor at ({@code fromX[i]}, {@code fromY[i]}) looking along {@code
+   * axis[i]} radians. The arrays are kept, not copied; their first {@code count} entries are used.
+   */
+  static SonarScan ofBeams(
+      double[] endX,
+      double[] endY,
+      double[] fromX,
+      double[] fromY,
+      double[] axis,
+      double[] range,
+      int count,
+      int ignored) {
+    return new SonarScan(
+        1,
+        count,
+        endX,
+        endY,
+        range,
+        fromX,
+        fromY,
+        axis,
+        ignored,
+        new double[0],
+        new double[0],
+        new int[count + 1]);
+  }
+
+  /** Whether every echo is a single point with no see-through points (a laser scan). */
+  boolean isBeamScan() {
+    return arcSamples == 1 && throughStart[count] == 0;
+  }
+
   /** Number of usable echoes. */
   public int size() {
     return count;

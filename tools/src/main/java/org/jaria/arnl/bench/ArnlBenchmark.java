@@ -36,7 +36,11 @@ public final class ArnlBenchmark {
         "One whole update (motion, sensor model, estimate, score, resampling) on a scan of the 16"
             + " sonars, of which `echoes` returned a usable echo.\n\n");
     sb.append("| particles | echoes | median ms | p95 ms |\n|---:|---:|---:|---:|\n");
+    LocalizationBench.UpdateTime sonar2000 = null;
     for (LocalizationBench.UpdateTime u : LocalizationBench.updateTimes(quick)) {
+      if (u.particles() == 2000) {
+        sonar2000 = u;
+      }
       sb.append(
           String.format(
               Locale.ROOT,
@@ -73,12 +77,16 @@ public final class ArnlBenchmark {
             + " particles, then 60 s driving at up to 400 mm/s)\n\n");
     sb.append("| map | runs | within 250 mm / 0.25 rad | median s to converge | p95 s |\n");
     sb.append("|---|---:|---:|---:|---:|\n");
+    LocalizationBench.Global sonarOffice = null;
     for (String name : new String[] {"columbia", "office"}) {
       ArMap map =
           name.equals("office")
               ? ArMap.loadBundled("office")
               : org.jaria.arnl.demo.NavigateDemo.loadMap(columbiaPath());
       LocalizationBench.Global g = LocalizationBench.global(map, name, seeds);
+      if (name.equals("office")) {
+        sonarOffice = g;
+      }
       sb.append(
           String.format(
               Locale.ROOT,
@@ -90,7 +98,7 @@ public final class ArnlBenchmark {
               g.medianSeconds(),
               g.p95Seconds()));
     }
-    sb.append(LaserLocalizationBench.report(quick));
+    sb.append(LaserLocalizationBench.report(quick, sonar2000, tr, sonarOffice, laps, seeds));
 
     int pairs = quick ? 20 : 100;
     PlanningBench.Result p = PlanningBench.run(pairs);

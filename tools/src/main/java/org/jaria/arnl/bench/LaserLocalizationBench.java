@@ -2,62 +2,40 @@ package org.jaria.arnl.bench;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.SplittableRandom;
+import java.util.Locale;
 import org.jaria.arnl.mcl.LaserScans;
 import org.jaria.arnl.mcl.LikelihoodField;
 import org.jaria.arnl.mcl.MclFilter;
+import org.jaria.arnl.mcl.PoseEstimate;
 import org.jaria.arnl.mcl.SonarScan;
-import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
-import org.jaria.robot.ArRobot;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.client.SimulatedRobot;
 import org.jaria.sim.devices.LaserSensor;
 
 /**
- * Laser localization figures beside the sonar ones: the same Monte Carlo filter fed 181-beam laser
- * scans (−90..90° by 1°, ranges with 5 mm Gaussian noise, from the simulated robot's true pose)
- * through {@link LaserScans}.
+ * Laser localization figures beside the sonar ones ({@link org.jaria.arnl.ArLocalizationTask}
+ * against {@link org.jaria.arnl.ArSonarLocalizationTask}): update time, tracking error on the
+ * office route and global localization success, in one table.
  */
 final class LaserLocalizationBench {
 
   private LaserLocalizationBench() {}
 
-  /** How much each laser scan counts: 181 beams are far from independent. */
-  static final double SENSOR_BELIEF = 0.05;
-
-  /** Cell size, sigma, floor of the laser likelihood field. */
+  /** Laser model parameters of the task's defaults: cell size, sigma, floor; belief. */
   static LikelihoodField field(ArMap map) {
     return LikelihoodField.build(map, 50, 50, 0.1, 250);
   }
 
-  private static double[] angles() {
-    double[] a = new double[181];
-    for (int i = 0; i < a.length; i++) {
-      a[i] = -90 + i;
-    }
-    return a;
-  }
+  static final double SENSOR_BELIEF = 0.05;
 
-  private static double[] scan(LaserSensor sensor, SplittableRandom rng) {
-    double[] r = sensor.ranges(-90, 1, 181);
-    for (int i = 0; i < r.length; i++) {
-      if (r[i] < sensor.maxRange()) {
-        r[i] += 5 * gaussian(rng);
-      }
-    }
-    return r;
-  }
-
-  private static double gaussian(SplittableRandom rng) {
-    double u = 1 - rng.nextDouble();
-    double v = rng.nextDouble();
-    return Math.sqrt(-2 * Math.log(u)) * Math.cos(2 * Math.PI * v);
-  }
-
-  /** One whole update (motion, sensor model, estimate, resampling), timed. */
-  static LocalizationBench.UpdateTime updateTime(int particles, boolean seeThrough, boolean quick) {
+  /**
+   * One whole update as {@code ArLocalizationTask} does it (motion, scan preparation, sensor model,
+   * estimate, score, resampling) with 2000 particles on a 181-beam scan of the simulated office,
+   * using every {@code beamStep}-th beam; thread CPU time.
+   */
+  static LocalizationBench.UpdateTime updateTime(int particles, int beamStep, boolean quick) {
     ArMap office = ArMap.loadBundled("office");
     ArPose truth = new ArPose(15000, 12500, 60);
     SimulatedRobot sim = LocalizationBench.world(office, 1, truth);
@@ -69,19 +47,18 @@ final class LaserLocalizationBench {
       SimRobot r = sim.sim();
       mount =
           new ArPose(r.getModel().getLaserX(), r.getModel().getLaserY(), r.getModel().getLaserTh());
-      ranges = scan(LaserSensor.of(r), new SplittableRandom(3));
+      ranges = LaserSensor.of(r).ranges(-90, 1, 181);
       enc = sim.robot().getEncoderPose();
     } finally {
       LocalizationBench.close(sim);
     }
-    LikelihoodField field = field(office);
-    MclFilter f = new MclFilter(field, particles, 7);
-    f.setSensorBelief(SENSOR_BELIEF);
-    if (!seeThrough) {
-      f.setSeeThroughFactor(1);
+    double[] angles = new double[181];
+    for (int i = 0; i < angles.length; i++) {
+      angles[i] = -90 + i;
     }
+    MclFilter f = new MclFilter(field(office), particles, 7);
+    f.setSensorBelief(SENSOR_BELIEF);
     f.initGaussian(truth, particles, 100, 100, 3);
-    double[] angles = angles();
     List<Double> times = new ArrayList<>();
     int iterations = quick ? 150 : 400;
     int echoes = 0;
@@ -90,9 +67,10 @@ final class LaserLocalizationBench {
       ArPose to = new ArPose(from.x() + (it % 2 == 0 ? 5 : -5), from.y(), from.th());
       long t0 = BenchSupport.cpuNanos();
       f.motionUpdate(from, to);
-      SonarScan s = LaserScans.prepare(angles, ranges, mount, enc, 32000, 1);
+      SonarScan s = LaserScans.prepare(angles, ranges, mount, to, 32000, beamStep);
       f.sensorUpdate(s);
-      f.estimateNear(truth);
+      PoseEstimate e = f.estimateNear(truth);
+      f.matchFraction(e.pose(), s, 150);
       f.resampleIfNeeded();
       long t = BenchSupport.cpuNanos() - t0;
       if (it >= 100) {
@@ -106,120 +84,114 @@ final class LaserLocalizationBench {
   }
 
   /**
-   * Tracking error on the sonar benchmark's office route: the filter (2000 particles) updated every
-   * 100 ms of robot time from odometry and a laser scan; error of its estimate against the truth.
+   * Sonar and laser side by side, as Markdown (the section of {@code jaria bench arnl}); the sonar
+   * figures are those measured above it in the report.
    */
-  static LaserTracking tracking(int laps) {
-    ArMap office = ArMap.loadBundled("office");
-    SimulatedRobot sim = LocalizationBench.world(office, 11, null);
-    try {
-      ArRobot robot = sim.robot();
-      SimRobot simRobot = sim.sim();
-      LaserSensor sensor = LaserSensor.of(simRobot);
-      ArPose mount =
-          new ArPose(
-              simRobot.getModel().getLaserX(),
-              simRobot.getModel().getLaserY(),
-              simRobot.getModel().getLaserTh());
-      SplittableRandom rng = new SplittableRandom(11);
-      MclFilter f = new MclFilter(field(office), 2000, 11);
-      f.setSensorBelief(SENSOR_BELIEF);
-      sim.runMillis(500);
-      f.initGaussian(simRobot.getTruePose(), 2000, 100, 100, 3);
-      List<ArPose> route = BenchSupport.officeLaps(laps);
-      BenchSupport.TruthDriver driver = new BenchSupport.TruthDriver(simRobot, route, 500);
-      robot.addAction(driver, 50);
-      double[] angles = angles();
-      List<Double> mm = new ArrayList<>();
-      List<Double> deg = new ArrayList<>();
-      List<Double> along = new ArrayList<>();
-      ArPose[] last = {robot.getEncoderPose(), simRobot.getTruePose()};
-      // Each robot cycle, right after its SIP: in lockstep the world has not moved since the SIP
-      // was sent, so the scan and the odometry describe the same moment (as a real driver gets
-      // by time-stamping scans and interpolating odometry).
-      robot.addUserTask(
-          "laserLocalization",
-          10,
-          () -> {
-            ArPose enc = robot.getEncoderPose();
-            f.motionUpdate(last[0], enc);
-            last[0] = enc;
-            f.sensorUpdate(
-                LaserScans.prepare(angles, scan(sensor, rng), mount, enc, sensor.maxRange(), 1));
-            ArPose estimate = f.estimateNear(last[1]).pose();
-            last[1] = estimate;
-            f.resampleIfNeeded();
-            ArPose truth = simRobot.getTruePose();
-            mm.add(truth.findDistanceTo(estimate));
-            double a = Math.toRadians(truth.th());
-            if (robot.getVel() > 400) {
-              along.add(
-                  (estimate.x() - truth.x()) * Math.cos(a)
-                      + (estimate.y() - truth.y()) * Math.sin(a));
-            }
-            deg.add(Math.abs(ArMath.subAngle(truth.th(), estimate.th())));
-          });
-      sim.runUntil(driver::done, java.time.Duration.ofMinutes(15L * laps));
-      return new LaserTracking(
-          new LocalizationBench.Tracking(
-              robot.getOdometerDistance() / 1000,
-              BenchSupport.rms(mm),
-              BenchSupport.quantile(mm, 0.95),
-              BenchSupport.quantile(mm, 1),
-              BenchSupport.rms(deg),
-              BenchSupport.quantile(deg, 0.95),
-              BenchSupport.quantile(deg, 1)),
-          BenchSupport.mean(along));
-    } finally {
-      LocalizationBench.close(sim);
-    }
-  }
-
-  /**
-   * Tracking error, and the mean signed error along the direction of travel while driving faster
-   * than 400 mm/s (a lag or lead of the estimate shows here).
-   */
-  record LaserTracking(LocalizationBench.Tracking tracking, double meanAlongMm) {}
-
-  /** Both, as Markdown (the section of {@code jaria bench arnl}). */
-  static String report(boolean quick) {
+  static String report(
+      boolean quick,
+      LocalizationBench.UpdateTime sonarUpdate,
+      LocalizationBench.Tracking sonarTracking,
+      LocalizationBench.Global sonarGlobal,
+      int laps,
+      int seeds) {
+    LocalizationBench.UpdateTime laser = updateTime(2000, 2, quick);
+    LocalizationBench.UpdateTime laserAll = updateTime(2000, 1, quick);
+    LocalizationBench.Tracking lt =
+        LocalizationBench.tracking(laps, LocalizationBench.Sensor.LASER);
+    LocalizationBench.Global lg =
+        LocalizationBench.global(
+            ArMap.loadBundled("office"), "office", seeds, LocalizationBench.Sensor.LASER);
     StringBuilder sb = new StringBuilder();
-    sb.append("\n## Laser localization (same filter, 181-beam laser scans)\n\n");
-    sb.append("| particles | beams used | see-through check | median ms | p95 ms |\n");
-    sb.append("|---:|---:|---|---:|---:|\n");
-    for (boolean through : new boolean[] {false, true}) {
-      LocalizationBench.UpdateTime u = updateTime(2000, through, quick);
-      sb.append(
-          String.format(
-              java.util.Locale.ROOT,
-              "| %d | %d | %s | %.3f | %.3f |%n",
-              u.particles(),
-              u.echoes(),
-              through ? "on" : "off",
-              u.medianMs(),
-              u.p95Ms()));
-    }
-    LaserTracking lt = tracking(1);
-    LocalizationBench.Tracking tr = lt.tracking();
     sb.append(
-        "\n| laser tracking | distance m | RMSE mm | p95 mm | max mm | RMSE deg | max deg | mean along-track mm |\n");
-    sb.append("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+        "\n## Sonar and laser localization side by side"
+            + " (ArSonarLocalizationTask, ArLocalizationTask; default parameters)\n\n");
     sb.append(
-        String.format(
-            java.util.Locale.ROOT,
-            "| office, 1 lap, 2000 particles, every robot cycle | %.1f | %.0f | %.0f | %.0f | %.2f | %.2f | %+.0f |%n",
-            tr.metres(),
-            tr.rmseMm(),
-            tr.p95Mm(),
-            tr.maxMm(),
-            tr.rmseDeg(),
-            tr.maxDeg(),
-            lt.meanAlongMm()));
+        "Update: one whole update of 2000 particles, thread CPU time. Sonar: a scan of 16 sonars;"
+            + " laser: a 181-beam scan (-90..90 by 1 degree), of which every 2nd beam is used"
+            + " (LaserBeamStep 2), or all of them. Tracking: the office route above, odometry"
+            + " error random(0.02, 0.02). Global: random start, no prior, 60 s of driving.\n\n");
+    sb.append("| figure | sonar | laser |\n|---|---:|---:|\n");
+    sb.append(
+        row(
+            "update median ms (p95)",
+            String.format(
+                Locale.ROOT,
+                "%.3f (%.3f), %d echoes",
+                sonarUpdate.medianMs(),
+                sonarUpdate.p95Ms(),
+                sonarUpdate.echoes()),
+            String.format(
+                Locale.ROOT,
+                "%.3f (%.3f), %d beams",
+                laser.medianMs(),
+                laser.p95Ms(),
+                laser.echoes())));
+    sb.append(
+        row(
+            "update median ms (p95), all beams",
+            "",
+            String.format(
+                Locale.ROOT,
+                "%.3f (%.3f), %d beams",
+                laserAll.medianMs(),
+                laserAll.p95Ms(),
+                laserAll.echoes())));
+    sb.append(row("tracking RMSE mm", fmt(sonarTracking.rmseMm()), fmt(lt.rmseMm())));
+    sb.append(row("tracking p95 / max mm", pair(sonarTracking), pair(lt)));
+    sb.append(
+        row(
+            "tracking RMSE deg",
+            String.format(Locale.ROOT, "%.2f", sonarTracking.rmseDeg()),
+            String.format(Locale.ROOT, "%.2f", lt.rmseDeg())));
+    sb.append(
+        row(
+            "mean along-track error mm",
+            String.format(Locale.ROOT, "%+.0f", sonarTracking.meanAlongMm()),
+            String.format(Locale.ROOT, "%+.0f", lt.meanAlongMm())));
+    sb.append(row("global localization, office: within 250 mm", global(sonarGlobal), global(lg)));
+    sb.append(
+        row(
+            "global localization: median s to converge",
+            fmt(sonarGlobal.medianSeconds()),
+            fmt(lg.medianSeconds())));
     return sb.toString();
   }
 
-  /** Prints {@link #report} (quick with any argument). */
+  private static String row(String name, String sonar, String laser) {
+    return "| " + name + " | " + sonar + " | " + laser + " |\n";
+  }
+
+  private static String fmt(double v) {
+    return String.format(Locale.ROOT, "%.0f", v);
+  }
+
+  private static String pair(LocalizationBench.Tracking t) {
+    return String.format(Locale.ROOT, "%.0f / %.0f", t.p95Mm(), t.maxMm());
+  }
+
+  private static String global(LocalizationBench.Global g) {
+    return String.format(
+        Locale.ROOT,
+        "%d of %d (%.0f %%)",
+        g.successes(),
+        g.runs(),
+        100.0 * g.successes() / g.runs());
+  }
+
+  /** Prints the laser figures alone (quick with any argument): update time and tracking. */
   public static void main(String[] args) {
-    System.out.println(report(args.length > 0));
+    boolean quick = args.length > 0;
+    LocalizationBench.UpdateTime u = updateTime(2000, 2, quick);
+    LocalizationBench.UpdateTime all = updateTime(2000, 1, quick);
+    System.out.printf(
+        Locale.ROOT,
+        "laser update, 2000 particles: %d beams %.3f ms (p95 %.3f); %d beams %.3f ms (p95 %.3f)%n",
+        u.echoes(),
+        u.medianMs(),
+        u.p95Ms(),
+        all.echoes(),
+        all.medianMs(),
+        all.p95Ms());
+    System.out.println(LocalizationBench.tracking(1, LocalizationBench.Sensor.LASER));
   }
 }

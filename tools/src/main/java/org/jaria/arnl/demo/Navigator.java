@@ -8,6 +8,7 @@ import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import org.jaria.arnl.ArActionLost;
 import org.jaria.arnl.ArActionSlowDownWhenNotCertain;
+import org.jaria.arnl.ArBaseLocalizationTask;
 import org.jaria.arnl.ArForbiddenRangeDevice;
 import org.jaria.arnl.ArPathPlanningTask;
 import org.jaria.arnl.ArPathPlanningTask.PathPlanningState;
@@ -46,7 +47,7 @@ final class Navigator implements AutoCloseable {
   static Navigator create(
       ArRobot robot,
       ArMap map,
-      ArSonarLocalizationTask.UpdateMode locMode,
+      ArBaseLocalizationTask.UpdateMode locMode,
       ArPathPlanningTask.PlanMode planMode,
       long seed) {
     ArSonarDevice sonar = new ArSonarDevice();

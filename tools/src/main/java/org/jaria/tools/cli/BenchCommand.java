@@ -92,8 +92,8 @@ final class BenchCommand implements Runnable {
   @Command(
       name = "arnl",
       description =
-          "Sonar localization update time and accuracy, global localization, planning and"
-              + " navigation success (fixed seeds).")
+          "Sonar and laser localization update time and accuracy, global localization, planning"
+              + " and navigation success (fixed seeds).")
   static final class Arnl extends QuickBench {
     @Override
     String table() {
