@@ -17,18 +17,18 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.TreeSet;
 import java.util.stream.Collectors;
+import org.jaria.params.ArRobotParams;
 import org.junit.jupiter.api.Test;
 
 /**
- * ArRobot's public methods and constructors are the ones ARIA programs port to; however the class
- * is split inside, the set must stay exactly the one in {@code ArRobot-public-api.txt}.
+ * ArRobot's and ArRobotParams' public methods and constructors are the ones ARIA programs port to;
+ * however the classes are split inside, each set must stay exactly the one in its golden list
+ * ({@code ArRobot-public-api.txt}, {@code ArRobotParams-public-api.txt}, next to this test).
  *
  * <p>After a deliberate API change, regenerate the list with {@code -Djaria.api.update=true} and
  * review the diff.
  */
 class ArRobotApiTest {
-
-  private static final String GOLDEN = "ArRobot-public-api.txt";
 
   /** One line per public constructor and method (inherited ones too), sorted. */
   static List<String> publicSignatures(Class<?> c) {
@@ -61,16 +61,29 @@ class ArRobotApiTest {
   }
 
   @Test
-  void publicMethodSetIsTheGoldenList() throws IOException {
-    List<String> now = publicSignatures(ArRobot.class);
+  void arRobotPublicMethodSetIsTheGoldenList() throws IOException {
+    assertGolden(ArRobot.class, "ArRobot-public-api.txt");
+  }
+
+  @Test
+  void arRobotParamsPublicMethodSetIsTheGoldenList() throws IOException {
+    assertGolden(ArRobotParams.class, "ArRobotParams-public-api.txt");
+  }
+
+  private static void assertGolden(Class<?> c, String golden) throws IOException {
+    List<String> now = publicSignatures(c);
     if (Boolean.getBoolean("jaria.api.update")) {
-      Path file = Path.of("src/test/resources/org/jaria/robot", GOLDEN);
-      Files.write(file, now, StandardCharsets.UTF_8);
+      Files.write(
+          Path.of("src/test/resources/org/jaria/robot", golden), now, StandardCharsets.UTF_8);
     }
-    List<String> golden;
-    try (InputStream in = ArRobotApiTest.class.getResourceAsStream(GOLDEN)) {
-      golden = new String(in.readAllBytes(), StandardCharsets.UTF_8).lines().toList();
+    List<String> expected;
+    try (InputStream in = ArRobotApiTest.class.getResourceAsStream(golden)) {
+      if (in == null) {
+        throw new IOException(
+            golden + " is missing: run this test once with -Djaria.api.update=true");
+      }
+      expected = new String(in.readAllBytes(), StandardCharsets.UTF_8).lines().toList();
     }
-    assertEquals(String.join("\n", golden), String.join("\n", now));
+    assertEquals(String.join("\n", expected), String.join("\n", now), c.getName());
   }
 }
