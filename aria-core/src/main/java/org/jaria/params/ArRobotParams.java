@@ -4,13 +4,11 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
-import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
-import java.util.Set;
 import java.util.SortedMap;
 import java.util.TreeMap;
 
@@ -49,13 +47,14 @@ public final class ArRobotParams {
           "p3dx-sh-lms",
           "peoplebot-sh");
 
-  private static final ArRobotParams DEFAULTS = buildDefaults();
+  private static final ArRobotParams DEFAULTS = ParamLayers.generic();
 
-  private final Map<String, ParamFile.Entry> raw;
-  private final SortedMap<Integer, SonarUnit> sonarUnits;
-  private final SortedMap<Integer, IRUnit> irUnits;
-  private final List<String> sources;
-  private final List<String> problems;
+  // The layers' text, kept for the next layer (ParamLayers) and for getRaw; all unmodifiable.
+  final Map<String, ParamFile.Entry> raw;
+  final SortedMap<Integer, SonarUnit> sonarUnits;
+  final SortedMap<Integer, IRUnit> irUnits;
+  final List<String> sources;
+  final List<String> problems;
 
   private final String className;
   private final String subClassName;
@@ -108,7 +107,7 @@ public final class ArRobotParams {
   private final int numIR;
   private final IRUnit[] irs;
 
-  private ArRobotParams(
+  ArRobotParams(
       Map<String, ParamFile.Entry> raw,
       SortedMap<Integer, SonarUnit> sonarUnits,
       SortedMap<Integer, IRUnit> irUnits,
@@ -179,59 +178,7 @@ public final class ArRobotParams {
     for (int i = 0; i < numIR; i++) {
       irs[i] = this.irUnits.getOrDefault(i, new IRUnit(i, 0, 0, 0, 0));
     }
-    checkPlausible();
-  }
-
-  /**
-   * Values that cannot describe a robot are errors naming the key and the line that set it: a
-   * conversion factor or divisor of zero or less (every distance, speed or range would be zero or
-   * infinite) and a negative size.
-   */
-  private void checkPlausible() throws ParamFormatException {
-    positive("AngleConvFactor", angleConvFactor);
-    positive("DistConvFactor", distConvFactor);
-    positive("VelConvFactor", velConvFactor);
-    positive("RangeConvFactor", rangeConvFactor);
-    positive("Vel2Divisor", vel2Divisor);
-    notNegative("RobotRadius", robotRadius);
-    notNegative("RobotDiagonal", robotDiagonal);
-    notNegative("RobotWidth", robotWidth);
-    notNegative("RobotLength", robotLength);
-    notNegative("RobotLengthFront", robotLengthFront);
-    notNegative("RobotLengthRear", robotLengthRear);
-  }
-
-  private void positive(String key, double value) throws ParamFormatException {
-    if (!(value > 0)) {
-      ParamFile.Entry e = raw.get(key.toLowerCase(Locale.ROOT));
-      throw new ParamFormatException(
-          e.sourceName(),
-          e.line(),
-          key
-              + " must be greater than 0, not "
-              + e.value()
-              + " (it multiplies or divides what the"
-              + " robot reports; copy the value from the robot's bundled parameter file)");
-    }
-  }
-
-  private void notNegative(String key, double value) throws ParamFormatException {
-    if (value < 0) {
-      ParamFile.Entry e = raw.get(key.toLowerCase(Locale.ROOT));
-      throw new ParamFormatException(
-          e.sourceName(),
-          e.line(),
-          key + " is a size in mm and cannot be negative, not " + e.value());
-    }
-  }
-
-  private static ArRobotParams buildDefaults() {
-    try {
-      ParamFile f = ParamFile.parse(GenericParams.TEXT, GenericParams.SOURCE);
-      return layer(null, f);
-    } catch (ParamFormatException e) {
-      throw new IllegalStateException("JAria's built-in parameter defaults are broken", e);
-    }
+    ParamChecks.plausible(this);
   }
 
   /** The generic Pioneer values every robot starts from (no sonars: their places vary). */
@@ -286,73 +233,7 @@ public final class ArRobotParams {
    *     line
    */
   public ArRobotParams overlay(ParamFile f) throws ParamFormatException {
-    return layer(this, f);
-  }
-
-  static ArRobotParams layer(ArRobotParams base, ParamFile f) throws ParamFormatException {
-    Map<String, ParamFile.Entry> r =
-        base == null ? new LinkedHashMap<>() : new LinkedHashMap<>(base.raw);
-    SortedMap<Integer, SonarUnit> sonar =
-        base == null ? new TreeMap<>() : new TreeMap<>(base.sonarUnits);
-    SortedMap<Integer, IRUnit> ir = base == null ? new TreeMap<>() : new TreeMap<>(base.irUnits);
-    Set<String> seen = new HashSet<>();
-    Map<Integer, ParamFile.Entry> unitLines = new TreeMap<>();
-    for (ParamFile.Entry e : f.entries()) {
-      String k = e.keyword().toLowerCase(Locale.ROOT);
-      if (k.equals("sonarunit")) {
-        SonarUnit u = ParamValues.parseSonarUnit(e);
-        sonar.put(u.number(), u);
-        unitLines.putIfAbsent(u.number(), e);
-      } else if (k.equals("irunit")) {
-        IRUnit u = ParamValues.parseIRUnit(e);
-        ir.put(u.number(), u);
-      }
-      if (seen.add(k)) {
-        r.put(k, e);
-      }
-    }
-    List<String> src = new ArrayList<>(base == null ? List.of() : base.sources);
-    src.add(f.getSourceName());
-    ArRobotParams p =
-        new ArRobotParams(r, sonar, ir, src, base == null ? List.of() : base.problems);
-    checkSonarCount(p, r.get("sonarnum"), unitLines);
-    return p;
-  }
-
-  /**
-   * SonarNum and the SonarUnit lines must agree: a unit this file lists beyond SonarNum, or a unit
-   * 0..SonarNum-1 that no layer lists, is an error at the line concerned.
-   */
-  private static void checkSonarCount(
-      ArRobotParams p, ParamFile.Entry sonarNum, Map<Integer, ParamFile.Entry> unitLines)
-      throws ParamFormatException {
-    for (Map.Entry<Integer, ParamFile.Entry> u : unitLines.entrySet()) {
-      if (u.getKey() >= p.numSonar) {
-        ParamFile.Entry e = u.getValue();
-        throw new ParamFormatException(
-            e.sourceName(),
-            e.line(),
-            "SonarUnit "
-                + u.getKey()
-                + " is listed but SonarNum is "
-                + p.numSonar
-                + " (units are numbered 0..SonarNum-1): raise SonarNum ("
-                + sonarNum.where()
-                + ") or remove the unit");
-      }
-    }
-    if (p.numSonar > 0 && !p.sonarUnits.keySet().containsAll(rangeSet(p.numSonar))) {
-      Set<Integer> missing = new java.util.TreeSet<>(rangeSet(p.numSonar));
-      missing.removeAll(p.sonarUnits.keySet());
-      throw new ParamFormatException(
-          sonarNum.sourceName(),
-          sonarNum.line(),
-          "SonarNum is "
-              + p.numSonar
-              + " but no SonarUnit line describes sonar "
-              + missing
-              + ": add them or lower SonarNum");
-    }
+    return ParamLayers.layer(this, f);
   }
 
   /**
@@ -377,14 +258,6 @@ public final class ArRobotParams {
    */
   public List<String> getProblems() {
     return problems;
-  }
-
-  private static Set<Integer> rangeSet(int n) {
-    Set<Integer> s = new HashSet<>();
-    for (int i = 0; i < n; i++) {
-      s.add(i);
-    }
-    return s;
   }
 
   /** The text value of any keyword (case-insensitive) from the topmost layer that has it. */

@@ -1,0 +1,41 @@
+package org.jaria.tools.bench;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** {@code jaria bench protocol --quick} prints every row, and the SIP path allocates nothing. */
+class ProtocolBenchmarkTest {
+
+  @Test
+  void quickRunPrintsEveryRow() throws Exception {
+    String table = ProtocolBenchmark.run(true);
+    List<String> lines = table.lines().toList();
+    assertTrue(lines.get(2).startsWith("rates timed on"), table);
+    for (String row :
+        List.of(
+            "SIPs received+decoded per second",
+            "SIPs decoded per second",
+            "commands encoded per second (VEL)",
+            "SIPs encoded per second",
+            "bytes allocated per SIP received+decoded")) {
+      assertTrue(table.contains(row), row + " missing:\n" + table);
+    }
+    // 500 round trips answered by the client's cycle (a missing VEL fails the run instead).
+    assertTrue(table.contains("500 samples"), table);
+  }
+
+  @Test
+  void receivingAndDecodingASipAllocatesNothing() {
+    // Counted by the JVM for this thread: a per-packet object (a boxed number, a new array, a
+    // lambda capturing per call) would show as at least several bytes per SIP.
+    String perSip =
+        ProtocolBenchmark.allocationPerOp(1_000_000, ProtocolBenchmark.receiveAndDecode());
+    // HotSpot (every JDK the build supports) counts allocation per thread.
+    assertTrue(perSip.endsWith(" B"), "allocation not counted: " + perSip);
+    double bytes = Double.parseDouble(perSip.replace(" B", ""));
+    assertEquals(0.0, bytes, 1.0, "bytes allocated per SIP: " + perSip);
+  }
+}
