@@ -6,10 +6,9 @@ package org.jaria.robot;
  *
  * <p>A motion command is not sent at once: it is kept, takes precedence over the actions, and the
  * robot's cycle sends it (and re-sends it every {@link #getStateReflectionRefreshTime() refresh
- * time}) as ARIA's state reflection does; a robot constructed with state reflection off sends it
- * once, when called. They may be called from any thread. {@link ArRobot} is the only
- * implementation: this interface keeps one job of ARIA's large {@code ArRobot} API in a file of its
- * own, and hands every call to the robot's state reflector.
+ * time}) as ARIA's state reflection does. They may be called from any thread. {@link ArRobot} is
+ * the only implementation: this interface keeps one job of ARIA's large {@code ArRobot} API in a
+ * file of its own, and hands every call to the robot's state reflector.
  */
 public sealed interface MotionCommands permits ArRobot {
 
