@@ -1,21 +1,27 @@
 package org.jaria.robot;
 
+import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.ReentrantLock;
 import org.jaria.action.ArAction;
 import org.jaria.action.ArActionDesired;
 import org.jaria.action.ArPriorityResolver;
 import org.jaria.action.ArResolver;
 import org.jaria.clock.Clock;
 import org.jaria.connection.ArDeviceConnection;
+import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
 import org.jaria.geom.ArTransform;
 import org.jaria.params.ArRobotParams;
 import org.jaria.protocol.ArCommands;
+import org.jaria.protocol.ArRobotPacket;
 import org.jaria.protocol.DropCounters;
 import org.jaria.protocol.packets.ArConfigPacket;
 import org.jaria.range.ArRangeDevice;
+import org.jaria.range.ArSensorReading;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -54,22 +60,8 @@ import org.slf4j.LoggerFactory;
  * getters read. Going out, {@code ActionStage} resolves the actions' desires, {@code
  * StateReflection} decides the motion commands of the cycle, and {@code StateReflector} sends them
  * through the one {@link ArRobotPacketSender}.
- *
- * <p><b>Where the methods are.</b> ARIA's {@code ArRobot} has about 200 methods. This class keeps
- * the ones that tie the stages together (the constructors, {@link #loopOnce()}, range devices, the
- * encoder transform, actions, {@link #close()}); the rest are grouped by job in the interfaces it
- * implements, one file each: {@link ConnectionLifecycle} (connecting, callbacks), {@link
- * RobotCycle} (running the cycle, tasks, packet handlers, the lock), {@link RobotReadings} (what
- * the last SIP said, sonar, size), {@link MotionCommands} (motion commands and limits) and {@link
- * RobotCommands} (direct commands). They are all methods of {@code ArRobot}, as in ARIA.
  */
-public non-sealed class ArRobot
-    implements AutoCloseable,
-        ConnectionLifecycle,
-        RobotCycle,
-        RobotReadings,
-        MotionCommands,
-        RobotCommands {
+public class ArRobot implements AutoCloseable {
 
   private static final Logger log = LoggerFactory.getLogger(ArRobot.class);
 
@@ -83,12 +75,20 @@ public non-sealed class ArRobot
   final StateReflector motion;
   private final ActionStage actions = new ActionStage();
   private final CopyOnWriteArrayList<ArRangeDevice> rangeDevices = new CopyOnWriteArrayList<>();
-  final CycleParts cycle;
-
-  /** The run-exit callbacks, which the run loop calls (the cycle's own list). */
-  final Callbacks runExitCBs;
-
+  final ReentrantLock robotLock = new ReentrantLock();
+  final TaskList sensorInterpTasks = new TaskList("sensor interpretation");
+  final TaskList userTasks = new TaskList("user");
+  private final PacketRouter router = new PacketRouter();
+  final Callbacks runExitCBs = new Callbacks("run exit");
   final RobotLink link;
+  private final RunLoop runLoop;
+  private final AtomicLong counter = new AtomicLong();
+  private volatile long cycleTimeMs = 100;
+  private volatile long cycleWarningTimeMs = 250;
+  private volatile boolean cycleChained = true;
+  private volatile long lastCycleNanos;
+  private final AtomicLong lockWarnings = new AtomicLong();
+  private final AtomicLong overrunWarnings = new AtomicLong();
 
   /** A robot with the default name, timed by the system clock. */
   public ArRobot() {
@@ -113,22 +113,21 @@ public non-sealed class ArRobot
     this.state = new StatusStage(clock, ArRobotParams.defaults(), drops);
     this.sender = new ArRobotPacketSender(clock);
     this.motion = new StateReflector(clock, sender, state::status);
-    this.cycle = new CycleParts(new RunLoop(this));
-    this.runExitCBs = cycle.runExitCBs;
+    this.runLoop = new RunLoop(this);
     this.link =
         new RobotLink(
             clock,
             sender,
             drops,
-            cycle.router,
-            cycle.robotLock,
+            router,
+            robotLock,
             this::getCycleTime,
-            cycle.runLoop::isRunning,
+            runLoop::isRunning,
             new LinkEvents());
     motion.setDoStateReflection(doStateReflection);
-    cycle.router.add(p -> state.handleSip(p, cycle.counter()), ArListPos.LAST);
-    cycle.router.add(state::handleEncoderPacket, ArListPos.LAST);
-    cycle.router.add(state::handleIoPacket, ArListPos.LAST);
+    router.add(p -> state.handleSip(p, counter.get()), ArListPos.LAST);
+    router.add(state::handleEncoderPacket, ArListPos.LAST);
+    router.add(state::handleIoPacket, ArListPos.LAST);
   }
 
   /** What the robot does when its link changes. */
@@ -157,7 +156,199 @@ public non-sealed class ArRobot
     return name;
   }
 
-  // ================================================================ the cycle (see RobotCycle)
+  // ================================================================ connection
+
+  /** Sets the connection to the robot (TCP, serial or pipe); it is opened when connecting. */
+  public void setDeviceConnection(ArDeviceConnection c) {
+    link.setDeviceConnection(c);
+  }
+
+  /** The connection to the robot, or null. */
+  public ArDeviceConnection getDeviceConnection() {
+    return link.getDeviceConnection();
+  }
+
+  /**
+   * Connects to the robot, waiting until connected or failed (a few seconds at most). If the
+   * robot's cycle is already running on another thread, the connection is made there and this
+   * method waits for it.
+   *
+   * @return whether the robot is connected
+   */
+  public boolean blockingConnect() {
+    return link.blockingConnect();
+  }
+
+  /**
+   * Starts connecting without waiting: the running cycle (or the next {@link #loopOnce} calls)
+   * carry the handshake forward. Watch {@link #isConnected()} or add a connect callback.
+   *
+   * @return false if there is no connection to use
+   */
+  public boolean asyncConnect() {
+    return link.asyncConnect();
+  }
+
+  /** Whether the robot is connected. */
+  public boolean isConnected() {
+    return link.isConnected();
+  }
+
+  /** Whether a connection attempt is under way. */
+  public boolean isConnecting() {
+    return link.isConnecting();
+  }
+
+  /** Why the last connection attempt failed, or an empty string. */
+  public String getConnectFailure() {
+    return link.failure();
+  }
+
+  /** Sends CLOSE and closes the connection; the disconnect-normally callbacks run. */
+  public boolean disconnect() {
+    return link.disconnect();
+  }
+
+  /** The robot's name from the handshake. */
+  public String getRobotName() {
+    return link.robotName();
+  }
+
+  /** The robot's type from the handshake, e.g. "Pioneer". */
+  public String getRobotType() {
+    return link.robotType();
+  }
+
+  /** The robot's subtype from the handshake, lower-cased, e.g. "p3dx-sh". */
+  public String getRobotSubType() {
+    return link.robotSubType();
+  }
+
+  /** The CONFIGpac received when connecting, or null. */
+  public ArConfigPacket getOrigRobotConfig() {
+    return link.config();
+  }
+
+  /** The parameters in use (from the robot's subtype and name once connected). */
+  public ArRobotParams getRobotParams() {
+    return state.params();
+  }
+
+  /**
+   * Where user parameter files ({@code <subtype>.p}, {@code <name>.p}) are looked for; by default
+   * {@code $JARIA_PARAMS}, else {@code ~/.jaria/params}. Null uses only the bundled files.
+   */
+  public void setParamsDirectory(Path dir) {
+    link.setParamsDirectory(dir);
+  }
+
+  /** Where user parameter files are looked for (see {@link #setParamsDirectory}); may be null. */
+  public Path getParamsDirectory() {
+    return link.paramsDirectory();
+  }
+
+  /**
+   * How long without any packet before the connection counts as lost, ms (default 8000; 0 never).
+   */
+  public void setConnectionTimeoutTime(long ms) {
+    link.setTimeoutMs(ms);
+  }
+
+  /** The connection-lost timeout, ms. */
+  public long getConnectionTimeoutTime() {
+    return link.timeoutMs();
+  }
+
+  /** Commands sent since the robot was created. */
+  public long getPacketsSent() {
+    return sender.getPacketsSent();
+  }
+
+  /** The object that writes commands; its tap sees every packet sent. */
+  public ArRobotPacketSender getPacketSender() {
+    return sender;
+  }
+
+  /** Runs when a connection is made. */
+  public void addConnectCB(Runnable cb) {
+    link.connectCBs.add(cb);
+  }
+
+  /** Removes a connect callback. */
+  public void remConnectCB(Runnable cb) {
+    link.connectCBs.remove(cb);
+  }
+
+  /** Runs when a connection attempt fails. */
+  public void addFailedConnectCB(Runnable cb) {
+    link.failedConnectCBs.add(cb);
+  }
+
+  /** Removes a failed-connect callback. */
+  public void remFailedConnectCB(Runnable cb) {
+    link.failedConnectCBs.remove(cb);
+  }
+
+  /** Runs when the program disconnects on purpose. */
+  public void addDisconnectNormallyCB(Runnable cb) {
+    link.disconnectNormallyCBs.add(cb);
+  }
+
+  /** Removes a disconnect-normally callback. */
+  public void remDisconnectNormallyCB(Runnable cb) {
+    link.disconnectNormallyCBs.remove(cb);
+  }
+
+  /** Runs when the connection is lost (no packets, broken link, controller reset). */
+  public void addDisconnectOnErrorCB(Runnable cb) {
+    link.disconnectOnErrorCBs.add(cb);
+  }
+
+  /** Removes a disconnect-on-error callback. */
+  public void remDisconnectOnErrorCB(Runnable cb) {
+    link.disconnectOnErrorCBs.remove(cb);
+  }
+
+  /** Runs when {@link #run} / {@link #runAsync} ends. */
+  public void addRunExitCB(Runnable cb) {
+    runExitCBs.add(cb);
+  }
+
+  /** Removes a run-exit callback. */
+  public void remRunExitCB(Runnable cb) {
+    runExitCBs.remove(cb);
+  }
+
+  // ================================================================ the cycle
+
+  /**
+   * Runs the cycle on the calling thread until {@link #stopRunning()}.
+   *
+   * @param stopRunIfNotConnected also stop when the robot is (or becomes) disconnected
+   */
+  public void run(boolean stopRunIfNotConnected) {
+    runLoop.run(stopRunIfNotConnected);
+  }
+
+  /** Runs the cycle on a new thread named after the robot; returns at once. */
+  public void runAsync(boolean stopRunIfNotConnected) {
+    runLoop.runAsync(stopRunIfNotConnected);
+  }
+
+  /** Asks the cycle to stop; it ends within about two cycle times. */
+  public void stopRunning() {
+    runLoop.stopRunning();
+  }
+
+  /** Whether the cycle is running. */
+  public boolean isRunning() {
+    return runLoop.isRunning();
+  }
+
+  /** Waits until the cycle has stopped (at once if it is not running). */
+  public void waitForRunExit() throws InterruptedException {
+    runLoop.waitForRunExit();
+  }
 
   /**
    * Runs one cycle now: reads what has arrived (without waiting), then packet handlers, sensor
@@ -168,7 +359,7 @@ public non-sealed class ArRobot
     long start = clock.nanoTime();
     long realStart = System.nanoTime();
     if (link.stepConnecting(start)) {
-      cycle.countCycle();
+      counter.incrementAndGet();
       return;
     }
     if (isConnected()) {
@@ -176,7 +367,7 @@ public non-sealed class ArRobot
     }
     boolean locked;
     try {
-      locked = cycle.robotLock.tryLock(Math.max(1, cycle.cycleTimeMs()), TimeUnit.MILLISECONDS);
+      locked = robotLock.tryLock(Math.max(1, cycleTimeMs), TimeUnit.MILLISECONDS);
     } catch (InterruptedException e) {
       Thread.currentThread().interrupt();
       return;
@@ -188,27 +379,26 @@ public non-sealed class ArRobot
     try {
       link.handOnQueued();
       link.checkTimeout(clock.nanoTime());
-      cycle.sensorInterpTasks.runAll();
+      sensorInterpTasks.runAll();
       ArActionDesired desired = actions.resolve(this, isConnected());
       if (isConnected()) {
         motion.reflect(desired, state.encoderTransform().getTh());
       }
-      cycle.userTasks.runAll();
+      userTasks.runAll();
     } finally {
-      cycle.robotLock.unlock();
+      robotLock.unlock();
     }
-    cycle.countCycle();
-    cycle.setLastCycleNanos(System.nanoTime() - realStart);
+    counter.incrementAndGet();
+    lastCycleNanos = System.nanoTime() - realStart;
     // Measured on the robot's clock, like every other time in the robot: on a virtual clock a
     // cycle takes no time unless a task makes time pass, so runs stay deterministic.
     long took = clock.nanoTime() - start;
-    long overrun = cycle.countIfOverrun(took);
-    if (overrun > 0) {
+    if (cycleWarningTimeMs > 0 && took > TimeUnit.MILLISECONDS.toNanos(cycleWarningTimeMs)) {
       warnRarely(
-          overrun,
+          overrunWarnings.incrementAndGet(),
           "cycle took {} ms, more than the {} ms warning time: a task is too slow",
           TimeUnit.NANOSECONDS.toMillis(took),
-          cycle.cycleWarningTimeMs());
+          cycleWarningTimeMs);
     }
   }
 
@@ -226,10 +416,10 @@ public non-sealed class ArRobot
 
   private void keepAliveWithoutLock(long now) {
     warnRarely(
-        cycle.countSkipped(),
+        lockWarnings.incrementAndGet(),
         "skipped a cycle: user code held the robot lock for more than {} ms (cycle time {} ms)",
-        cycle.cycleTimeMs(),
-        cycle.cycleTimeMs());
+        cycleTimeMs,
+        cycleTimeMs);
     if (isConnected() && now - sender.getLastSentNanos() > TimeUnit.MILLISECONDS.toNanos(500)) {
       sender.com(ArCommands.PULSE.getNumber());
     }
@@ -239,6 +429,158 @@ public non-sealed class ArRobot
     if (n == 1 || n % 100 == 0) {
       log.warn(format + " (#" + n + ")", a, b);
     }
+  }
+
+  /** Adds a packet handler at the end of the list (after the robot's own handlers). */
+  public void addPacketHandler(ArPacketHandler h) {
+    addPacketHandler(h, ArListPos.LAST);
+  }
+
+  /** Adds a packet handler at the front (asked before the robot's own) or the end. */
+  public void addPacketHandler(ArPacketHandler h, ArListPos pos) {
+    router.add(h, pos);
+  }
+
+  /** Removes a packet handler. */
+  public void remPacketHandler(ArPacketHandler h) {
+    router.remove(h);
+  }
+
+  /**
+   * Adds (or replaces, by name) a sensor-interpretation task; higher positions run first. Range
+   * devices and localization use these.
+   */
+  public ArSyncTask addSensorInterpTask(String taskName, int position, Runnable task) {
+    return sensorInterpTasks.add(taskName, position, task);
+  }
+
+  /** Removes a sensor-interpretation task by name. */
+  public boolean remSensorInterpTask(String taskName) {
+    return sensorInterpTasks.remove(taskName);
+  }
+
+  /** Adds (or replaces, by name) a user task; higher positions run first. */
+  public ArSyncTask addUserTask(String taskName, int position, Runnable task) {
+    return userTasks.add(taskName, position, task);
+  }
+
+  /** Removes a user task by name. */
+  public boolean remUserTask(String taskName) {
+    return userTasks.remove(taskName);
+  }
+
+  /** The sensor-interpretation task with this name, or null. */
+  public ArSyncTask findSensorInterpTask(String taskName) {
+    return sensorInterpTasks.find(taskName);
+  }
+
+  /** The user task with this name, or null. */
+  public ArSyncTask findUserTask(String taskName) {
+    return userTasks.find(taskName);
+  }
+
+  /** The user tasks in running order. */
+  public List<ArSyncTask> getUserTasks() {
+    return userTasks.snapshot();
+  }
+
+  /** The sensor-interpretation tasks in running order. */
+  public List<ArSyncTask> getSensorInterpTasks() {
+    return sensorInterpTasks.snapshot();
+  }
+
+  /**
+   * The cycle as a tree, as ARIA's {@code getSyncTaskRoot()} shows it: "SyncTasks" with "Packet
+   * Handler" (85), the "Sensor Interp" branch (65) with its tasks, "Action Handler" (55), "State
+   * Reflector" (45) and the "User Tasks" branch (25) with its tasks. A snapshot: ask again after
+   * adding or removing tasks. {@code System.out.print(robot.getSyncTaskRoot())} prints it.
+   */
+  public SyncTaskView getSyncTaskRoot() {
+    return new SyncTaskView(
+        "SyncTasks",
+        0,
+        true,
+        null,
+        List.of(
+            SyncTaskView.step("Packet Handler", 85),
+            SyncTaskView.branch("Sensor Interp", 65, sensorInterpTasks.snapshot()),
+            SyncTaskView.step("Action Handler", 55),
+            SyncTaskView.step("State Reflector", 45),
+            SyncTaskView.branch("User Tasks", 25, userTasks.snapshot())));
+  }
+
+  /** Locks the robot: the cycle's tasks do not run until {@link #unlock()}. */
+  public void lock() {
+    robotLock.lock();
+  }
+
+  /** Tries to lock the robot without waiting. */
+  public boolean tryLock() {
+    return robotLock.tryLock();
+  }
+
+  /** Unlocks the robot. */
+  public void unlock() {
+    robotLock.unlock();
+  }
+
+  /** Cycles run so far (ARIA's counter, used to tell new sensor readings from old). */
+  public long getCounter() {
+    return counter.get();
+  }
+
+  /** Sets the cycle time, ms (default 100, the SIP cycle). */
+  public void setCycleTime(long ms) {
+    if (ms <= 0) {
+      throw new IllegalArgumentException("cycle time must be positive, got " + ms);
+    }
+    cycleTimeMs = ms;
+  }
+
+  /** The cycle time, ms. */
+  public long getCycleTime() {
+    return cycleTimeMs;
+  }
+
+  /**
+   * A cycle longer than this, on the robot's clock, logs a warning and is counted ({@link
+   * #getCycleOverrunCount()}), ms (default 250; 0 never).
+   */
+  public void setCycleWarningTime(long ms) {
+    cycleWarningTimeMs = ms;
+  }
+
+  /** The cycle warning time, ms. */
+  public long getCycleWarningTime() {
+    return cycleWarningTimeMs;
+  }
+
+  /** Whether each cycle waits for a SIP (true, default) or just runs every cycle time. */
+  public void setCycleChained(boolean chained) {
+    cycleChained = chained;
+  }
+
+  /** Whether cycles are chained to SIP arrival. */
+  public boolean isCycleChained() {
+    return cycleChained;
+  }
+
+  /** Real time the last cycle's tasks took, ns. */
+  public long getLastCycleNanos() {
+    return lastCycleNanos;
+  }
+
+  /**
+   * How many cycles took longer than the {@link #setCycleWarningTime cycle warning time} on the
+   * robot's clock (each logged a warning, or every hundredth after the first).
+   */
+  public long getCycleOverrunCount() {
+    return overrunWarnings.get();
+  }
+
+  /** How many cycles were skipped because user code held the robot's lock too long. */
+  public long getSkippedCycleCount() {
+    return lockWarnings.get();
   }
 
   // ================================================================ state (from the latest SIP)
@@ -254,21 +596,176 @@ public non-sealed class ArRobot
   }
 
   /** Everything the last SIP said, as one consistent snapshot. */
-  @Override
   public RobotStatus getStatus() {
     return state.status();
   }
 
-  /** The parameters in use (from the robot's subtype and name once connected). */
-  @Override
-  public ArRobotParams getRobotParams() {
-    return state.params();
+  /** Global pose: odometry corrected by the encoder→global transform (localization). */
+  public ArPose getPose() {
+    return state.status().pose();
   }
 
-  /** The object that writes commands; its tap sees every packet sent. */
-  @Override
-  public ArRobotPacketSender getPacketSender() {
-    return sender;
+  /** Global x, mm. */
+  public double getX() {
+    return state.status().pose().x();
+  }
+
+  /** Global y, mm. */
+  public double getY() {
+    return state.status().pose().y();
+  }
+
+  /** Global heading, degrees in (−180, 180]. */
+  public double getTh() {
+    return state.status().pose().th();
+  }
+
+  /** Odometry pose (corrected by a gyro if one is attached). */
+  public ArPose getEncoderPose() {
+    return state.status().encoderPose();
+  }
+
+  /** Odometry pose exactly as the wheels report it. */
+  public ArPose getRawEncoderPose() {
+    return state.status().rawEncoderPose();
+  }
+
+  /** Translational velocity, mm/s. */
+  public double getVel() {
+    return state.status().vel();
+  }
+
+  /** Rotational velocity, deg/s (+ counter-clockwise). */
+  public double getRotVel() {
+    return state.status().rotVel();
+  }
+
+  /** Left wheel velocity, mm/s. */
+  public double getLeftVel() {
+    return state.status().leftVel();
+  }
+
+  /** Right wheel velocity, mm/s. */
+  public double getRightVel() {
+    return state.status().rightVel();
+  }
+
+  /** Battery voltage, V. */
+  public double getBatteryVoltage() {
+    return state.status().batteryVoltage();
+  }
+
+  /** Battery voltage from the 16-bit field (for batteries above 25.5 V), V. */
+  public double getRealBatteryVoltage() {
+    return state.status().realBatteryVoltage();
+  }
+
+  /** The raw stall and bumper word: bit 0 left stall, bit 8 right stall, others bumpers. */
+  public int getStallValue() {
+    return state.status().stallValue();
+  }
+
+  /** Whether the left motor is stalled. */
+  public boolean isLeftMotorStalled() {
+    return (state.status().stallValue() & 0x1) != 0;
+  }
+
+  /** Whether the right motor is stalled. */
+  public boolean isRightMotorStalled() {
+    return (state.status().stallValue() & 0x100) != 0;
+  }
+
+  /**
+   * Front bumper bits: bits 9..15 of the stall word (the right motor's byte, as ARIA reads it),
+   * shifted down so that bumper 0 — the leftmost — is bit 0.
+   */
+  public int getFrontBumpers() {
+    return (state.status().stallValue() >> 9) & 0x7F;
+  }
+
+  /** Rear bumper bits: bits 1..7 of the stall word, shifted down so bumper 0 is bit 0. */
+  public int getRearBumpers() {
+    return (state.status().stallValue() >> 1) & 0x7F;
+  }
+
+  /** Heading setpoint relative to the current heading, degrees. */
+  public double getControl() {
+    return state.status().control();
+  }
+
+  /** The SIP flags word. */
+  public int getFlags() {
+    return state.status().flags();
+  }
+
+  /** Whether the motors are enabled. */
+  public boolean areMotorsEnabled() {
+    return (state.status().flags() & 0x1) != 0;
+  }
+
+  /** Whether any sonar array is enabled. */
+  public boolean areSonarsEnabled() {
+    return (state.status().flags() & 0x1E) != 0;
+  }
+
+  /** Whether the emergency stop button is pressed. */
+  public boolean isEStopPressed() {
+    return (state.status().flags() & 0x20) != 0;
+  }
+
+  /** Whether the robot says it is moving (SIP type 0x33). */
+  public boolean isMoving() {
+    return state.status().moving();
+  }
+
+  /** Compass heading, degrees (0 when there is no compass). */
+  public int getCompass() {
+    return state.status().compass();
+  }
+
+  /** The analog port selected with ADSEL. */
+  public int getAnalogPortSelected() {
+    return state.status().anPort();
+  }
+
+  /** The selected analog input, 0..255 for 0..5 V. */
+  public int getAnalog() {
+    return state.status().analog();
+  }
+
+  /** The digital inputs byte. */
+  public int getDigIn() {
+    return state.status().digIn();
+  }
+
+  /** The digital outputs byte. */
+  public int getDigOut() {
+    return state.status().digOut();
+  }
+
+  /** Gripper state bits (see {@link org.jaria.protocol.packets.GripState}). */
+  public int getGripState() {
+    return state.status().gripState();
+  }
+
+  /** Charge state: −1 unknown, 0 not charging, 1 bulk, 2 overcharge, 3 float. */
+  public int getChargeState() {
+    return state.status().chargeState();
+  }
+
+  /** Fault flags (0 when the firmware does not report them). */
+  public int getFaultFlags() {
+    return state.status().faultFlags();
+  }
+
+  /** Distance driven since connecting, mm. */
+  public double getOdometerDistance() {
+    return state.status().odometerDistance();
+  }
+
+  /** Degrees turned since connecting. */
+  public double getOdometerDegrees() {
+    return state.status().odometerDegrees();
   }
 
   /** Left encoder count from the last ENCODERpac (request them first). */
@@ -309,6 +806,400 @@ public non-sealed class ArRobot
     return n >= 0 && n < v.length ? v[n] : 0;
   }
 
+  // ---------------------------------------------------------------- sonar
+
+  /** Number of sonar transducers, from the robot's parameters. */
+  public int getNumSonar() {
+    return state.status().sonars().size();
+  }
+
+  /** Range of sonar {@code num}, mm; −1 if it never reported or does not exist. */
+  public int getSonarRange(int num) {
+    List<ArSensorReading> s = state.status().sonars();
+    return num >= 0 && num < s.size() ? s.get(num).range() : -1;
+  }
+
+  /** Whether sonar {@code num} reported in the SIP of the current cycle. */
+  public boolean isSonarNew(int num) {
+    List<ArSensorReading> s = state.status().sonars();
+    return num >= 0 && num < s.size() && s.get(num).counterTaken() == state.status().counter();
+  }
+
+  /** The latest reading of sonar {@code num}, or null if there is no such sonar. */
+  public ArSensorReading getSonarReading(int num) {
+    List<ArSensorReading> s = state.status().sonars();
+    return num >= 0 && num < s.size() ? s.get(num) : null;
+  }
+
+  /**
+   * The number of the sonar with the shortest range among those facing between {@code startAngle}
+   * and {@code endAngle} (counter-clockwise, degrees); −1 if none faces there.
+   */
+  public int getClosestSonarNumber(double startAngle, double endAngle) {
+    List<ArSensorReading> s = state.status().sonars();
+    int best = -1;
+    int bestRange = 0;
+    for (int i = 0; i < s.size(); i++) {
+      ArSensorReading r = s.get(i);
+      // Sonars that never reported (range -1) are not "closest" (ARIA would pick them).
+      if (r.range() >= 0
+          && angleBetween(r.sensorTh(), startAngle, endAngle)
+          && (best < 0 || r.range() < bestRange)) {
+        best = i;
+        bestRange = r.range();
+      }
+    }
+    return best;
+  }
+
+  /** The shortest range among sonars facing between the angles, mm; −1 if none. */
+  public int getClosestSonarRange(double startAngle, double endAngle) {
+    int n = getClosestSonarNumber(startAngle, endAngle);
+    return n < 0 ? -1 : getSonarRange(n);
+  }
+
+  /**
+   * Whether {@code angle} lies in the sector from {@code start} counter-clockwise to {@code end}.
+   */
+  static boolean angleBetween(double angle, double start, double end) {
+    angle = ArMath.fixAngle(angle);
+    start = ArMath.fixAngle(start);
+    end = ArMath.fixAngle(end);
+    if (start < end) {
+      return angle >= start && angle <= end;
+    }
+    return angle >= start || angle <= end;
+  }
+
+  // ---------------------------------------------------------------- geometry from parameters
+
+  /** Robot radius, mm (from the parameters). */
+  public double getRobotRadius() {
+    return state.params().getRobotRadius();
+  }
+
+  /** Robot width, mm. */
+  public double getRobotWidth() {
+    return state.params().getRobotWidth();
+  }
+
+  /** Robot length, mm. */
+  public double getRobotLength() {
+    return state.params().getRobotLength();
+  }
+
+  /** Distance from the centre of rotation to the front, mm. */
+  public double getRobotLengthFront() {
+    return state.params().getRobotLengthFront();
+  }
+
+  /** Distance from the centre of rotation to the rear, mm. */
+  public double getRobotLengthRear() {
+    return state.params().getRobotLengthRear();
+  }
+
+  // ---------------------------------------------------------------- motion commands
+
+  /** Drives at {@code mmPerSec} (negative backwards). */
+  public void setVel(double mmPerSec) {
+    motion.setVel(mmPerSec);
+  }
+
+  /** Drives each wheel at its own speed, mm/s (sent as VEL2, in Vel2Divisor steps). */
+  public void setVel2(double leftMmPerSec, double rightMmPerSec) {
+    motion.setVel2(leftMmPerSec, rightMmPerSec);
+  }
+
+  /** Turns at {@code degPerSec} (+ counter-clockwise). */
+  public void setRotVel(double degPerSec) {
+    motion.setRotVel(degPerSec);
+  }
+
+  /** Turns to the global heading {@code degrees}, the shorter way round. */
+  public void setHeading(double degrees) {
+    motion.setHeading(degrees);
+  }
+
+  /** Turns by {@code degrees} from the current heading (+ counter-clockwise). */
+  public void setDeltaHeading(double degrees) {
+    motion.setDeltaHeading(degrees);
+  }
+
+  /** Drives {@code mm} forward (negative backwards) and stops. */
+  public void move(double mm) {
+    motion.move(mm);
+  }
+
+  /** Whether the last {@link #move} is done, within the move-done distance (default 40 mm). */
+  public boolean isMoveDone() {
+    return motion.isMoveDone(0);
+  }
+
+  /** Whether the last {@link #move} is done within {@code delta} mm. */
+  public boolean isMoveDone(double delta) {
+    return motion.isMoveDone(delta);
+  }
+
+  /** Whether the last heading command is done, within the heading-done difference (3°). */
+  public boolean isHeadingDone() {
+    return motion.isHeadingDone(0);
+  }
+
+  /** Whether the last heading command is done within {@code delta} degrees. */
+  public boolean isHeadingDone(double delta) {
+    return motion.isHeadingDone(delta);
+  }
+
+  /** Sets the default tolerance of {@link #isMoveDone()}, mm. */
+  public void setMoveDoneDist(double mm) {
+    motion.setMoveDoneDist(mm);
+  }
+
+  /** The default tolerance of {@link #isMoveDone()}, mm. */
+  public double getMoveDoneDist() {
+    return motion.getMoveDoneDist();
+  }
+
+  /** Sets the default tolerance of {@link #isHeadingDone()}, degrees. */
+  public void setHeadingDoneDiff(double degrees) {
+    motion.setHeadingDoneDiff(degrees);
+  }
+
+  /** The default tolerance of {@link #isHeadingDone()}, degrees. */
+  public double getHeadingDoneDiff() {
+    return motion.getHeadingDoneDiff();
+  }
+
+  /** Stops translation and rotation now (STOP), and keeps asking for zero speed. */
+  public void stop() {
+    motion.stop();
+  }
+
+  /** Gives the wheels back to the actions: forgets the motion commands. */
+  public void clearDirectMotion() {
+    motion.clearDirectMotion();
+  }
+
+  /** Whether motion commands currently take precedence over actions. */
+  public boolean isDirectMotion() {
+    return motion.isDirectMotion();
+  }
+
+  /**
+   * How long a motion command keeps precedence over actions, ms; 0 (the default) means until {@link
+   * #clearDirectMotion()}.
+   */
+  public void setDirectMotionPrecedenceTime(long ms) {
+    motion.setDirectMotionPrecedenceTime(ms);
+  }
+
+  /** The direct-motion precedence time, ms (0 = until cleared). */
+  public long getDirectMotionPrecedenceTime() {
+    return motion.getDirectMotionPrecedenceTime();
+  }
+
+  /** How often unchanged motion commands are re-sent, ms (default 500). */
+  public void setStateReflectionRefreshTime(long ms) {
+    motion.setRefreshMillis(ms);
+  }
+
+  /** The state-reflection refresh time, ms. */
+  public long getStateReflectionRefreshTime() {
+    return motion.getRefreshMillis();
+  }
+
+  /** Whether the last cycle's commands asked the robot to move. */
+  public boolean isTryingToMove() {
+    return motion.isTryingToMove();
+  }
+
+  // ---------------------------------------------------------------- limits
+
+  /** Maximum translational velocity for motion commands and actions, mm/s. */
+  public boolean setTransVelMax(double mmPerSec) {
+    return motion.limits().setTransVelMax(mmPerSec);
+  }
+
+  /** The maximum translational velocity, mm/s. */
+  public double getTransVelMax() {
+    return motion.limits().getTransVelMax();
+  }
+
+  /** Maximum rotational velocity, deg/s. */
+  public boolean setRotVelMax(double degPerSec) {
+    return motion.limits().setRotVelMax(degPerSec);
+  }
+
+  /** The maximum rotational velocity, deg/s. */
+  public double getRotVelMax() {
+    return motion.limits().getRotVelMax();
+  }
+
+  /** Translational acceleration, mm/s². */
+  public void setTransAccel(double a) {
+    motion.limits().setTransAccel(a);
+  }
+
+  /** The translational acceleration, mm/s². */
+  public double getTransAccel() {
+    return motion.limits().getTransAccel();
+  }
+
+  /** Translational deceleration, mm/s². */
+  public void setTransDecel(double a) {
+    motion.limits().setTransDecel(a);
+  }
+
+  /** The translational deceleration, mm/s². */
+  public double getTransDecel() {
+    return motion.limits().getTransDecel();
+  }
+
+  /** Rotational acceleration, deg/s². */
+  public void setRotAccel(double a) {
+    motion.limits().setRotAccel(a);
+  }
+
+  /** The rotational acceleration, deg/s². */
+  public double getRotAccel() {
+    return motion.limits().getRotAccel();
+  }
+
+  /** Rotational deceleration, deg/s². */
+  public void setRotDecel(double a) {
+    motion.limits().setRotDecel(a);
+  }
+
+  /** The rotational deceleration, deg/s². */
+  public double getRotDecel() {
+    return motion.limits().getRotDecel();
+  }
+
+  /** The top translational velocity this robot allows, mm/s (from CONFIGpac or parameters). */
+  public double getAbsoluteMaxTransVel() {
+    return motion.limits().getAbsoluteMaxTransVel();
+  }
+
+  /** Lowers (or raises) the top translational velocity. */
+  public void setAbsoluteMaxTransVel(double mmPerSec) {
+    motion.limits().setAbsoluteMaxTransVel(mmPerSec);
+  }
+
+  /** The top rotational velocity this robot allows, deg/s. */
+  public double getAbsoluteMaxRotVel() {
+    return motion.limits().getAbsoluteMaxRotVel();
+  }
+
+  /** Lowers (or raises) the top rotational velocity. */
+  public void setAbsoluteMaxRotVel(double degPerSec) {
+    motion.limits().setAbsoluteMaxRotVel(degPerSec);
+  }
+
+  // ---------------------------------------------------------------- direct commands
+
+  /** Sends a command without argument now. */
+  public boolean com(int command) {
+    return sender.com(command);
+  }
+
+  /** Sends a command without argument now. */
+  public boolean com(ArCommands command) {
+    return sender.com(command.getNumber());
+  }
+
+  /** Sends a command with an integer argument now. */
+  public boolean comInt(int command, int argument) {
+    return sender.comInt(command, argument);
+  }
+
+  /** Sends a command with an integer argument now. */
+  public boolean comInt(ArCommands command, int argument) {
+    return sender.comInt(command.getNumber(), argument);
+  }
+
+  /** Sends a two-byte command (high, low) now. */
+  public boolean com2Bytes(int command, int high, int low) {
+    return sender.com2Bytes(command, high, low);
+  }
+
+  /** Sends a two-byte command (high, low) now. */
+  public boolean com2Bytes(ArCommands command, int high, int low) {
+    return sender.com2Bytes(command.getNumber(), high, low);
+  }
+
+  /** Sends a string command now. */
+  public boolean comStr(int command, String argument) {
+    return sender.comStr(command, argument);
+  }
+
+  /** Sends a string command now. */
+  public boolean comStr(ArCommands command, String argument) {
+    return sender.comStr(command.getNumber(), argument);
+  }
+
+  /**
+   * Sends a string command with exactly {@code size} bytes now (ARIA's {@code comStrN}): the string
+   * is cut or padded with NULs to {@code size}.
+   */
+  public boolean comStrN(int command, String argument, int size) {
+    return sender.comStrN(command, argument, size);
+  }
+
+  /** Sends a string command with exactly {@code size} bytes now. */
+  public boolean comStrN(ArCommands command, String argument, int size) {
+    return sender.comStrN(command.getNumber(), argument, size);
+  }
+
+  /** Sends a command whose string argument is raw bytes (SAY's note pairs, TTY2 data). */
+  public boolean comDataN(ArCommands command, byte[] data) {
+    return sender.comDataN(command.getNumber(), data, 0, data.length);
+  }
+
+  /** Sends a packet you built and finalized yourself. */
+  public boolean sendPacket(ArRobotPacket packet) {
+    return sender.sendPacket(packet);
+  }
+
+  /** Turns the motors on (ENABLE 1). */
+  public boolean enableMotors() {
+    return sender.comInt(ArCommands.ENABLE.getNumber(), 1);
+  }
+
+  /** Turns the motors off (ENABLE 0). */
+  public boolean disableMotors() {
+    return sender.comInt(ArCommands.ENABLE.getNumber(), 0);
+  }
+
+  /** Turns all sonar arrays on. */
+  public boolean enableSonar() {
+    return sender.comInt(ArCommands.SONAR.getNumber(), 1);
+  }
+
+  /** Turns all sonar arrays off. */
+  public boolean disableSonar() {
+    return sender.comInt(ArCommands.SONAR.getNumber(), 0);
+  }
+
+  /** Asks for a continuous stream of ENCODERpacs. */
+  public boolean requestEncoderPackets() {
+    return sender.comInt(ArCommands.ENCODER.getNumber(), 2);
+  }
+
+  /** Stops the ENCODERpac stream. */
+  public boolean stopEncoderPackets() {
+    return sender.comInt(ArCommands.ENCODER.getNumber(), 0);
+  }
+
+  /** Asks for a continuous stream of IOpacs. */
+  public boolean requestIOPackets() {
+    return sender.comInt(ArCommands.IOREQUEST.getNumber(), 2);
+  }
+
+  /** Stops the IOpac stream. */
+  public boolean stopIOPackets() {
+    return sender.comInt(ArCommands.IOREQUEST.getNumber(), 0);
+  }
+
   // ================================================================ pose transform
 
   /**
@@ -337,6 +1228,16 @@ public non-sealed class ArRobot
   /** The transform from odometry coordinates to global coordinates. */
   public ArTransform getEncoderTransform() {
     return state.encoderTransform();
+  }
+
+  /** The transform from the robot's local frame to global coordinates (at the current pose). */
+  public ArTransform getToGlobalTransform() {
+    return ArTransform.ofPose(getPose());
+  }
+
+  /** The transform from global coordinates to the robot's local frame. */
+  public ArTransform getToLocalTransform() {
+    return getToGlobalTransform().inverse();
   }
 
   // ================================================================ range devices
@@ -500,10 +1401,10 @@ public non-sealed class ArRobot
         java.util.Locale.ROOT,
         "%s: counter %d, last cycle %.2f ms, lock waits %d, overruns %d, %s",
         name,
-        cycle.counter(),
-        cycle.lastCycleNanos() / 1e6,
-        cycle.skipped(),
-        cycle.overruns(),
+        counter.get(),
+        lastCycleNanos / 1e6,
+        lockWarnings.get(),
+        overrunWarnings.get(),
         getDropCounters());
   }
 }
