@@ -1,12 +1,12 @@
 package org.jaria.arnl;
 
 import java.util.Objects;
-import org.jaria.action.LaserScanSource;
 import org.jaria.geom.ArPose;
 import org.jaria.laser.ArLaser;
 import org.jaria.map.ArMap;
 import org.jaria.params.ArRobotParams;
 import org.jaria.range.ArRangeDevice;
+import org.jaria.range.LaserScanSource;
 import org.jaria.robot.ArRobot;
 
 /**

@@ -1,12 +1,12 @@
 package org.jaria.arnl;
 
 import java.util.concurrent.TimeUnit;
-import org.jaria.action.LaserScan;
-import org.jaria.action.LaserScanSource;
 import org.jaria.arnl.mcl.LaserScans;
 import org.jaria.arnl.mcl.SonarScan;
 import org.jaria.geom.ArPose;
 import org.jaria.geom.ArTransform;
+import org.jaria.range.LaserScan;
+import org.jaria.range.LaserScanSource;
 import org.jaria.robot.ArRobot;
 
 /**
