@@ -12,7 +12,7 @@ import org.jaria.net.client.ArClientBase;
 import org.jaria.net.client.ClientOptions;
 import org.jaria.net.client.ConnectionListener;
 import org.jaria.net.server.ArServerBase;
-import org.jaria.net.server.Where;
+import org.jaria.net.server.info.VideoData;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -143,25 +143,8 @@ public final class ArHybridForwarderVideo implements AutoCloseable {
             forget(why);
           }
         });
-    server.addData(
-        "videoSize",
-        "gets the width and height of the video data",
-        "none",
-        "uByte2: width, uByte2: height",
-        "Video",
-        "RETURN_SINGLE",
-        Where.WORKER,
-        (c, request, reply) -> reply.dataToBuf(sendVideoSize()));
-    server.addData(
-        "sendVideo",
-        "gets video from the robot's camera (you should requestOnce this, you shouldn't request"
-            + " it, since you could easily fill the bandwidth that way)",
-        "uByte: quality (0 - 100)",
-        "out: uByte2: width, uByte2: height, (len - readLen)*uByte: jpegData",
-        "Video",
-        "RETURN_VIDEO",
-        Where.WORKER,
-        (c, request, reply) -> reply.dataToBuf(sendVideo(request)));
+    VideoData.addVideoSize(server, (c, request, reply) -> reply.dataToBuf(sendVideoSize()));
+    VideoData.addSendVideo(server, (c, request, reply) -> reply.dataToBuf(sendVideo(request)));
     synchronized (lock) {
       lastFrameNanos = clock.getAsLong();
       lastRequestNanos = lastFrameNanos;

@@ -37,26 +37,13 @@ public final class ArServerHandlerCamera {
         Where.WORKER,
         (client, request, reply) -> reply.strToBuf(source.getName()));
     // ArNetworking's video data (ArHybridForwarderVideo, getVideoExample): JPEG in one packet.
-    server.addData(
-        "sendVideo",
-        "gets video from the robot's camera (you should requestOnce this, you shouldn't request"
-            + " it, since you could easily fill the bandwidth that way)",
-        "uByte: quality (0 - 100)",
-        "out: uByte2: width, uByte2: height, (len - readLen)*uByte: jpegData",
-        "Video",
-        "RETURN_VIDEO",
-        Where.WORKER,
+    VideoData.addSendVideo(
+        server,
         (client, request, reply) ->
             AriaJpeg.write(
                 source.getLatestFrame(), request.hasMore() ? request.bufToUByte() : 75, reply));
-    server.addData(
-        "videoSize",
-        "gets the width and height of the video data",
-        "none",
-        "uByte2: width, uByte2: height",
-        "Video",
-        "RETURN_SINGLE",
-        Where.WORKER,
+    VideoData.addVideoSize(
+        server,
         (client, request, reply) -> {
           VideoFrame f = source.getLatestFrame();
           reply
