@@ -25,7 +25,6 @@ import java.util.function.Consumer;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.ArNetPacketException;
 import org.jaria.net.data.DataInfo;
-import org.jaria.net.protocol.LoginDigest;
 import org.jaria.net.protocol.NetError;
 import org.jaria.net.protocol.Protocol;
 import org.jaria.net.server.ArServerBase;
@@ -70,8 +69,7 @@ public final class ArClientBase implements AutoCloseable {
   private final Object sendLock = new Object();
 
   // Guarded by "this".
-  private final Map<Integer, DataInfo> byCommand = new LinkedHashMap<>();
-  private final Map<String, DataInfo> byName = new LinkedHashMap<>();
+  private final DataList dataList = new DataList();
   private final Map<Integer, Deque<CompletableFuture<ArNetPacket>>> waiting = new LinkedHashMap<>();
   private final Map<Integer, java.io.ByteArrayOutputStream> partial = new LinkedHashMap<>();
 
@@ -119,8 +117,7 @@ public final class ArClientBase implements AutoCloseable {
     if (old != null) {
       joinQuietly(old);
     }
-    byCommand.clear();
-    byName.clear();
+    dataList.clear();
     Socket s = new Socket();
     connecting = s;
     try {
@@ -132,7 +129,13 @@ public final class ArClientBase implements AutoCloseable {
       LoginDeadline deadline = new LoginDeadline(s, options.connectTimeout());
       DataInputStream in = new DataInputStream(new BufferedInputStream(deadline));
       OutputStream o = s.getOutputStream();
-      login(in, o, user == null ? "" : user, password == null ? "" : password);
+      ClientLogin.login(
+          in,
+          o,
+          user == null ? "" : user,
+          password == null ? "" : password,
+          options.serverKey(),
+          dataList);
       deadline.lift();
       socket = s;
       out = o;
@@ -162,6 +165,9 @@ public final class ArClientBase implements AutoCloseable {
               + " ("
               + e.getMessage()
               + "): is the server running there?");
+    } catch (ArClientException e) {
+      closeQuietly(s);
+      throw fail(e.getMessage());
     } catch (ArNetPacketException e) {
       closeQuietly(s);
       throw fail(host + ":" + port + " sent something that is not ArNetworking: " + e.getMessage());
@@ -169,11 +175,11 @@ public final class ArClientBase implements AutoCloseable {
       connecting = null;
     }
     for (Map.Entry<String, Long> r : requests.entrySet()) {
-      if (byName.containsKey(r.getKey())) {
+      if (dataList.contains(r.getKey())) {
         sendRequest(r.getKey(), r.getValue(), requestArgs.get(r.getKey()));
       }
     }
-    log.info("connected to {} as '{}' ({} data)", serverName, user, byName.size());
+    log.info("connected to {} as '{}' ({} data)", serverName, user, dataList.size());
     for (ConnectionListener l : listeners) {
       l.connected(this);
     }
@@ -184,122 +190,11 @@ public final class ArClientBase implements AutoCloseable {
     return new ArClientException(why);
   }
 
-  private void login(DataInputStream in, OutputStream o, String user, String password)
-      throws IOException, ArClientException {
-    ArNetPacket intro = readPacket(in);
-    if (intro.getCommand() != Protocol.SERVER_INTRODUCTION) {
-      throw fail("the server did not introduce itself (got command " + intro.getCommand() + ")");
-    }
-    intro.bufToStr(); // version
-    intro.bufToUByte2(); // its UDP port: we use TCP only
-    intro.bufToUByte4(); // auth key, for UDP
-    intro.bufToUByte4(); // intro key, for UDP
-    String passwordKey = intro.bufToStr();
-    ArNetPacket reply = new ArNetPacket(Protocol.CLIENT_INTRODUCTION);
-    reply
-        .uByte2ToBuf(0)
-        .strToBuf(user)
-        .dataToBuf(LoginDigest.digest(options.serverKey(), passwordKey, password))
-        .strToBuf(Protocol.JARIA_ACK_VERSION)
-        .byteToBuf(0);
-    o.write(reply.toWire());
-    o.write(new ArNetPacket(Protocol.CLIENT_TCP_ONLY).toWire());
-    o.flush();
-    int listed = -1;
-    int argRet = 0;
-    int groups = 0;
-    while (listed < 0 || argRet < listed || groups < listed) {
-      ArNetPacket p = readPacket(in);
-      switch (p.getCommand()) {
-        case Protocol.SERVER_REJECTED -> {
-          int reason = p.bufToByte2();
-          String text = p.hasMore() ? p.bufToStr() : "";
-          throw fail(rejection(reason, text));
-        }
-        case Protocol.SERVER_SHUTDOWN -> throw fail("the server closed the connection at login");
-        case Protocol.SERVER_LIST -> listed = Math.max(listed, 0) + buildList(p);
-        case Protocol.SERVER_LIST_ARGRET -> argRet += buildList(p);
-        case Protocol.SERVER_LIST_GROUP_AND_FLAGS -> groups += buildList(p);
-        default -> {
-          // CONNECTED, TCP_ONLY, UDP_CONFIRMATION: nothing to do.
-        }
-      }
-    }
-  }
-
-  /** What a REJECTED reason means, for people. */
-  static String rejection(int reason, String text) {
-    String why =
-        switch (reason) {
-          case Protocol.REJECTED_BAD_LOGIN -> "login refused: wrong user name or password";
-          case Protocol.REJECTED_CENTRAL_SERVER ->
-              "the robot is served by a central server at " + text;
-          case Protocol.REJECTED_SERVER_PROTOCOL -> "the server wants another protocol version";
-          case Protocol.REJECTED_TOO_MANY_CLIENTS -> "the server has its maximum of clients";
-          case Protocol.REJECTED_WRONG_TYPE -> "the server wants another type of client";
-          default -> "rejected (reason " + reason + ")";
-        };
-    return text.isEmpty() || reason == Protocol.REJECTED_CENTRAL_SERVER ? why : why + ": " + text;
-  }
-
-  /** Adds one list packet to the data list; returns how many entries it had. */
-  private synchronized int buildList(ArNetPacket p) {
-    int n = p.bufToUByte2();
-    for (int i = 0; i < n; i++) {
-      int cmd = p.bufToUByte2();
-      String a = p.bufToStr();
-      String b = p.bufToStr();
-      DataInfo d = byCommand.get(cmd);
-      switch (p.getCommand()) {
-        case Protocol.SERVER_LIST, Protocol.SERVER_LIST_SINGLE ->
-            d = new DataInfo(cmd, a, b, "", "", "", "");
-        case Protocol.SERVER_LIST_ARGRET, Protocol.SERVER_LIST_ARGRET_SINGLE -> {
-          if (d != null) {
-            d = d.withArgRet(a, b);
-          }
-        }
-        default -> {
-          if (d != null) {
-            d = d.withGroupAndFlags(a, b);
-          }
-        }
-      }
-      if (d != null) {
-        byCommand.put(cmd, d);
-        byName.put(d.name(), d);
-      }
-    }
-    return n;
-  }
-
-  private static ArNetPacket readPacket(DataInputStream in) throws IOException {
-    int s1 = in.readUnsignedByte();
-    int s2 = in.readUnsignedByte();
-    if (s1 != ArNetPacket.SYNC1 || s2 != ArNetPacket.SYNC2) {
-      throw new ArNetPacketException(
-          String.format("a packet starts with %02x %02x, not 0f 0c", s1, s2));
-    }
-    int lo = in.readUnsignedByte();
-    int hi = in.readUnsignedByte();
-    int len = lo | hi << 8;
-    if (len < ArNetPacket.HEADER_LENGTH + ArNetPacket.FOOTER_LENGTH
-        || len > ArNetPacket.MAX_LENGTH) {
-      throw new ArNetPacketException("a packet announced " + len + " bytes");
-    }
-    byte[] w = new byte[len];
-    w[0] = (byte) s1;
-    w[1] = (byte) s2;
-    w[2] = (byte) lo;
-    w[3] = (byte) hi;
-    in.readFully(w, 4, len - 4);
-    return ArNetPacket.fromWire(w, 0, len);
-  }
-
   private void readLoop(DataInputStream in) {
     String why = "the connection was closed";
     try {
       while (connected) {
-        ArNetPacket p = readPacket(in);
+        ArNetPacket p = ClientLogin.readPacket(in);
         if (!dispatch(p)) {
           why = "the server shut the connection down";
           break;
@@ -323,7 +218,7 @@ public final class ArClientBase implements AutoCloseable {
     }
     if (cmd < Protocol.FIRST_DATA_COMMAND) {
       if (cmd >= Protocol.SERVER_LIST && cmd <= Protocol.SERVER_LIST_GROUP_AND_FLAGS_SINGLE) {
-        buildList(p);
+        dataList.add(p);
       }
       return true;
     }
@@ -331,7 +226,7 @@ public final class ArClientBase implements AutoCloseable {
     CompletableFuture<ArNetPacket> f = null;
     ArNetPacket gathered = null;
     synchronized (this) {
-      d = byCommand.get(cmd);
+      d = dataList.get(cmd);
       if (d != null && d.name().equals("requestFailed")) {
         failRequest(p);
         return true;
@@ -391,7 +286,7 @@ public final class ArClientBase implements AutoCloseable {
     String name = p.bufToStr();
     String why = p.bufToStr();
     NetError code = p.hasMore() ? NetError.fromCode(p.bufToByte2()) : null;
-    DataInfo d = byName.get(name);
+    DataInfo d = dataList.get(name);
     if (d != null) {
       Deque<CompletableFuture<ArNetPacket>> q = waiting.get(d.id());
       CompletableFuture<ArNetPacket> f = q == null ? null : q.poll();
@@ -511,17 +406,17 @@ public final class ArClientBase implements AutoCloseable {
 
   /** The server's data list (what this user may use), in command order. */
   public synchronized List<DataInfo> getDataList() {
-    return List.copyOf(byCommand.values());
+    return dataList.list();
   }
 
   /** Whether the server offers data {@code name} (ArNetworking's {@code dataExists}). */
   public synchronized boolean dataExists(String name) {
-    return byName.containsKey(name);
+    return dataList.contains(name);
   }
 
   /** The command number of {@code name}, or 0 (ArNetworking's {@code findCommandFromName}). */
   public synchronized int findCommandFromName(String name) {
-    DataInfo d = byName.get(name);
+    DataInfo d = dataList.get(name);
     return d == null ? 0 : d.id();
   }
 
@@ -529,7 +424,7 @@ public final class ArClientBase implements AutoCloseable {
     if (!connected) {
       throw new ArClientException("not connected; connect() first");
     }
-    DataInfo d = byName.get(name);
+    DataInfo d = dataList.get(name);
     if (d == null) {
       throw new ArClientException("the server has no data '" + name + "'");
     }
