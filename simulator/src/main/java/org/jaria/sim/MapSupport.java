@@ -22,7 +22,9 @@ public final class MapSupport {
 
   private MapSupport() {}
 
-  /** A short name for a map's source: "office" for "bundled:office", "hall" for "/maps/hall.map". */
+  /**
+   * A short name for a map's source: "office" for "bundled:office", "hall" for "/maps/hall.map".
+   */
   static String shortName(String source) {
     String s = source == null || source.isBlank() ? "map" : source;
     s =

@@ -90,7 +90,8 @@ public final class SimWorld implements AutoCloseable, CameraScene {
     this.clock = clock;
     this.tick =
         new WorldTick(this, clock, options.tick().toNanos(), statics, geometry, serving, robots);
-    this.name = "world-" + WORLD_NUMBERS.incrementAndGet() + "-" + MapSupport.shortName(map.source());
+    this.name =
+        "world-" + WORLD_NUMBERS.incrementAndGet() + "-" + MapSupport.shortName(map.source());
     ServerOptions so = options.server();
     Path folder = so.mapFolder() != null ? so.mapFolder() : Path.of("");
     this.mapLoader =

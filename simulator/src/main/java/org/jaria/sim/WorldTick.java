@@ -7,8 +7,8 @@ import org.jaria.sim.world.WorldGeometry;
 /**
  * One tick of a world, in the order every tick runs: a map a client asked for is applied, new TCP
  * clients are attached, every session reads and executes what its client sent, every robot moves
- * and senses, every session sends what is due, and robot-factory robots whose client left are
- * taken out. Counts the ticks. Runs under the world's lock ({@link SimWorld#step()} holds it).
+ * and senses, every session sends what is due, and robot-factory robots whose client left are taken
+ * out. Counts the ticks. Runs under the world's lock ({@link SimWorld#step()} holds it).
  */
 final class WorldTick {
 

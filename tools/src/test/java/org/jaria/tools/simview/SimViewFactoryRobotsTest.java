@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
+import javafx.scene.control.ComboBox;
 import javafx.stage.Stage;
 import org.jaria.sim.RobotFactory;
 import org.jaria.sim.RobotOptions;
@@ -109,14 +110,17 @@ class SimViewFactoryRobotsTest {
       stepUntil(() -> factory.getRobotsMade() == 1, "the client gets a robot");
       name = "127.0.0.1:" + client.getLocalPort();
       assertEquals(List.of("resident", name), robotList());
-      FxRuntime.run(() -> fx.lookup("#robot").queryComboBox().getSelectionModel().select(1), 10);
+      FxRuntime.run(
+          () -> fx.lookup("#robot").<ComboBox<?>>query().getSelectionModel().select(1), 10);
     }
     stepUntil(() -> world.getRobots().size() == 1, "the client's robot leaves");
     assertEquals(List.of("resident"), robotList());
     assertEquals(
         "resident",
         FxRuntime.call(
-            () -> fx.lookup("#robot").queryComboBox().getSelectionModel().getSelectedItem(), 10)
+                () ->
+                    fx.lookup("#robot").<ComboBox<?>>query().getSelectionModel().getSelectedItem(),
+                10)
             .toString(),
         "the selection falls back to a robot that is there");
     assertFalse(robotList().contains(name));
