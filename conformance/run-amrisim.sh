@@ -101,8 +101,11 @@ start_amrisim() {
 stop_amrisim() {
   stop_pid "$amripid"
   amripid=""
-  # the next AMRISim asks for the port after this one's: this one's may be in TIME_WAIT
-  port=$((amriport + 1))
+  # The next AMRISim asks for the port after the last one this one reported (it moves its robot
+  # after each session): the ports it used may still be in TIME_WAIT.
+  local last
+  last=$(amrisim_port "$1")
+  port=$((${last:-$amriport} + 1))
 }
 
 start_xvfb
@@ -113,12 +116,12 @@ for what in wander goto; do
     timeout 60 $jaria demo "$what" --remote "127.0.0.1:$amriport" --seconds 15 \
       >"$out/jaria-$what.log" 2>&1
     echo "jaria demo $what: exit $? ($(tail -n 2 "$out/jaria-$what.log" | tr '\n' ' '))"
-    stop_amrisim
+    stop_amrisim "$what"
   fi
 done
 if start_amrisim laser; then
   timeout 60 java -cp "$cp" "$here/LaserProbe.java" 127.0.0.1 "$amriport" \
     >"$out/jaria-laser.log" 2>&1
   echo "LaserProbe: exit $? ($(tr '\n' ' ' <"$out/jaria-laser.log"))"
-  stop_amrisim
+  stop_amrisim laser
 fi
