@@ -22,6 +22,17 @@ public final class MapSupport {
 
   private MapSupport() {}
 
+  /**
+   * A short name for a map's source: "office" for "bundled:office", "hall" for "/maps/hall.map".
+   */
+  static String shortName(String source) {
+    String s = source == null || source.isBlank() ? "map" : source;
+    s =
+        s.substring(
+            Math.max(s.lastIndexOf('/'), Math.max(s.lastIndexOf('\\'), s.lastIndexOf(':'))) + 1);
+    return s.endsWith(".map") ? s.substring(0, s.length() - 4) : s;
+  }
+
   /** The physical content of {@code map}. */
   public static WorldMap fromArMap(ArMap map, String source) {
     List<ArLineSegment> lines = map.getLines();

@@ -57,7 +57,6 @@ public final class SimWorld implements AutoCloseable, CameraScene {
   private final SimOptions options;
   private final String name;
   private final VirtualClock clock;
-  private final long tickNanos;
   private final WorldGeometry geometry = new WorldGeometry();
   private final WorldStatics statics;
   private final List<Runnable> stepListeners = new CopyOnWriteArrayList<>();
@@ -69,17 +68,17 @@ public final class SimWorld implements AutoCloseable, CameraScene {
           });
   private final IgnoredCommandLog ignored = new IgnoredCommandLog();
   private final WorldHost host = new WorldHost(this);
-  // The world's jobs besides stepping: map and obstacles, ground-truth queries, and the outside
-  // (TCP ports, real-time thread). This class holds the lock and the public API over them.
+  // The world's jobs: map and obstacles, ground-truth queries, the outside (TCP ports, real-time
+  // thread), the robots, and the tick. This class holds the lock and the public API over them.
   private final WorldObstacles obstacles;
   private final WorldQueries queries;
   private final WorldServing serving = new WorldServing(lock);
   private final WorldRobots robots;
+  private final WorldTick tick;
   private final ClientMapLoader mapLoader;
   private final CommandPolicy commandPolicy;
   private volatile IntConsumer exitHandler =
       code -> log.warn("a client asked the simulator to exit with code {}; no exit handler", code);
-  private long steps;
   private boolean closed;
 
   private SimWorld(WorldMap map, SimOptions options, VirtualClock clock) {
@@ -89,8 +88,10 @@ public final class SimWorld implements AutoCloseable, CameraScene {
     this.robots = new WorldRobots(this, statics, geometry, serving);
     this.options = options;
     this.clock = clock;
-    this.tickNanos = options.tick().toNanos();
-    this.name = "world-" + WORLD_NUMBERS.incrementAndGet() + "-" + shortName(map.source());
+    this.tick =
+        new WorldTick(this, clock, options.tick().toNanos(), statics, geometry, serving, robots);
+    this.name =
+        "world-" + WORLD_NUMBERS.incrementAndGet() + "-" + MapSupport.shortName(map.source());
     ServerOptions so = options.server();
     Path folder = so.mapFolder() != null ? so.mapFolder() : Path.of("");
     this.mapLoader =
@@ -98,15 +99,6 @@ public final class SimWorld implements AutoCloseable, CameraScene {
             new ClientMapFolder(folder, so.maxMapBytes())::read, "jaria-sim-maps-" + this.name);
     this.commandPolicy =
         new CommandPolicy(so.ignoredCommands(), so.remoteExit(), so.mapFolder() != null);
-  }
-
-  /** "office" for "bundled:office", "hall" for "/maps/hall.map". */
-  private static String shortName(String source) {
-    String s = source == null || source.isBlank() ? "map" : source;
-    s =
-        s.substring(
-            Math.max(s.lastIndexOf('/'), Math.max(s.lastIndexOf('\\'), s.lastIndexOf(':'))) + 1);
-    return s.endsWith(".map") ? s.substring(0, s.length() - 4) : s;
   }
 
   /**
@@ -267,7 +259,7 @@ public final class SimWorld implements AutoCloseable, CameraScene {
     try {
       serving.checkMayStep();
       requireOpen();
-      stepLocked();
+      tick.run();
     } finally {
       lock.unlock();
     }
@@ -278,8 +270,7 @@ public final class SimWorld implements AutoCloseable, CameraScene {
 
   /** Advances the world by {@code d} (rounded up to whole ticks). */
   public void advance(Duration d) {
-    long n = (d.toNanos() + tickNanos - 1) / tickNanos;
-    for (long i = 0; i < n; i++) {
+    for (long i = tick.ticksFor(d.toNanos()); i > 0; i--) {
       step();
     }
   }
@@ -287,35 +278,6 @@ public final class SimWorld implements AutoCloseable, CameraScene {
   /** Advances the world by {@code ms} milliseconds. */
   public void advanceMillis(long ms) {
     advance(Duration.ofMillis(ms));
-  }
-
-  private void stepLocked() {
-    long now = clock.nanoTime();
-    ClientMapLoader.Result loaded = mapLoader.poll();
-    if (loaded != null) {
-      host.mapLoadFinished(loaded);
-    }
-    statics.rebuild();
-    serving.acceptPending(clock, host, robots);
-    List<RobotSlot> slots = robots.slots();
-    for (RobotSlot s : slots) {
-      s.poll(now);
-      if (closed) {
-        return;
-      }
-    }
-    long after = now + tickNanos;
-    double dt = tickNanos / 1e9;
-    geometry.indexRobots(robots.maxSpeed() * dt + 1);
-    for (RobotSlot s : slots) {
-      s.body.physics(dt, geometry, after);
-    }
-    clock.advanceTo(after);
-    for (RobotSlot s : slots) {
-      s.afterPhysics(after);
-    }
-    robots.removeOrphans();
-    steps++;
   }
 
   /** Calls {@code r} after every tick (on the stepping thread, outside the world's lock). */
@@ -345,7 +307,7 @@ public final class SimWorld implements AutoCloseable, CameraScene {
 
   /** Ticks run so far. */
   public long getStepCount() {
-    return locked(() -> steps);
+    return locked(tick::steps);
   }
 
   /** The options the world was made with. */
@@ -394,7 +356,7 @@ public final class SimWorld implements AutoCloseable, CameraScene {
     lock.lock();
     try {
       requireOpen();
-      serving.startRealTime(this, tickNanos, speedup);
+      serving.startRealTime(this, options.tick().toNanos(), speedup);
     } finally {
       lock.unlock();
     }
@@ -594,6 +556,10 @@ public final class SimWorld implements AutoCloseable, CameraScene {
     } finally {
       lock.unlock();
     }
+  }
+
+  boolean isClosed() {
+    return closed;
   }
 
   void requireOpen() {

@@ -406,16 +406,7 @@ public final class SimCommand implements Callable<Integer> {
             stop.countDown();
           });
       world.listen();
-      for (RobotFactory f : world.getRobotFactories()) {
-        out.printf(
-            "robot factory for %s listening on TCP port %d (a new robot for each client)%n",
-            f.getModel(), f.getPort());
-      }
-      for (SimRobot r : world.getRobots()) {
-        out.printf(
-            "robot %s (%s) listening on TCP port %d%n",
-            r.getName(), r.getModel().getSubtype(), r.getPort());
-      }
+      printListening(world, out);
       out.printf(
           "map %s, %s; %s%n",
           map != null ? map : (mobileSim.noMap ? "none (empty world)" : "office"),
@@ -450,6 +441,23 @@ public final class SimCommand implements Callable<Integer> {
       out.flush();
     }
     return exitCode.get();
+  }
+
+  /**
+   * One line per robot factory and per robot saying on which TCP port it listens (after {@link
+   * SimWorld#listen()}), so that a script can find the ports.
+   */
+  public static void printListening(SimWorld world, PrintWriter out) {
+    for (RobotFactory f : world.getRobotFactories()) {
+      out.printf(
+          "robot factory for %s listening on TCP port %d (a new robot for each client)%n",
+          f.getModel(), f.getPort());
+    }
+    for (SimRobot r : world.getRobots()) {
+      out.printf(
+          "robot %s (%s) listening on TCP port %d%n",
+          r.getName(), r.getModel().getSubtype(), r.getPort());
+    }
   }
 
   /**

@@ -2,8 +2,10 @@ package org.jaria.tools.simview;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
 import javafx.scene.Cursor;
@@ -64,6 +66,9 @@ final class SimCanvas extends Region {
   private ColoredObject dragObject;
   private Consumer<String> status = s -> {};
   private Runnable changed = () -> {};
+  // Told when robots arrive or leave (a robot factory's robot lives as long as its client).
+  private Consumer<List<SimSnapshot.RobotView>> robotsChanged = r -> {};
+  private Set<Integer> shownRobots = Set.of();
 
   private boolean panning;
   private double lastX;
@@ -139,6 +144,16 @@ final class SimCanvas extends Region {
     changed = r;
   }
 
+  /**
+   * Calls {@code r} with the robots of the newest snapshot whenever robots arrived or left since
+   * the one before (on the JavaFX thread), and once now with the robots there are.
+   */
+  void setRobotsListener(Consumer<List<SimSnapshot.RobotView>> r) {
+    robotsChanged = r;
+    shownRobots = robotNumbers(snapshot);
+    r.accept(snapshot.robots());
+  }
+
   /** Zooms so the map and the robots fit. */
   void fit() {
     fitTo(null);
@@ -210,7 +225,31 @@ final class SimCanvas extends Region {
   void refresh() {
     snapshot = aligned(controller.world().snapshot());
     objects = controller.world().coloredObjects().list();
+    Set<Integer> live = robotNumbers(snapshot);
+    if (!live.equals(shownRobots)) {
+      shownRobots = live;
+      robotsChanged.accept(snapshot.robots());
+    }
     paint();
+  }
+
+  private static Set<Integer> robotNumbers(SimSnapshot s) {
+    Set<Integer> numbers = new HashSet<>();
+    for (SimSnapshot.RobotView r : s.robots()) {
+      numbers.add(r.index());
+    }
+    return numbers;
+  }
+
+  /**
+   * The robot numbers the view keeps something for (odometry alignment, last view, camera): only
+   * robots in the last snapshot, so robots that come and go leave nothing behind.
+   */
+  Set<Integer> rememberedRobots() {
+    Set<Integer> all = new HashSet<>(odometryToWorld.keySet());
+    all.addAll(lastViews.keySet());
+    all.addAll(cameras.keySet());
+    return all;
   }
 
   /**
@@ -265,6 +304,11 @@ final class SimCanvas extends Region {
               r.clientConnected(),
               r.sessionOpen()));
     }
+    // Robot numbers are never reused: what is kept for a robot that left is never needed again.
+    Set<Integer> live = robotNumbers(s);
+    lastViews.keySet().retainAll(live);
+    odometryToWorld.keySet().retainAll(live);
+    cameras.keySet().retainAll(live);
     return new SimSnapshot(s.simTimeNanos(), out, s.obstacles());
   }
 

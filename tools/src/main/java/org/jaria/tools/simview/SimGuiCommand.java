@@ -3,7 +3,6 @@ package org.jaria.tools.simview;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.util.concurrent.Callable;
-import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
 import org.jaria.sim.cli.SimCommand;
 import picocli.CommandLine.Command;
@@ -44,23 +43,39 @@ public final class SimGuiCommand implements Callable<Integer> {
     PrintWriter out = spec.commandLine().getOut();
     PrintWriter err = spec.commandLine().getErr();
     sim.noteDeprecatedOptions(err);
-    SimWorld world = sim.createWorld();
+    SimWorld world;
     try {
-      world.listen();
-      for (SimRobot r : world.getRobots()) {
-        out.printf(
-            "robot %s (%s) listening on TCP port %d%n",
-            r.getName(), r.getModel().getSubtype(), r.getPort());
-      }
-      out.println("close the window to stop the simulator");
-      out.flush();
-      return SimViewCommand.showUntilClosed(world, speedup(), err);
+      world = openAndAnnounce(out);
     } catch (IOException e) {
       err.println("sim: " + e.getMessage());
       return 1;
+    }
+    try {
+      out.println("close the window to stop the simulator");
+      out.flush();
+      return SimViewCommand.showUntilClosed(world, speedup(), err);
     } finally {
       world.close();
     }
+  }
+
+  /**
+   * Builds the world the options describe, opens its ports and says on {@code out} where each robot
+   * factory and robot listens, one line each as {@code jaria sim} without a window does.
+   *
+   * @throws IOException if the map cannot be read or a port is in use (the world is then closed)
+   */
+  SimWorld openAndAnnounce(PrintWriter out) throws IOException {
+    SimWorld world = sim.createWorld();
+    try {
+      world.listen();
+    } catch (IOException e) {
+      world.close();
+      throw e;
+    }
+    SimCommand.printListening(world, out);
+    out.flush();
+    return world;
   }
 
   /** The pacing the options ask for: 0 for --unthrottled, else --speedup (default 1). */

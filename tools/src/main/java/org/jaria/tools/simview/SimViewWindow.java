@@ -79,7 +79,7 @@ public final class SimViewWindow implements DesktopApp {
   private final ToggleButton run = new ToggleButton("Run");
   private final Button step = new Button("Step");
   private final ComboBox<String> speed = new ComboBox<>();
-  private final ComboBox<String> robot = new ComboBox<>();
+  private final ComboBox<RobotChoice> robot = new ComboBox<>();
   private final Label status = new Label("");
   private final Label clock = new Label("");
   private final CompletableFuture<Void> ready = new CompletableFuture<>();
@@ -152,12 +152,8 @@ public final class SimViewWindow implements DesktopApp {
     speed.getSelectionModel().select(initial);
     speed.setOnAction(e -> controller.setSpeedup(speeds.get(speed.getValue())));
     robot.setId("robot");
-    for (SimRobot r : world.getRobots()) {
-      robot.getItems().add(r.getName());
-    }
-    robot.getSelectionModel().select(0);
-    robot.setOnAction(
-        e -> canvas.setRobotIndex(Math.max(0, robot.getSelectionModel().getSelectedIndex())));
+    robot.setOnAction(e -> canvas.setRobotIndex(selectedRobot()));
+    canvas.setRobotsListener(this::showRobots);
 
     ToggleGroup tools = new ToggleGroup();
     ToggleButton move =
@@ -202,6 +198,49 @@ public final class SimViewWindow implements DesktopApp {
     stage.setScene(new Scene(root));
     stage.setTitle("JAria simulator — " + world.getMap().source());
     WindowState.remember(stage, prefs, "window", 1200, 800);
+  }
+
+  /** A robot in the Robot list: its number in the world, shown by its name. */
+  record RobotChoice(int number, String name) {
+    @Override
+    public String toString() {
+      return name;
+    }
+  }
+
+  /**
+   * Lists {@code robots} in the Robot list, keeping the selected robot if it is still there (else
+   * the first): robots come and go while the world runs (a robot factory's robot lives as long as
+   * its client).
+   */
+  private void showRobots(List<SimSnapshot.RobotView> robots) {
+    int selected = selectedRobot();
+    List<RobotChoice> choices = new ArrayList<>(robots.size());
+    RobotChoice keep = null;
+    for (SimSnapshot.RobotView r : robots) {
+      RobotChoice c = new RobotChoice(r.index(), r.name());
+      choices.add(c);
+      if (r.index() == selected) {
+        keep = c;
+      }
+    }
+    robot.getItems().setAll(choices);
+    if (keep == null && !choices.isEmpty()) {
+      keep = choices.get(0);
+    }
+    robot.getSelectionModel().select(keep);
+    canvas.setRobotIndex(selectedRobot());
+  }
+
+  /** The number of the robot selected in the Robot list, or -1 if there is none. */
+  private int selectedRobot() {
+    RobotChoice c = robot.getSelectionModel().getSelectedItem();
+    return c == null ? -1 : c.number();
+  }
+
+  /** The robots in the Robot list, in its order. */
+  List<RobotChoice> robotChoices() {
+    return List.copyOf(robot.getItems());
   }
 
   private ToggleButton toolButton(
@@ -419,10 +458,17 @@ public final class SimViewWindow implements DesktopApp {
    * in this world, with EZ-Train's ACTS server running, so a program driving the robot here can
    * track the colours being trained. The view draws that camera's field of view.
    *
-   * @return the EZ-Train window
+   * @return the EZ-Train window, or null if there is no robot (the user is told so)
    */
   public EzTrainWindow openEzTrain() {
-    int index = Math.max(0, robot.getSelectionModel().getSelectedIndex());
+    int index = selectedRobot();
+    if (index < 0) {
+      prompts.error(
+          "Cannot open EZ-Train",
+          "There is no robot in the world to train on: add one, or connect a client to a robot"
+              + " factory.");
+      return null;
+    }
     SimRobot r = controller.world().getRobot(index);
     Stage s = new Stage();
     EzTrainWindow ez =

@@ -5,6 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.util.List;
+import org.jaria.sim.RobotFactory;
+import org.jaria.sim.SimWorld;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
 
@@ -37,6 +40,24 @@ class SimGuiCommandTest {
     SimGuiCommand d = new SimGuiCommand();
     new CommandLine(d).parseArgs();
     assertEquals(1, d.speedup());
+  }
+
+  @Test
+  void withARobotFactoryItSaysWhereTheFactoryListensAsTheHeadlessCommandDoes() throws Exception {
+    SimGuiCommand c = new SimGuiCommand();
+    new CommandLine(c).parseArgs("--gui", "-R", "p3at-sh", "-r", "p3dx-sh:first", "-p", "0");
+    StringWriter out = new StringWriter();
+    try (SimWorld w = c.openAndAnnounce(new PrintWriter(out))) {
+      RobotFactory f = w.getRobotFactories().get(0);
+      assertTrue(f.getPort() > 0, "the factory's port is open");
+      assertEquals(
+          List.of(
+              "robot factory for p3at-sh listening on TCP port "
+                  + f.getPort()
+                  + " (a new robot for each client)",
+              "robot first (p3dx-sh) listening on TCP port " + w.getRobot(0).getPort()),
+          out.toString().lines().toList());
+    }
   }
 
   @Test
