@@ -201,4 +201,36 @@ class OdometryAndDeterminismTest {
     assertArrayEquals(runs[0], runs[1]);
     assertFalse(Arrays.equals(runs[0], runs[2]), "another seed gives other noise");
   }
+
+  @Test
+  void theHeadingCounterWrapsAt4096UnitsSoARobotUnwrapsTurnsExactly() {
+    // A turn is 4107 units of the parameter file's AngleConvFactor (0.00153), but ARCOS's THPOS
+    // wraps at 4096 and ARIA unwraps it so: a counter taken from the wrapped heading jumped by
+    // 4107 units at each crossing of ±180°, and the robot's heading lost 0.94° there.
+    try (SimWorld w = SimWorld.empty(opts(OdometryError.NONE, 1))) {
+      SimRobot r = w.addRobot(RobotOptions.of("p3dx-sh").withStartPose(new ArPose(0, 0, 150)));
+      ArcosTestClient c = new ArcosTestClient(w, r).autoPulse(500).open();
+      double conv = r.getModel().getAngleConvFactor();
+      c.comInt(ArCommands.RVEL, 60);
+      int last = c.lastSip().getThPos();
+      double lastTrue = r.getTruePose().th();
+      double unwrapped = 0;
+      double turned = 0;
+      for (int step = 0; step < 140; step++) {
+        if (step == 130) {
+          // Stop, so that the last SIP and the true pose describe the same heading.
+          c.comInt(ArCommands.RVEL, 0);
+        }
+        w.advanceMillis(100);
+        int th = c.lastSip().getThPos();
+        // As ARIA: the difference of two THPOS values, taken modulo 4096 units.
+        unwrapped += Math.toDegrees(conv * (Math.floorMod(th - last + 2048, 4096) - 2048));
+        last = th;
+        turned += ArMath.subAngle(r.getTruePose().th(), lastTrue);
+        lastTrue = r.getTruePose().th();
+      }
+      assertTrue(turned > 720, "turned " + turned + " degrees, crossing +-180 at least twice");
+      assertEquals(turned, unwrapped, 0.1, "the robot's unwrapped heading follows the turns");
+    }
+  }
 }

@@ -33,6 +33,13 @@ public final class Odometry {
   private double x;
   private double y;
   private double th;
+
+  /**
+   * The heading without wrapping, degrees: the robot's heading counter (THPOS) counts angle units
+   * round and round, so it must come from this, not from {@link #th} (see {@link #getThUnits}).
+   */
+  private double turned;
+
   private double encLeft;
   private double encRight;
   private double lastMeasured;
@@ -62,6 +69,7 @@ public final class Odometry {
     x = px;
     y = py;
     th = ArMath.fixAngle(thDeg);
+    turned = th;
   }
 
   /**
@@ -95,6 +103,7 @@ public final class Odometry {
     x += dsOdo * Math.cos(mid);
     y += dsOdo * Math.sin(mid);
     th = ArMath.fixAngle(th + Math.toDegrees(dthOdo));
+    turned += Math.toDegrees(dthOdo);
     lastMeasured = dsOdo;
   }
 
@@ -116,6 +125,20 @@ public final class Odometry {
   /** Odometry heading, degrees (−180, 180]. */
   public double getTh() {
     return th;
+  }
+
+  /**
+   * The heading as the SIP's THPOS carries it: a counter of {@code radPerUnit} angle units that
+   * wraps at 4096 (as ARCOS's does, and as ARIA unwraps it), in −2048..2047.
+   *
+   * <p>Why not {@code round(th / radPerUnit)}: with a parameter file's {@code AngleConvFactor} of
+   * 0.00153 a turn is 4107 units, not 4096, so a heading that jumps from +180° to −180° jumps by
+   * 4107 units and a robot unwrapping modulo 4096 lost 11 units (0.94°) at every crossing of ±180°.
+   * Counting units from the unwrapped heading keeps every difference of two SIPs exact.
+   */
+  public int getThUnits(double radPerUnit) {
+    long units = Math.round(Math.toRadians(turned) / radPerUnit);
+    return (int) (Math.floorMod(units + 2048, 4096L) - 2048);
   }
 
   /** Left encoder count. */

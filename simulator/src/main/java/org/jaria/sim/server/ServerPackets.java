@@ -81,18 +81,21 @@ public final class ServerPackets {
     double w = mc.getRotVel();
     double half = Math.toRadians(w) * m.getTrackWidth() / 2;
     sip.setMoving(Math.abs(v) >= 0.5 || Math.abs(w) >= 0.05);
+    // THPOS counts angle units round and round (Odometry.getThUnits says why not from the heading).
+    int thUnits = o.getThUnits(m.getAngleConvFactor());
     sip.setPos(
         (int) Math.round(o.getX() / m.getDistConvFactor()),
         (int) Math.round(o.getY() / m.getDistConvFactor()),
-        (int) Math.round(Math.toRadians(o.getTh()) / m.getAngleConvFactor()));
+        thUnits);
     sip.setWheelVels(
         (int) Math.round((v - half) / m.getVelConvFactor()),
         (int) Math.round((v + half) / m.getVelConvFactor()));
     sip.setBattery(Math.min(255, io.getBattery()));
     sip.setStallAndBumpers(b.takeLatchedStallBits());
-    // The heading setpoint travels in angle units like THPOS (ARIA reads it that way).
-    sip.setControl(
-        (int) Math.round(Math.toRadians(mc.getControlHeading(o.getTh())) / m.getAngleConvFactor()));
+    // The heading setpoint travels in angle units like THPOS (ARIA reads it that way), counted
+    // from THPOS so that the difference ARIA takes is the angle whatever the wrap.
+    double toControl = ArMath.subAngle(mc.getControlHeading(o.getTh()), o.getTh());
+    sip.setControl(thUnits + (int) Math.round(Math.toRadians(toControl) / m.getAngleConvFactor()));
     int flags = mc.areMotorsEnabled() ? 1 : 0;
     flags |= b.sonar().getEnabledArrays() << 1;
     sip.setFlags(flags);
