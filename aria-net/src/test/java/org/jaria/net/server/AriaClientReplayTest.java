@@ -143,18 +143,7 @@ class AriaClientReplayTest {
     assertEquals(
         List.of("Robot cycle (ms)", "Network clients", "Localization score"),
         org.jaria.net.data.InfoStrings.readLabels(infoThen));
-    org.jaria.net.provider.VideoSource camera =
-        new org.jaria.net.provider.VideoSource() {
-          @Override
-          public String getName() {
-            return "Camera";
-          }
-
-          @Override
-          public org.jaria.net.data.VideoFrame getLatestFrame() {
-            return null;
-          }
-        };
+    org.jaria.net.provider.VideoSource camera = namedCamera(null);
     try (GuiRig rig = GuiRig.arnl(b -> b.video(camera));
         RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
       ArServerBase s = rig.gui.getServer();
@@ -183,18 +172,7 @@ class AriaClientReplayTest {
         List.of(2, 4, 284, 261, 260, 129, 129, 129),
         asSent.stream().map(ArNetPacket::getCommand).toList());
     // The demo guiServer it talked to: localization, planning and a camera.
-    org.jaria.net.provider.VideoSource camera =
-        new org.jaria.net.provider.VideoSource() {
-          @Override
-          public String getName() {
-            return "Camera";
-          }
-
-          @Override
-          public org.jaria.net.data.VideoFrame getLatestFrame() {
-            return null;
-          }
-        };
+    org.jaria.net.provider.VideoSource camera = namedCamera(null);
     try (GuiRig rig = GuiRig.arnl(b -> b.video(camera));
         RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
       ArServerBase s = rig.gui.getServer();
@@ -239,18 +217,7 @@ class AriaClientReplayTest {
     org.jaria.net.data.VideoFrame frame =
         new org.jaria.net.data.VideoFrame(
             1, org.jaria.net.data.VideoFrame.Format.RGB, 160, 120, rgb);
-    org.jaria.net.provider.VideoSource camera =
-        new org.jaria.net.provider.VideoSource() {
-          @Override
-          public String getName() {
-            return "Camera";
-          }
-
-          @Override
-          public org.jaria.net.data.VideoFrame getLatestFrame() {
-            return frame;
-          }
-        };
+    org.jaria.net.provider.VideoSource camera = namedCamera(frame);
     try (GuiRig rig = GuiRig.arnl(b -> b.video(camera));
         RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
       assertEquals(277, rig.gui.getServer().findCommandFromName("sendVideo"));
@@ -329,18 +296,7 @@ class AriaClientReplayTest {
         org.jaria.net.data.ConfigDefaultsLayout.read(defaultsThen.toReader())
             .get("Localization")
             .get("NumSamples"));
-    org.jaria.net.provider.VideoSource camera =
-        new org.jaria.net.provider.VideoSource() {
-          @Override
-          public String getName() {
-            return "Camera";
-          }
-
-          @Override
-          public org.jaria.net.data.VideoFrame getLatestFrame() {
-            return null;
-          }
-        };
+    org.jaria.net.provider.VideoSource camera = namedCamera(null);
     try (GuiRig rig = GuiRig.arnl(b -> b.video(camera));
         RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
       ArServerBase s = rig.gui.getServer();
@@ -355,5 +311,24 @@ class AriaClientReplayTest {
       assertEquals("2000", got.get("Localization").get("NumSamples"));
       assertTrue(got.keySet().containsAll(List.of("Localization")), got.keySet().toString());
     }
+  }
+
+  /**
+   * A camera named "Camera" showing {@code frame} (null: no picture yet). The demo guiServer the
+   * recordings talked to had one, and its video data take part in the data numbers.
+   */
+  private static org.jaria.net.provider.VideoSource namedCamera(
+      org.jaria.net.data.VideoFrame frame) {
+    return new org.jaria.net.provider.VideoSource() {
+      @Override
+      public String getName() {
+        return "Camera";
+      }
+
+      @Override
+      public org.jaria.net.data.VideoFrame getLatestFrame() {
+        return frame;
+      }
+    };
   }
 }
