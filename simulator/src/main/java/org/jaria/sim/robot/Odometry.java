@@ -32,11 +32,11 @@ public final class Odometry {
 
   private double x;
   private double y;
-  private double th;
 
   /**
-   * The heading without wrapping, degrees: the robot's heading counter (THPOS) counts angle units
-   * round and round, so it must come from this, not from {@link #th} (see {@link #getThUnits}).
+   * The heading without wrapping, degrees. The wrapped heading ({@link #getTh}) is derived from it,
+   * and so is the heading counter (THPOS), which counts angle units round and round (see {@link
+   * #getThUnits}).
    */
   private double turned;
 
@@ -68,8 +68,7 @@ public final class Odometry {
   public void setPose(double px, double py, double thDeg) {
     x = px;
     y = py;
-    th = ArMath.fixAngle(thDeg);
-    turned = th;
+    turned = ArMath.fixAngle(thDeg);
   }
 
   /**
@@ -99,10 +98,9 @@ public final class Odometry {
     encRight += right * TICKS_PER_MM;
     double dsOdo = (left + right) / 2 * TICKS_PER_MM / ticksMmSetting;
     double dthOdo = (right - left) * TICKS_PER_MM * Math.PI / revCountSetting;
-    double mid = Math.toRadians(th) + dthOdo / 2;
+    double mid = Math.toRadians(getTh()) + dthOdo / 2;
     x += dsOdo * Math.cos(mid);
     y += dsOdo * Math.sin(mid);
-    th = ArMath.fixAngle(th + Math.toDegrees(dthOdo));
     turned += Math.toDegrees(dthOdo);
     lastMeasured = dsOdo;
   }
@@ -124,15 +122,15 @@ public final class Odometry {
 
   /** Odometry heading, degrees (−180, 180]. */
   public double getTh() {
-    return th;
+    return ArMath.fixAngle(turned);
   }
 
   /**
    * The heading as the SIP's THPOS carries it: a counter of {@code radPerUnit} angle units that
    * wraps at 4096 (as ARCOS's does, and as ARIA unwraps it), in −2048..2047.
    *
-   * <p>Why not {@code round(th / radPerUnit)}: with a parameter file's {@code AngleConvFactor} of
-   * 0.00153 a turn is 4107 units, not 4096, so a heading that jumps from +180° to −180° jumps by
+   * <p>Why not {@code round(getTh() / radPerUnit)}: with a parameter file's {@code AngleConvFactor}
+   * of 0.00153 a turn is 4107 units, not 4096, so a heading that jumps from +180° to −180° jumps by
    * 4107 units and a robot unwrapping modulo 4096 lost 11 units (0.94°) at every crossing of ±180°.
    * Counting units from the unwrapped heading keeps every difference of two SIPs exact.
    */
