@@ -71,15 +71,15 @@ public class ArRobot implements AutoCloseable {
   private final String name;
   private final DropCounters drops;
   private final StatusStage state;
-  final ArRobotPacketSender sender;
-  final StateReflector motion;
+  private final ArRobotPacketSender sender;
+  private final StateReflector motion;
   private final ActionStage actions = new ActionStage();
   private final CopyOnWriteArrayList<ArRangeDevice> rangeDevices = new CopyOnWriteArrayList<>();
-  final ReentrantLock robotLock = new ReentrantLock();
-  final TaskList sensorInterpTasks = new TaskList("sensor interpretation");
-  final TaskList userTasks = new TaskList("user");
+  private final ReentrantLock robotLock = new ReentrantLock();
+  private final TaskList sensorInterpTasks = new TaskList("sensor interpretation");
+  private final TaskList userTasks = new TaskList("user");
   private final PacketRouter router = new PacketRouter();
-  final Callbacks runExitCBs = new Callbacks("run exit");
+  private final Callbacks runExitCBs = new Callbacks("run exit");
   final RobotLink link;
   private final RunLoop runLoop;
   private final AtomicLong counter = new AtomicLong();
@@ -113,7 +113,7 @@ public class ArRobot implements AutoCloseable {
     this.state = new StatusStage(clock, ArRobotParams.defaults(), drops);
     this.sender = new ArRobotPacketSender(clock);
     this.motion = new StateReflector(clock, sender, state::status);
-    this.runLoop = new RunLoop(this);
+    this.runLoop = new RunLoop(name, clock, new Cycle(), runExitCBs::invokeAll);
     this.link =
         new RobotLink(
             clock,
@@ -130,7 +130,7 @@ public class ArRobot implements AutoCloseable {
     router.add(state::handleIoPacket, ArListPos.LAST);
   }
 
-  /** What the robot does when its link changes. */
+  /** What the robot's stages do when its link changes: each takes what it needs as a value. */
   private final class LinkEvents implements RobotLink.Events {
     @Override
     public void connecting() {
@@ -146,8 +146,39 @@ public class ArRobot implements AutoCloseable {
     }
 
     @Override
-    public void configured(ArConfigPacket config, ArRobotParams p) {
-      LimitsFromConfig.apply(ArRobot.this, config, p);
+    public void configured(ConfiguredLimits limits) {
+      motion.configure(limits);
+    }
+  }
+
+  /** What the run loop runs: this robot's cycle, and the wait for the input of the next one. */
+  private final class Cycle implements RunLoop.Cycle {
+    @Override
+    public long cycleTimeMs() {
+      return cycleTimeMs;
+    }
+
+    @Override
+    public boolean awaitInput(long start, long cycleNanos) {
+      if (link.isConnecting()) {
+        link.waitWhileConnecting(start + cycleNanos);
+        return true;
+      }
+      if (link.isConnected() && cycleChained) {
+        link.waitForSip(start + 2 * cycleNanos);
+        return true;
+      }
+      return false;
+    }
+
+    @Override
+    public void runOnce() {
+      loopOnce();
+    }
+
+    @Override
+    public boolean linked() {
+      return link.isConnected() || link.isConnecting();
     }
   }
 
@@ -382,7 +413,7 @@ public class ArRobot implements AutoCloseable {
       sensorInterpTasks.runAll();
       ArActionDesired desired = actions.resolve(this, isConnected());
       if (isConnected()) {
-        motion.reflect(desired, state.encoderTransform().getTh());
+        motion.reflect(desired);
       }
       userTasks.runAll();
     } finally {
@@ -1227,7 +1258,7 @@ public class ArRobot implements AutoCloseable {
 
   /** The transform from odometry coordinates to global coordinates. */
   public ArTransform getEncoderTransform() {
-    return state.encoderTransform();
+    return state.status().encoderTransform();
   }
 
   /** The transform from the robot's local frame to global coordinates (at the current pose). */
@@ -1327,8 +1358,9 @@ public class ArRobot implements AutoCloseable {
    * told its robot. Adding the same action again only changes its priority.
    */
   public void addAction(ArAction action, int priority) {
-    actions.add(action, priority);
+    // Told its robot first, as in ARIA: an action without one is never fired.
     action.setRobot(this);
+    actions.add(action, priority);
   }
 
   /** Removes an action. */

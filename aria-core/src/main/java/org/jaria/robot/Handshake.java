@@ -7,6 +7,7 @@ import org.jaria.connection.ArDeviceConnection;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
+import org.jaria.protocol.packets.ArConfigPacket;
 import org.jaria.protocol.packets.PacketIds;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -20,6 +21,13 @@ import org.slf4j.LoggerFactory;
  * (which waits for bytes between steps) and {@code asyncConnect} on a virtual clock (where a
  * simulator advances time between steps).
  *
+ * <p>The handshake never calls back into the link that drives it: each step says what happened in
+ * its {@link Result}, and the link acts on it (loads the robot's parameters when it is {@link
+ * Result#IDENTIFIED}, sets the speed limits when it is {@link Result#CONFIGURED}). Once OPEN is
+ * sent the robot's packets are the link's: it reads them and hands them on as in any cycle (so the
+ * first SIPs reach the handlers and a CONFIGpac is kept), and tells the next step what it heard
+ * ({@link Heard}).
+ *
  * <p>The retry rules follow ARIA: one second per reply, a sequence restarted on a wrong ID, an OPEN
  * to dislodge a robot that is connected but not open after three silent tries, and failure after
  * more than ten silent tries (or five if the robot never answered at all).
@@ -32,31 +40,42 @@ final class Handshake {
   private static final long CONFIG_NANOS = TimeUnit.MILLISECONDS.toNanos(1000);
   private static final long BAUD_NANOS = TimeUnit.MILLISECONDS.toNanos(900);
 
-  /** What the handshake needs from the robot it connects. */
-  interface Host {
-    /** Called once the SYNC2 echo names the robot; loads its parameters. */
-    void identified(String name, String type, String subtype);
+  /**
+   * The robot's name, type and subtype (lower case), from the SYNC2 echo.
+   *
+   * @param name the robot's name
+   * @param type its type, e.g. "Pioneer"
+   * @param subtype its subtype, e.g. "p3dx-sh"
+   */
+  record Identity(String name, String type, String subtype) {}
 
-    /** Hands a packet received after OPEN to the robot's normal packet handling. */
-    void dispatch(ArRobotPacket p);
+  /**
+   * What the link heard from the robot, for a step after OPEN.
+   *
+   * @param config the CONFIGpac, once one came, else null
+   * @param packetArrived whether any packet arrived since the previous step
+   * @param switchToBaudRate the baud rate the robot's parameters ask a serial link to switch to, 0
+   *     for none
+   */
+  record Heard(ArConfigPacket config, boolean packetArrived, int switchToBaudRate) {}
 
-    /** Whether a CONFIGpac has arrived since OPEN. */
-    boolean hasConfig();
-
-    /** Sets speed limits from the CONFIGpac (or the parameters when none came). */
-    void applyLimits(boolean gotConfig);
-
-    /** Baud rate to switch a serial connection to, 0 for none. */
-    int switchToBaudRate();
-
-    /** Whether the robot's CONFIGpac says it can change baud rate. */
-    boolean robotCanResetBaud();
-  }
+  /** Nothing heard: for the steps before OPEN, which read the robot's replies themselves. */
+  static final Heard NOTHING = new Heard(null, false, 0);
 
   /** The outcome of a step. */
   enum Result {
+    /** Still connecting. */
     IN_PROGRESS,
+    /** The SYNC2 echo named the robot ({@link #identity()}): load its parameters. */
+    IDENTIFIED,
+    /**
+     * The CONFIGpac came, or waiting for it timed out: set the speed limits now, then step again at
+     * once (a serial link may switch its baud rate next).
+     */
+    CONFIGURED,
+    /** Connected: the robot is open. */
     CONNECTED,
+    /** The attempt failed ({@link #failure()} says why). */
     FAILED
   }
 
@@ -66,6 +85,7 @@ final class Handshake {
     CLOSING_OLD,
     PRE_OPEN,
     WAIT_CONFIG,
+    CONFIGURED,
     BAUD_SENT,
     DONE,
     FAILED
@@ -73,9 +93,9 @@ final class Handshake {
 
   private final ArRobotPacketSender sender;
   private final PacketIntake intake;
-  private final Host host;
   private final long cycleNanos;
   private State state = State.START;
+  private Identity identity;
   private int syncIndex;
   private long sentAt;
   private long deadline;
@@ -84,10 +104,9 @@ final class Handshake {
   private int startBaud;
   private String failure = "";
 
-  Handshake(ArRobotPacketSender sender, PacketIntake intake, Host host, long cycleMillis) {
+  Handshake(ArRobotPacketSender sender, PacketIntake intake, long cycleMillis) {
     this.sender = sender;
     this.intake = intake;
-    this.host = host;
     this.cycleNanos = TimeUnit.MILLISECONDS.toNanos(cycleMillis);
   }
 
@@ -96,31 +115,53 @@ final class Handshake {
     return failure;
   }
 
+  /** The robot's name, type and subtype, once {@link Result#IDENTIFIED}; null before. */
+  Identity identity() {
+    return identity;
+  }
+
   /** The clock time by which something must happen next (for a caller that waits for bytes). */
   long nextDeadline() {
     return deadline;
   }
 
   /**
-   * Advances the handshake: reads what has arrived (without waiting), sends what is due.
+   * Whether OPEN was sent and the handshake is not over: the robot's packets are then the link's to
+   * read and hand on before each step.
+   */
+  boolean isOpen() {
+    return state == State.WAIT_CONFIG || state == State.CONFIGURED || state == State.BAUD_SENT;
+  }
+
+  /** The link could not read from the robot after OPEN: the attempt fails. */
+  void connectionLost(String why) {
+    fail("lost the connection while connecting: " + why);
+  }
+
+  /**
+   * Advances the handshake: before OPEN reads what has arrived (without waiting); sends what is
+   * due.
    *
    * @param conn the robot's connection (opened here if needed)
    * @param now the clock's current time
+   * @param heard what the link heard since the last step, once {@link #isOpen()}
    */
-  Result step(ArDeviceConnection conn, long now) {
+  Result step(ArDeviceConnection conn, long now, Heard heard) {
+    boolean identifiedNow = false;
     try {
       if (state == State.START) {
         start(conn, now);
       }
-      if (state != State.FAILED && state != State.DONE) {
+      if (state == State.SYNC || state == State.CLOSING_OLD || state == State.PRE_OPEN) {
         intake.readAvailable(conn, now);
       }
       switch (state) {
-        case SYNC -> syncStep(now);
+        case SYNC -> identifiedNow = syncStep(now);
         case CLOSING_OLD -> closingStep(now);
         case PRE_OPEN -> preOpenStep(now);
-        case WAIT_CONFIG -> configStep(conn, now);
-        case BAUD_SENT -> baudStep(conn, now);
+        case WAIT_CONFIG -> configStep(now, heard);
+        case CONFIGURED -> switchBaud(conn, now, heard);
+        case BAUD_SENT -> baudStep(conn, now, heard);
         case START, DONE, FAILED -> {
           // nothing to do
         }
@@ -131,7 +172,8 @@ final class Handshake {
     return switch (state) {
       case DONE -> Result.CONNECTED;
       case FAILED -> Result.FAILED;
-      default -> Result.IN_PROGRESS;
+      case CONFIGURED -> Result.CONFIGURED;
+      default -> identifiedNow ? Result.IDENTIFIED : Result.IN_PROGRESS;
     };
   }
 
@@ -160,7 +202,8 @@ final class Handshake {
     log.debug("syncing {}", index);
   }
 
-  private void syncStep(long now) {
+  /** One step of the SYNC sequence; true when the SYNC2 echo named the robot. */
+  private boolean syncStep(long now) {
     ArRobotPacket p;
     while (state == State.SYNC && (p = intake.poll()) != null) {
       int id = p.getID();
@@ -169,7 +212,7 @@ final class Handshake {
         sender.comInt(ArCommands.CLOSE.getNumber(), 1);
         state = State.CLOSING_OLD;
         deadline = now + CLOSE_OLD_NANOS;
-        return;
+        return false;
       }
       if (id != syncIndex) {
         sendSync(0, now);
@@ -183,16 +226,16 @@ final class Handshake {
       String type = p.bufToString();
       String subtype = p.bufToString().toLowerCase(Locale.ROOT);
       log.info("connected to robot '{}', type '{}', subtype '{}'", name, type, subtype);
-      host.identified(name, type, subtype);
+      identity = new Identity(name, type, subtype);
       state = State.PRE_OPEN;
       deadline = now + cycleNanos;
-      return;
+      return true;
     }
     if (state == State.SYNC && now - sentAt >= REPLY_NANOS) {
       noPacketCount++;
       if ((noPacketCount > 5 && noPacketCount >= timesTried) || noPacketCount > 10) {
         fail("no robot is responding: check the cable, that the robot is on, and the port");
-        return;
+        return false;
       }
       if (noPacketCount > 3) {
         // A robot that is connected but not open answers OPEN with SIPs.
@@ -203,6 +246,7 @@ final class Handshake {
     if (timesTried > 50) {
       fail("the robot never completed the handshake after " + timesTried + " tries");
     }
+    return false;
   }
 
   private void closingStep(long now) {
@@ -229,15 +273,20 @@ final class Handshake {
     deadline = now + CONFIG_NANOS;
   }
 
-  private void configStep(ArDeviceConnection conn, long now) {
-    dispatchAll();
-    boolean got = host.hasConfig();
-    if (!got && now - sentAt < CONFIG_NANOS) {
+  private void configStep(long now, Heard heard) {
+    if (heard.config() == null && now - sentAt < CONFIG_NANOS) {
       return;
     }
-    host.applyLimits(got);
-    int baud = host.switchToBaudRate();
-    if (got && baud > 0 && host.robotCanResetBaud() && conn instanceof ArSerialConnection serial) {
+    // The link sets the speed limits, then steps again for the baud switch.
+    state = State.CONFIGURED;
+  }
+
+  private void switchBaud(ArDeviceConnection conn, long now, Heard heard) {
+    ArConfigPacket config = heard.config();
+    int baud = heard.switchToBaudRate();
+    boolean robotCanResetBaud =
+        config != null && config.getInt(ArConfigPacket.Field.RESET_BAUD) != 0;
+    if (baud > 0 && robotCanResetBaud && conn instanceof ArSerialConnection serial) {
       int code = baudCode(baud);
       if (code >= 0 && serial.getBaud() != baud) {
         startBaud = serial.getBaud();
@@ -259,22 +308,13 @@ final class Handshake {
     state = State.DONE;
   }
 
-  private void baudStep(ArDeviceConnection conn, long now) {
-    boolean any = intake.hasPacket();
-    dispatchAll();
-    if (any) {
+  private void baudStep(ArDeviceConnection conn, long now, Heard heard) {
+    if (heard.packetArrived()) {
       state = State.DONE;
     } else if (now - sentAt > BAUD_NANOS) {
       log.info("robot did not switch baud rate; going back to {}", startBaud);
       ((ArSerialConnection) conn).setBaud(startBaud);
       state = State.DONE;
-    }
-  }
-
-  private void dispatchAll() {
-    ArRobotPacket p;
-    while ((p = intake.poll()) != null) {
-      host.dispatch(p);
     }
   }
 

@@ -74,6 +74,34 @@ final class MotionLimits {
     settableAccsDecs = accsDecs;
   }
 
+  /**
+   * Sets the limits a newly connected robot starts with, all at once, so that a cycle sees either
+   * none or all of them: the top speeds first, then the maxima (refused above the top speeds, as by
+   * their setters), then the accelerations; NaN components are left as they are.
+   */
+  synchronized void apply(ConfiguredLimits c) {
+    setAbsoluteMaxTransVel(c.absMaxTransVel());
+    setAbsoluteMaxRotVel(c.absMaxRotVel());
+    if (!Double.isNaN(c.transVelMax())) {
+      setTransVelMax(c.transVelMax());
+    }
+    if (!Double.isNaN(c.rotVelMax())) {
+      setRotVelMax(c.rotVelMax());
+    }
+    if (!Double.isNaN(c.transAccel())) {
+      setTransAccel(c.transAccel());
+    }
+    if (!Double.isNaN(c.transDecel())) {
+      setTransDecel(c.transDecel());
+    }
+    if (!Double.isNaN(c.rotAccel())) {
+      setRotAccel(c.rotAccel());
+    }
+    if (!Double.isNaN(c.rotDecel())) {
+      setRotDecel(c.rotDecel());
+    }
+  }
+
   /** The limits now, as one value. */
   synchronized Values values() {
     if (values != null) {

@@ -27,10 +27,12 @@ import org.slf4j.LoggerFactory;
  * robot's configuration, read while connecting) and a controller reset (the link is lost).
  *
  * <p>Connecting runs on whichever thread drives the robot: the caller of {@code blockingConnect},
- * or the cycle thread for {@code asyncConnect}. What the rest of the robot must do when the link
- * changes it learns through {@link Events}; the link knows nothing else of the robot.
+ * or the cycle thread for {@code asyncConnect}. The link drives the {@link Handshake} and acts on
+ * what each step reports; once OPEN is sent it reads and hands on the robot's packets itself, as in
+ * a cycle, and tells the handshake what it heard. What the rest of the robot must do when the link
+ * changes it learns through {@link Events}, as values; the link knows nothing else of the robot.
  */
-final class RobotLink implements Handshake.Host {
+final class RobotLink {
 
   private static final Logger log = LoggerFactory.getLogger(RobotLink.class);
 
@@ -42,8 +44,8 @@ final class RobotLink implements Handshake.Host {
     /** The handshake named the robot and its parameters were loaded. */
     void identified(ArRobotParams params);
 
-    /** The link is open: set the speed limits from the CONFIGpac, or null if none came. */
-    void configured(ArConfigPacket config, ArRobotParams params);
+    /** The handshake has the CONFIGpac (or gave up waiting): the speed limits to start with. */
+    void configured(ConfiguredLimits limits);
   }
 
   private final Clock clock;
@@ -187,7 +189,7 @@ final class RobotLink implements Handshake.Host {
     config = null;
     events.connecting();
     connectDone = new CountDownLatch(1);
-    handshake = new Handshake(sender, intake, this, Math.max(1, cycleTimeMs.getAsLong()));
+    handshake = new Handshake(sender, intake, Math.max(1, cycleTimeMs.getAsLong()));
     return true;
   }
 
@@ -245,7 +247,15 @@ final class RobotLink implements Handshake.Host {
     if (h == null) {
       return false;
     }
-    switch (h.step(conn, now)) {
+    Handshake.Result r =
+        h.step(conn, now, h.isOpen() ? handOnWhileOpening(h, now) : Handshake.NOTHING);
+    if (r == Handshake.Result.IDENTIFIED) {
+      identified(h.identity());
+    } else if (r == Handshake.Result.CONFIGURED) {
+      configured();
+      r = h.step(conn, now, new Handshake.Heard(config, false, params.getSwitchToBaudRate()));
+    }
+    switch (r) {
       case CONNECTED -> {
         handshake = null;
         connected = true;
@@ -260,54 +270,58 @@ final class RobotLink implements Handshake.Host {
         connectDone.countDown();
         failedConnectCBs.invokeAll();
       }
-      case IN_PROGRESS -> {
+      case IN_PROGRESS, IDENTIFIED, CONFIGURED -> {
         // keep going
       }
     }
     return true;
   }
 
-  @Override
-  public void identified(String name, String type, String subtype) {
-    robotName = name;
-    robotType = type;
-    robotSubType = subtype;
-    ArRobotParams p = ArRobotParams.load(subtype, name, paramsDir);
+  /**
+   * After OPEN the robot's packets go their normal way before the handshake looks: read what has
+   * arrived, and hand it on holding the robot's lock (SIPs to the handlers, a CONFIGpac kept here).
+   */
+  private Handshake.Heard handOnWhileOpening(Handshake h, long now) {
+    try {
+      intake.readAvailable(conn, now);
+    } catch (IOException e) {
+      h.connectionLost(e.getMessage());
+    }
+    boolean arrived = intake.hasPacket();
+    robotLock.lock();
+    try {
+      handOnQueued();
+    } finally {
+      robotLock.unlock();
+    }
+    return new Handshake.Heard(config, arrived, params.getSwitchToBaudRate());
+  }
+
+  /** The SYNC2 echo named the robot: load its parameters and tell the robot. */
+  private void identified(Handshake.Identity id) {
+    robotName = id.name();
+    robotType = id.type();
+    robotSubType = id.subtype();
+    ArRobotParams p = ArRobotParams.load(id.subtype(), id.name(), paramsDir);
     // which files the robot runs on; problems were logged as ERRORs by the loader
-    log.info("robot parameters for '{}' from {}", subtype, p.getSources());
+    log.info("robot parameters for '{}' from {}", id.subtype(), p.getSources());
     params = p;
     events.identified(p);
   }
 
-  @Override
-  public void dispatch(ArRobotPacket p) {
-    robotLock.lock();
-    try {
-      handOn(p);
-    } finally {
-      robotLock.unlock();
+  /**
+   * The CONFIGpac came (or never will): the robot takes its speed limits as a value, and the link
+   * asks for the packet streams the parameters want.
+   */
+  private void configured() {
+    ArRobotParams p = params;
+    events.configured(ConfiguredLimits.of(config, p));
+    if (p.getRequestIOPackets()) {
+      sender.comInt(ArCommands.IOREQUEST.getNumber(), 2);
     }
-  }
-
-  @Override
-  public boolean hasConfig() {
-    return config != null;
-  }
-
-  @Override
-  public void applyLimits(boolean gotConfig) {
-    events.configured(gotConfig ? config : null, params);
-  }
-
-  @Override
-  public int switchToBaudRate() {
-    return params.getSwitchToBaudRate();
-  }
-
-  @Override
-  public boolean robotCanResetBaud() {
-    ArConfigPacket c = config;
-    return c != null && c.getInt(ArConfigPacket.Field.RESET_BAUD) != 0;
+    if (p.getRequestEncoderPackets()) {
+      sender.comInt(ArCommands.ENCODER.getNumber(), 2);
+    }
   }
 
   // ---------------------------------------------------------------- packets

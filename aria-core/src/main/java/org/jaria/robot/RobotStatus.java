@@ -2,6 +2,7 @@ package org.jaria.robot;
 
 import java.util.List;
 import org.jaria.geom.ArPose;
+import org.jaria.geom.ArTransform;
 import org.jaria.range.ArSensorReading;
 
 /**
@@ -15,6 +16,8 @@ import org.jaria.range.ArSensorReading;
  * @param pose global pose (odometry corrected by the encoder→global transform)
  * @param encoderPose odometry pose (after gyro correction, if any)
  * @param rawEncoderPose odometry as the wheels report it
+ * @param encoderTransform the encoder→global transform that made {@code pose} out of {@code
+ *     encoderPose} (localization and {@code moveTo} set it)
  * @param vel translational velocity, mm/s
  * @param rotVel rotational velocity, deg/s
  * @param leftVel left wheel velocity, mm/s
@@ -43,6 +46,7 @@ public record RobotStatus(
     ArPose pose,
     ArPose encoderPose,
     ArPose rawEncoderPose,
+    ArTransform encoderTransform,
     double vel,
     double rotVel,
     double leftVel,
@@ -88,6 +92,7 @@ public record RobotStatus(
         .pose(pose)
         .encoderPose(encoderPose)
         .rawEncoderPose(rawEncoderPose)
+        .encoderTransform(encoderTransform)
         .wheelVels(leftVel, rightVel)
         .vel(vel)
         .rotVel(rotVel)
@@ -109,13 +114,17 @@ public record RobotStatus(
         .sonars(sonars);
   }
 
-  /** The same status with another global pose and sonar readings (after a relocalization). */
-  RobotStatus withPoseAndSonars(ArPose newPose, List<ArSensorReading> newSonars) {
-    return toBuilder().pose(newPose).sonars(newSonars).build();
+  /**
+   * The same status with another global pose, the transform that made it, and sonar readings (after
+   * a relocalization).
+   */
+  RobotStatus relocalized(
+      ArPose newPose, ArTransform newTransform, List<ArSensorReading> newSonars) {
+    return toBuilder().pose(newPose).encoderTransform(newTransform).sonars(newSonars).build();
   }
 
   /**
-   * Builds a {@link RobotStatus} field by field, by name (the record has 26 components, too many to
+   * Builds a {@link RobotStatus} field by field, by name (the record has 27 components, too many to
    * pass by position without mixing two up). Each setter is named after the component it sets.
    */
   public static final class Builder {
@@ -124,6 +133,7 @@ public record RobotStatus(
     private ArPose pose = ArPose.ORIGIN;
     private ArPose encoderPose = ArPose.ORIGIN;
     private ArPose rawEncoderPose = ArPose.ORIGIN;
+    private ArTransform encoderTransform = ArTransform.IDENTITY;
     private double vel;
     private double rotVel;
     private double leftVel;
@@ -175,6 +185,12 @@ public record RobotStatus(
     /** See {@link RobotStatus#rawEncoderPose()}. */
     public Builder rawEncoderPose(ArPose v) {
       rawEncoderPose = v;
+      return this;
+    }
+
+    /** See {@link RobotStatus#encoderTransform()}. */
+    public Builder encoderTransform(ArTransform v) {
+      encoderTransform = v;
       return this;
     }
 
@@ -302,6 +318,7 @@ public record RobotStatus(
           pose,
           encoderPose,
           rawEncoderPose,
+          encoderTransform,
           vel,
           rotVel,
           leftVel,

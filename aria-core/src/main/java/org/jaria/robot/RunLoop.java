@@ -8,25 +8,58 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Runs the robot's cycle over and over: on the caller's thread ({@link #run}) or on a thread of its
+ * Runs a robot's cycle over and over: on the caller's thread ({@link #run}) or on a thread of its
  * own ({@link #runAsync}), chained to SIP arrival (waiting at most two cycle times for one) or
  * paced by the cycle time alone. Stoppable from any thread; the thread is named after the robot and
  * joined by {@link #waitForRunExit}.
+ *
+ * <p>It knows only the {@link Cycle} it runs and what to do when it ends, not the robot.
  */
 final class RunLoop {
 
   private static final Logger log = LoggerFactory.getLogger(RunLoop.class);
 
-  private final ArRobot robot;
+  /** What the loop runs: one cycle at a time, and the wait for what the next one reads. */
+  interface Cycle {
+    /** The cycle time, ms. */
+    long cycleTimeMs();
+
+    /**
+     * Waits for the input of the next cycle: the robot's replies while connecting (until {@code
+     * start + cycleNanos} at most), or a SIP when cycles are chained to SIPs (until {@code start +
+     * 2 * cycleNanos} at most).
+     *
+     * @return false, at once, if there is no such input (not connected, or cycles paced by the
+     *     clock alone): the loop then sleeps until {@code start + cycleNanos}
+     */
+    boolean awaitInput(long start, long cycleNanos);
+
+    /** Runs one cycle. */
+    void runOnce();
+
+    /** Whether the robot is connected or being connected. */
+    boolean linked();
+  }
+
+  private final String name;
+  private final Clock clock;
+  private final Cycle cycle;
+  private final Runnable onExit;
   private final ReentrantLock lock = new ReentrantLock();
   private final Condition wake = lock.newCondition();
   private volatile boolean running;
   private volatile boolean stopRequested;
   private volatile Thread thread;
-  private volatile Thread runner;
 
-  RunLoop(ArRobot robot) {
-    this.robot = robot;
+  /**
+   * A loop that runs {@code cycle} on {@code clock}, in a thread named after {@code name}, and
+   * calls {@code onExit} each time it ends.
+   */
+  RunLoop(String name, Clock clock, Cycle cycle, Runnable onExit) {
+    this.name = name;
+    this.clock = clock;
+    this.cycle = cycle;
+    this.onExit = onExit;
   }
 
   boolean isRunning() {
@@ -38,7 +71,7 @@ final class RunLoop {
     try {
       if (running) {
         throw new IllegalStateException(
-            robot.getName() + " is already running its cycle; call stopRunning() first");
+            name + " is already running its cycle; call stopRunning() first");
       }
       running = true;
       stopRequested = false;
@@ -49,7 +82,7 @@ final class RunLoop {
 
   void runAsync(boolean stopRunIfNotConnected) {
     claim();
-    Thread t = new Thread(() -> loop(stopRunIfNotConnected), "ArRobot-" + robot.getName());
+    Thread t = new Thread(() -> loop(stopRunIfNotConnected), "ArRobot-" + name);
     t.setDaemon(true);
     thread = t;
     t.start();
@@ -61,36 +94,29 @@ final class RunLoop {
   }
 
   private void loop(boolean stopRunIfNotConnected) {
-    runner = Thread.currentThread();
-    Clock clock = robot.getClock();
     try {
       while (!stopRequested) {
         long start = clock.nanoTime();
-        long cycle = TimeUnit.MILLISECONDS.toNanos(robot.getCycleTime());
-        if (robot.isConnecting()) {
-          robot.link.waitWhileConnecting(start + cycle);
-        } else if (robot.isConnected() && robot.isCycleChained()) {
-          robot.link.waitForSip(start + 2 * cycle);
-        } else {
-          sleepUntil(clock, start + cycle);
+        long cycleNanos = TimeUnit.MILLISECONDS.toNanos(cycle.cycleTimeMs());
+        if (!cycle.awaitInput(start, cycleNanos)) {
+          sleepUntil(start + cycleNanos);
         }
         if (stopRequested) {
           break;
         }
-        robot.loopOnce();
-        if (stopRunIfNotConnected && !robot.isConnected() && !robot.isConnecting()) {
-          log.info("{}: not connected, so the cycle stops", robot.getName());
+        cycle.runOnce();
+        if (stopRunIfNotConnected && !cycle.linked()) {
+          log.info("{}: not connected, so the cycle stops", name);
           break;
         }
       }
     } finally {
       running = false;
-      runner = null;
-      robot.runExitCBs.invokeAll();
+      onExit.run();
     }
   }
 
-  private void sleepUntil(Clock clock, long deadline) {
+  private void sleepUntil(long deadline) {
     lock.lock();
     try {
       while (!stopRequested && clock.nanoTime() < deadline) {
@@ -121,10 +147,5 @@ final class RunLoop {
     if (t != null && t != Thread.currentThread()) {
       t.join();
     }
-  }
-
-  /** Whether the calling thread is the one running the cycle. */
-  boolean isCycleThread() {
-    return runner == Thread.currentThread();
   }
 }

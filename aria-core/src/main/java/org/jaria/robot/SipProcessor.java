@@ -68,8 +68,11 @@ final class SipProcessor {
   @GuardedBy("this")
   private boolean warnedExtraSonar;
 
-  @GuardedBy("this")
-  private RobotStatus last;
+  /**
+   * The newest status. Written only while holding this object's monitor, so the last write is the
+   * newest status even when a relocalization and a SIP race; read from any thread without it.
+   */
+  private volatile RobotStatus last;
 
   /** Reused for every SIP: every field is set each time. */
   @GuardedBy("this")
@@ -86,7 +89,7 @@ final class SipProcessor {
     for (int i = 0; i < p.getNumSonar(); i++) {
       sonars.add(ArSensorReading.never(p.getSonarX(i), p.getSonarY(i), p.getSonarTh(i)));
     }
-    last = RobotStatus.initial(sonars);
+    last = RobotStatus.initial(sonars).toBuilder().encoderTransform(encoderTransform).build();
   }
 
   /** Forgets the odometry history (a new connection starts counting afresh). */
@@ -191,6 +194,7 @@ final class SipProcessor {
             .pose(globalPose)
             .encoderPose(encoderPose)
             .rawEncoderPose(rawEncoderPose)
+            .encoderTransform(encoderTransform)
             .vel((leftVel + rightVel) / 2.0)
             .rotVel(rotVel)
             .wheelVels(leftVel, rightVel)
@@ -237,16 +241,12 @@ final class SipProcessor {
     return delta;
   }
 
-  /** The encoder→global transform. */
-  synchronized ArTransform getEncoderTransform() {
-    return encoderTransform;
-  }
-
   /**
    * Declares that the robot is now at {@code pose}: the encoder→global transform changes so the
-   * current odometry maps there, and sonar readings move along. Returns the updated status.
+   * current odometry maps there, and sonar readings move along. Returns how the global frame moved
+   * (what range devices apply to their buffers); the new status carries the new transform.
    */
-  synchronized RobotStatus moveTo(ArPose pose) {
+  synchronized ArTransform moveTo(ArPose pose) {
     ArTransform old = encoderTransform;
     encoderTransform = ArTransform.between(encoderPose, pose);
     ArTransform change = encoderTransform.compose(old.inverse());
@@ -257,21 +257,22 @@ final class SipProcessor {
         sonars.set(i, r.applyTransform(change));
       }
     }
-    last = last.withPoseAndSonars(globalPose, sonars);
-    return last;
+    last = last.relocalized(globalPose, encoderTransform, sonars);
+    return change;
   }
 
   /**
    * Sets the transform so that odometry pose {@code encoder} corresponds to global pose {@code
-   * global} (what a localizer computed for an earlier odometry reading).
+   * global} (what a localizer computed for an earlier odometry reading). Returns how the global
+   * frame moved.
    */
-  synchronized RobotStatus setEncoderTransform(ArPose encoder, ArPose global) {
+  synchronized ArTransform setEncoderTransform(ArPose encoder, ArPose global) {
     ArTransform target = ArTransform.between(encoder, global);
     return moveTo(target.doTransform(encoderPose));
   }
 
-  /** The last status produced. */
-  synchronized RobotStatus last() {
+  /** The last status produced (any thread). */
+  RobotStatus last() {
     return last;
   }
 }

@@ -51,8 +51,7 @@ final class StateReflection {
    * @param now the clock time of this cycle, ns
    * @param direct the motion commands asked for
    * @param desired the actions' resolved desire (read only; no strength anywhere if no action)
-   * @param status the robot's latest status
-   * @param encoderTransformTh the encoder→global rotation, degrees (HEAD takes the robot's frame)
+   * @param status the robot's latest status (with the encoder→global transform that HEAD undoes)
    * @param settings how state reflection is set up
    */
   record Inputs(
@@ -60,7 +59,6 @@ final class StateReflection {
       DirectMotion direct,
       ArActionDesired desired,
       RobotStatus status,
-      double encoderTransformTh,
       Settings settings) {}
 
   private StateReflection() {}
@@ -74,10 +72,10 @@ final class StateReflection {
 
   /**
    * Converts a global heading into the robot's own heading frame, which is what HEAD takes: undo
-   * the encoder→global rotation and any gyro correction of the odometry heading.
+   * the encoder→global rotation of {@code s} and any gyro correction of the odometry heading.
    */
-  static int robotHeading(double globalHeading, RobotStatus s, double encoderTransformTh) {
-    double encTh = ArMath.subAngle(globalHeading, encoderTransformTh);
+  static int robotHeading(double globalHeading, RobotStatus s) {
+    double encTh = ArMath.subAngle(globalHeading, s.encoderTransform().getTh());
     double rawTh =
         ArMath.addAngle(encTh, ArMath.subAngle(s.rawEncoderPose().th(), s.encoderPose().th()));
     return (int) Math.round(rawTh);
@@ -110,7 +108,6 @@ final class StateReflection {
     private final MotionLimits.Values limits;
     private final ArActionDesired d;
     private final RobotStatus s;
-    private final double encTh;
     private final ReflectionMemory before;
     private List<MotionCommand> out = List.of();
     private DirectMotion direct;
@@ -150,7 +147,6 @@ final class StateReflection {
       limits = settings.limits();
       d = in.desired();
       s = in.status();
-      encTh = in.encoderTransformTh();
       direct = in.direct();
       before = m;
       sentTrans = m.sentAt().trans();
@@ -410,7 +406,7 @@ final class StateReflection {
       int val = clampShort(direct.rotVal());
       boolean refreshDue = now - sentRot >= refresh;
       if (type == RotType.HEADING) {
-        val = robotHeading(direct.rotVal(), s, encTh);
+        val = robotHeading(direct.rotVal(), s);
         double error = Math.abs(ArMath.subAngle(direct.rotVal(), s.pose().th()));
         if (lastRotVal != val || lastRotType != type || error > 1 || refreshDue) {
           send(ArCommands.HEAD, val);
@@ -501,7 +497,7 @@ final class StateReflection {
           heading = false;
           val = 0;
         } else {
-          val = robotHeading(s.pose().th() + delta, s, encTh);
+          val = robotHeading(s.pose().th() + delta, s);
           stopped = false;
           heading = true;
           wants = true;

@@ -1,7 +1,10 @@
 package org.jaria.robot;
 
 import com.google.errorprone.annotations.concurrent.GuardedBy;
+import java.util.ArrayDeque;
+import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Supplier;
 import org.jaria.action.ArActionDesired;
 import org.jaria.clock.Clock;
@@ -16,7 +19,12 @@ import org.jaria.robot.DirectMotion.TransType;
  * {@link StateReflection} what to send and sends it. The decision is a function over values; this
  * class only holds the state between cycles and is the one place that writes motion commands.
  *
- * <p>Setters may be called from any thread; all state is guarded by this object's monitor.
+ * <p>Setters may be called from any thread; all state is guarded by this object's monitor. Nothing
+ * is written to the connection while holding it, so a slow link (a serial port at 9600 baud) never
+ * keeps another thread from asking whether a move is done: a method decides under the monitor and
+ * puts the commands it decided in the outbox, then writes the outbox without the monitor, holding
+ * only {@link #writing}. Commands go out in the order they were decided, whichever thread writes
+ * them, and a method returns only once its own commands went out.
  */
 final class StateReflector {
 
@@ -24,6 +32,16 @@ final class StateReflector {
   private final ArRobotPacketSender sender;
   private final Supplier<RobotStatus> status;
   private final MotionLimits limits = new MotionLimits();
+
+  /**
+   * Held while writing the outbox, so that one thread at a time takes commands from it and they
+   * leave in order. Taken without the monitor, and the monitor only briefly inside it.
+   */
+  private final ReentrantLock writing = new ReentrantLock();
+
+  /** Commands decided and not yet written, oldest first. */
+  @GuardedBy("this")
+  private final ArrayDeque<MotionCommand> outbox = new ArrayDeque<>();
 
   @GuardedBy("this")
   private boolean doStateReflection = true;
@@ -75,6 +93,11 @@ final class StateReflector {
     settings = null;
   }
 
+  /** Takes the speed limits a newly connected robot starts with. */
+  void configure(ConfiguredLimits c) {
+    limits.apply(c);
+  }
+
   synchronized void setDoStateReflection(boolean on) {
     doStateReflection = on;
     settings = null;
@@ -114,42 +137,51 @@ final class StateReflector {
 
   // ---------------------------------------------------------------- motion commands
 
-  synchronized void setVel(double v) {
-    direct =
-        direct.withTrans(
-            TransType.VEL, v, direct.transVal2(), clock.nanoTime(), direct.transDistStart());
-    if (!doStateReflection) {
-      sender.comInt(ArCommands.VEL.getNumber(), StateReflection.clampShort(v));
+  void setVel(double v) {
+    synchronized (this) {
+      direct =
+          direct.withTrans(
+              TransType.VEL, v, direct.transVal2(), clock.nanoTime(), direct.transDistStart());
+      if (!doStateReflection) {
+        outbox.add(MotionCommand.of(ArCommands.VEL, StateReflection.clampShort(v)));
+      }
     }
+    writeOutbox();
   }
 
-  synchronized void setVel2(double left, double right) {
-    long now = clock.nanoTime();
-    direct =
-        direct
-            .withTrans(TransType.VEL2, left, right, now, direct.transDistStart())
-            .withRot(RotType.IGNORE, direct.rotVal(), now);
-    if (!doStateReflection) {
-      MotionCommand.twoBytes(
-              ArCommands.VEL2,
-              StateReflection.vel2Byte(left, vel2Divisor),
-              StateReflection.vel2Byte(right, vel2Divisor))
-          .sendWith(sender);
+  void setVel2(double left, double right) {
+    synchronized (this) {
+      long now = clock.nanoTime();
+      direct =
+          direct
+              .withTrans(TransType.VEL2, left, right, now, direct.transDistStart())
+              .withRot(RotType.IGNORE, direct.rotVal(), now);
+      if (!doStateReflection) {
+        outbox.add(
+            MotionCommand.twoBytes(
+                ArCommands.VEL2,
+                StateReflection.vel2Byte(left, vel2Divisor),
+                StateReflection.vel2Byte(right, vel2Divisor)));
+      }
     }
+    writeOutbox();
   }
 
-  synchronized void move(double distance) {
-    direct =
-        direct.withTrans(
-            TransType.DIST_NEW,
-            distance,
-            direct.transVal2(),
-            clock.nanoTime(),
-            status.get().pose());
-    if (!doStateReflection) {
-      sender.comInt(ArCommands.MOVE.getNumber(), StateReflection.clampShort(distance));
-      direct = direct.withTrans(TransType.DIST, distance);
+  void move(double distance) {
+    synchronized (this) {
+      direct =
+          direct.withTrans(
+              TransType.DIST_NEW,
+              distance,
+              direct.transVal2(),
+              clock.nanoTime(),
+              status.get().pose());
+      if (!doStateReflection) {
+        outbox.add(MotionCommand.of(ArCommands.MOVE, StateReflection.clampShort(distance)));
+        direct = direct.withTrans(TransType.DIST, distance);
+      }
     }
+    writeOutbox();
   }
 
   synchronized boolean isMoveDone(double delta) {
@@ -172,24 +204,29 @@ final class StateReflector {
     return moveDoneDist;
   }
 
-  synchronized void setRotVel(double v) {
-    direct = direct.withRot(RotType.VEL, v, clock.nanoTime());
-    if (!doStateReflection) {
-      sender.comInt(ArCommands.RVEL.getNumber(), StateReflection.clampShort(v));
+  void setRotVel(double v) {
+    synchronized (this) {
+      direct = direct.withRot(RotType.VEL, v, clock.nanoTime());
+      if (!doStateReflection) {
+        outbox.add(MotionCommand.of(ArCommands.RVEL, StateReflection.clampShort(v)));
+      }
     }
+    writeOutbox();
   }
 
-  synchronized void setHeading(double heading) {
+  void setHeading(double heading) {
     double h = ArMath.fixAngle(heading);
-    direct = direct.withRot(RotType.HEADING, h, clock.nanoTime());
-    if (!doStateReflection) {
-      RobotStatus s = status.get();
-      double encTh = ArMath.subAngle(s.pose().th(), s.encoderPose().th());
-      sender.comInt(ArCommands.HEAD.getNumber(), StateReflection.robotHeading(h, s, encTh));
+    synchronized (this) {
+      direct = direct.withRot(RotType.HEADING, h, clock.nanoTime());
+      if (!doStateReflection) {
+        outbox.add(
+            MotionCommand.of(ArCommands.HEAD, StateReflection.robotHeading(h, status.get())));
+      }
     }
+    writeOutbox();
   }
 
-  synchronized void setDeltaHeading(double delta) {
+  void setDeltaHeading(double delta) {
     setHeading(status.get().pose().th() + delta);
   }
 
@@ -212,14 +249,17 @@ final class StateReflector {
   }
 
   /** Stops both axes at once (STOP) and remembers that zero is what is wanted. */
-  synchronized void stop() {
-    sender.com(ArCommands.STOP.getNumber());
-    long now = clock.nanoTime();
-    direct =
-        direct
-            .withTrans(TransType.VEL, 0, direct.transVal2(), now, direct.transDistStart())
-            .withRot(RotType.VEL, 0, now);
-    memory = memory.stopped(now);
+  void stop() {
+    synchronized (this) {
+      outbox.add(MotionCommand.of(ArCommands.STOP));
+      long now = clock.nanoTime();
+      direct =
+          direct
+              .withTrans(TransType.VEL, 0, direct.transVal2(), now, direct.transDistStart())
+              .withRot(RotType.VEL, 0, now);
+      memory = memory.stopped(now);
+    }
+    writeOutbox();
   }
 
   synchronized void clearDirectMotion() {
@@ -249,9 +289,15 @@ final class StateReflector {
 
   /**
    * Decides what this cycle sends and sends it. {@code desired} is the actions' resolved desire (no
-   * strength anywhere if there are no actions).
+   * strength anywhere if there are no actions); the latest status carries the encoder→global
+   * transform a HEAD needs.
    */
-  synchronized void reflect(ArActionDesired desired, double encoderTransformTh) {
+  void reflect(ArActionDesired desired) {
+    decide(desired);
+    writeOutbox();
+  }
+
+  private synchronized void decide(ArActionDesired desired) {
     MotionLimits.Values v = limits.values();
     if (settings == null || !settings.limits().equals(v)) {
       settings =
@@ -264,16 +310,40 @@ final class StateReflector {
               v);
     }
     StateReflection.Inputs in =
-        new StateReflection.Inputs(
-            clock.nanoTime(), direct, desired, status.get(), encoderTransformTh, settings);
+        new StateReflection.Inputs(clock.nanoTime(), direct, desired, status.get(), settings);
     CycleCommands c = StateReflection.decide(in, memory);
     direct = c.direct();
     memory = c.memory();
     if (doStateReflection) {
       tryingToMove = c.tryingToMove();
     }
-    for (MotionCommand m : c.commands()) {
-      m.sendWith(sender);
+    List<MotionCommand> commands = c.commands();
+    for (int i = 0; i < commands.size(); i++) {
+      outbox.add(commands.get(i));
     }
+  }
+
+  // ---------------------------------------------------------------- writing
+
+  /**
+   * Writes every command in the outbox, oldest first, without holding the monitor. Called after
+   * each decision, never from inside a synchronized block: if another thread is writing, this one
+   * waits for it and then writes what is left (its own commands included, unless the other thread
+   * already wrote them).
+   */
+  private void writeOutbox() {
+    writing.lock();
+    try {
+      MotionCommand m;
+      while ((m = nextToWrite()) != null) {
+        m.sendWith(sender);
+      }
+    } finally {
+      writing.unlock();
+    }
+  }
+
+  private synchronized MotionCommand nextToWrite() {
+    return outbox.poll();
   }
 }

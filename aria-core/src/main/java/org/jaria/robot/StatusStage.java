@@ -25,7 +25,6 @@ final class StatusStage {
   private final SipProcessor processor;
   private final StandardSip sip = new StandardSip();
   private volatile ArRobotParams params;
-  private volatile RobotStatus status;
   private volatile EncoderPacket encoders = new EncoderPacket(0, 0);
   private volatile IoPacket io = new IoPacket(new int[0], new int[0], new int[0]);
 
@@ -34,7 +33,6 @@ final class StatusStage {
     this.drops = drops;
     this.params = params;
     this.processor = new SipProcessor(params);
-    this.status = processor.last();
   }
 
   /** The parameters in use. */
@@ -46,18 +44,19 @@ final class StatusStage {
   void setParams(ArRobotParams p) {
     params = p;
     processor.setParams(p);
-    status = processor.last();
   }
 
   /** Forgets the odometry of an earlier connection. */
   void reset() {
     processor.reset();
-    status = processor.last();
   }
 
-  /** The latest status. */
+  /**
+   * The latest status, with the encoder→global transform that made its pose. The processor
+   * publishes it, so a relocalization racing a SIP cannot leave the older of the two published.
+   */
   RobotStatus status() {
-    return status;
+    return processor.last();
   }
 
   /** The latest ENCODERpac. */
@@ -79,7 +78,7 @@ final class StatusStage {
       drops.drop(DropReason.MALFORMED, "short standard SIP");
       return true;
     }
-    status = processor.process(sip, counter, clock.nanoTime());
+    processor.process(sip, counter, clock.nanoTime());
     return true;
   }
 
@@ -109,23 +108,14 @@ final class StatusStage {
     return true;
   }
 
-  /** The encoder→global transform. */
-  ArTransform encoderTransform() {
-    return processor.getEncoderTransform();
-  }
-
   /** Declares the robot to be at {@code pose}; returns how the global frame moved. */
   ArTransform moveTo(ArPose pose) {
-    ArTransform before = processor.getEncoderTransform();
-    status = processor.moveTo(pose);
-    return processor.getEncoderTransform().compose(before.inverse());
+    return processor.moveTo(pose);
   }
 
   /** Maps odometry pose {@code encoder} to global pose {@code global}; returns the change. */
   ArTransform setEncoderTransform(ArPose encoder, ArPose global) {
-    ArTransform before = processor.getEncoderTransform();
-    status = processor.setEncoderTransform(encoder, global);
-    return processor.getEncoderTransform().compose(before.inverse());
+    return processor.setEncoderTransform(encoder, global);
   }
 
   void setHeadingCorrection(HeadingCorrection c) {

@@ -2,9 +2,11 @@ package org.jaria.robot;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
 
 import java.util.List;
 import org.jaria.geom.ArPose;
+import org.jaria.geom.ArTransform;
 import org.jaria.range.ArSensorReading;
 import org.junit.jupiter.api.Test;
 
@@ -12,6 +14,7 @@ class RobotStatusTest {
 
   @Test
   void theBuilderSetsEachComponentByName() {
+    ArTransform turned = ArTransform.between(ArPose.ORIGIN, new ArPose(1, 2, 30));
     RobotStatus s =
         RobotStatus.builder()
             .counter(7)
@@ -19,6 +22,7 @@ class RobotStatusTest {
             .pose(new ArPose(1, 2, 3))
             .encoderPose(new ArPose(4, 5, 6))
             .rawEncoderPose(new ArPose(7, 8, 9))
+            .encoderTransform(turned)
             .vel(10)
             .rotVel(11)
             .wheelVels(12, 13)
@@ -46,6 +50,7 @@ class RobotStatusTest {
             new ArPose(1, 2, 3),
             new ArPose(4, 5, 6),
             new ArPose(7, 8, 9),
+            turned,
             10,
             11,
             12,
@@ -72,11 +77,13 @@ class RobotStatusTest {
   }
 
   @Test
-  void aRelocalizedCopyChangesOnlyPoseAndSonar() {
+  void aRelocalizedCopyChangesOnlyPoseTransformAndSonar() {
     RobotStatus s = RobotStatus.builder().counter(3).vel(200).pose(new ArPose(1, 1, 0)).build();
-    RobotStatus moved = s.withPoseAndSonars(new ArPose(5, 5, 90), List.of());
+    ArTransform t = ArTransform.between(new ArPose(1, 1, 0), new ArPose(5, 5, 90));
+    RobotStatus moved = s.relocalized(new ArPose(5, 5, 90), t, List.of());
     assertNotEquals(s.pose(), moved.pose());
     assertEquals(new ArPose(5, 5, 90), moved.pose());
+    assertSame(t, moved.encoderTransform());
     assertEquals(200, moved.vel());
     assertEquals(3, moved.counter());
   }
@@ -87,5 +94,6 @@ class RobotStatusTest {
     assertEquals(-1, s.counter());
     assertEquals(-1, s.chargeState());
     assertEquals(ArPose.ORIGIN, s.pose());
+    assertSame(ArTransform.IDENTITY, s.encoderTransform());
   }
 }

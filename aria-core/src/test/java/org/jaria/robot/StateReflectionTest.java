@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.jaria.action.ArActionDesired;
 import org.jaria.geom.ArPose;
+import org.jaria.geom.ArTransform;
 import org.jaria.protocol.ArCommands;
 import org.jaria.robot.DirectMotion.RotType;
 import org.jaria.robot.DirectMotion.TransType;
@@ -30,7 +31,7 @@ class StateReflectionTest {
   private static CycleCommands cycle(
       long nowMs, DirectMotion direct, ArActionDesired desired, ReflectionMemory before) {
     return StateReflection.decide(
-        new StateReflection.Inputs(nowMs * MS, direct, desired, STILL, 0, SETTINGS), before);
+        new StateReflection.Inputs(nowMs * MS, direct, desired, STILL, SETTINGS), before);
   }
 
   private static DirectMotion vel(double v, long atMs) {
@@ -100,7 +101,7 @@ class StateReflectionTest {
         DirectMotion.NONE.withTrans(TransType.DIST_NEW, 1000, 0, 50 * MS, ArPose.ORIGIN);
     CycleCommands c =
         StateReflection.decide(
-            new StateReflection.Inputs(100 * MS, move, NO_DESIRE, STILL, 0, noMove), CONNECTED);
+            new StateReflection.Inputs(100 * MS, move, NO_DESIRE, STILL, noMove), CONNECTED);
     // sqrt(2 * 200 mm/s² * 1000 mm) = 632 mm/s, capped at the 400 mm/s maximum.
     assertTrue(c.commands().contains(MotionCommand.of(ArCommands.VEL, 400)), c.toString());
     assertEquals(TransType.DIST, c.direct().transType());
@@ -132,9 +133,15 @@ class StateReflectionTest {
   @Test
   void aHeadingIsSentInTheRobotsOwnFrame() {
     DirectMotion head = DirectMotion.NONE.withRot(RotType.HEADING, 90, 50 * MS);
+    // The status carries the encoder→global transform: here the encoder frame is turned 30°.
+    RobotStatus turned =
+        STILL.toBuilder()
+            .encoderTransform(ArTransform.between(ArPose.ORIGIN, new ArPose(0, 0, 30)))
+            .pose(new ArPose(0, 0, 30))
+            .build();
     CycleCommands c =
         StateReflection.decide(
-            new StateReflection.Inputs(100 * MS, head, NO_DESIRE, STILL, 30, SETTINGS), CONNECTED);
+            new StateReflection.Inputs(100 * MS, head, NO_DESIRE, turned, SETTINGS), CONNECTED);
     // Global 90° with the encoder frame turned 30° is 60° for the robot.
     assertTrue(c.commands().contains(MotionCommand.of(ArCommands.HEAD, 60)), c.toString());
   }
