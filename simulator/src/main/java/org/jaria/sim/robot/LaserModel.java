@@ -7,8 +7,9 @@ import org.jaria.sim.world.WorldGeometry;
 
 /**
  * A simulated laser range finder (a SICK LMS-200 as MobileSim models it): one ray per reading over
- * the field of view (default −90° to +90° at 1°, 181 readings), nearest hit or the maximum range,
- * small seeded noise. Scans are taken on request (once per SIP cycle while streaming).
+ * the field of view (default −90° to +90° at 1°, 181 readings), nearest hit with small seeded
+ * noise, or {@link #NO_ECHO_MM} for a beam that hits nothing within the maximum range. Scans are
+ * taken on request (once per SIP cycle while streaming).
  *
  * <p>Not thread-safe: used by the world thread.
  */
@@ -16,6 +17,13 @@ public final class LaserModel {
 
   /** Standard deviation of the range noise, mm. */
   public static final double NOISE_MM = 5;
+
+  /**
+   * The range sent for a beam with no echo, mm: MobileSim's (its LMS-200's 32.767 m "maximum
+   * range"), above the 32 m every ARIA laser class takes as its largest valid reading, so ARIA (and
+   * JAria) drop it as "no reading" instead of seeing a wall 32 m away.
+   */
+  public static final int NO_ECHO_MM = 32767;
 
   private final RobotModel model;
   private final RandomGenerator rng;
@@ -116,18 +124,18 @@ public final class LaserModel {
         ranges[k] = (int) Math.round(ArMath.clamp(r, 0, max));
         echo[k] = true;
       } else {
-        ranges[k] = (int) Math.round(max);
+        ranges[k] = NO_ECHO_MM;
         echo[k] = false;
       }
     }
   }
 
-  /** Ranges of the last scan, mm (a copy). */
+  /** Ranges of the last scan as sent, mm ({@link #NO_ECHO_MM} where nothing was hit; a copy). */
   public int[] ranges() {
     return ranges.clone();
   }
 
-  /** Range {@code k} of the last scan, mm. */
+  /** Range {@code k} of the last scan as sent, mm ({@link #NO_ECHO_MM} for no echo). */
   public int range(int k) {
     return ranges[k];
   }
