@@ -123,7 +123,10 @@ public final class RobotModels {
     return fromParams(subtype, p, tops, 0);
   }
 
-  /** A model from parameters with these top speeds ({mm/s, deg/s}) and top accelerations (0: 2000 mm/s², 500 deg/s²). */
+  /**
+   * A model from parameters with these top speeds ({mm/s, deg/s}) and top accelerations (0: 2000
+   * mm/s², 500 deg/s²).
+   */
   private static RobotModel fromParams(
       String subtype, ArRobotParams p, double[] tops, double accTop) {
     Optional<ArPose> mount = mobileSimLaserMount(subtype);

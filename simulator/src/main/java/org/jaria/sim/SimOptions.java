@@ -110,8 +110,8 @@ public record SimOptions(
     private Builder() {}
 
     /**
-     * Whose robot to copy; also sets the sonar and the odometry error to the profile's (call
-     * {@link #sonar} or {@link #odometryError} after this to change them).
+     * Whose robot to copy; also sets the sonar and the odometry error to the profile's (call {@link
+     * #sonar} or {@link #odometryError} after this to change them).
      */
     public Builder profile(SimProfile p) {
       profile = p;

@@ -27,8 +27,8 @@ package org.jaria.sim;
  * @param specularDegrees incidence angle (from the surface normal) beyond which a ray is lost
  * @param nearReadsMin whether an echo nearer than {@code minRangeMm} reads {@code minRangeMm}
  *     (MobileSim) rather than no echo (ARCOS)
- * @param allEachSip whether every transducer is measured every 100 ms and every SIP carries all
- *     the readings (MobileSim) rather than the sonar cycle's (ARCOS)
+ * @param allEachSip whether every transducer is measured every 100 ms and every SIP carries all the
+ *     readings (MobileSim) rather than the sonar cycle's (ARCOS)
  */
 public record SonarOptions(
     double coneDegrees,

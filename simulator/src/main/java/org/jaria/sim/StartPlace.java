@@ -88,9 +88,7 @@ public record StartPlace(Kind kind, ArPose pose) {
 
   /** Where robot {@code index} of MobileSim's row starting at {@code first} stands. */
   public static ArPose inRow(ArPose first, int index) {
-    return index == 0
-        ? first
-        : new ArPose(first.x(), first.y() - ROW_SPACING * index, first.th());
+    return index == 0 ? first : new ArPose(first.x(), first.y() - ROW_SPACING * index, first.th());
   }
 
   /** minX, minY, maxX, maxY of the map's lines and points (a 10 m square at the origin if none). */

@@ -79,6 +79,6 @@ final class Views {
       }
     }
     return new LaserScan(
-        new ArPose(l.originX(), l.originY(), l.originTh()), l.getStart(), l.getIncrement(), ranges);
+        new ArPose(l.originX(), l.originY(), l.originTh()), l.getStart(), l.beamSpacing(), ranges);
   }
 }

@@ -23,7 +23,9 @@ class StartPlaceTest {
             ArPose.ORIGIN);
     ArPose out = StartPlace.parse("outside").poseFor(1, box, new SplittableRandom(1));
     assertEquals(
-        new ArPose(-2_000, 7_000, 0), out, "2 m left of the map, level with its top, 1 m per robot");
+        new ArPose(-2_000, 7_000, 0),
+        out,
+        "2 m left of the map, level with its top, 1 m per robot");
     StartPlace random = StartPlace.parse("random");
     ArPose a = random.poseFor(0, box, new SplittableRandom(7));
     assertEquals(a, random.poseFor(0, box, new SplittableRandom(7)), "the seed decides");

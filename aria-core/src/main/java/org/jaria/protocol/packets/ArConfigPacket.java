@@ -16,8 +16,7 @@ import org.jaria.protocol.ArRobotPacket;
  * AriaCoda alike) and MobileSim sends: after ShutdownVolts one firmware version string, then the
  * gyro calibration, the kinematics delay, the lateral limits and the charge threshold. Fields from
  * {@link Field#FIRMWARE_VERSION} on are absent in older firmware; bytes after the last known field
- * (newer firmware: PDB port, gyro rate limit, power bits, ...) are kept and written back
- * unchanged.
+ * (newer firmware: PDB port, gyro rate limit, power bits, ...) are kept and written back unchanged.
  */
 public final class ArConfigPacket {
 

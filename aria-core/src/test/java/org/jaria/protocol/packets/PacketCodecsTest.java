@@ -97,7 +97,8 @@ class PacketCodecsTest {
     c.set(ArConfigPacket.Field.SERIAL_NUMBER, "SIM").set(ArConfigPacket.Field.NAME, "robbie");
     c.set(ArConfigPacket.Field.ROT_VEL_TOP, 500).set(ArConfigPacket.Field.TRANS_VEL_TOP, 2200);
     c.set(ArConfigPacket.Field.SIP_CYCLE_TIME, 100).set(ArConfigPacket.Field.WATCHDOG, 2000);
-    c.set(ArConfigPacket.Field.DRIFT_FACTOR, -123).set(ArConfigPacket.Field.FIRMWARE_VERSION, "S.1");
+    c.set(ArConfigPacket.Field.DRIFT_FACTOR, -123)
+        .set(ArConfigPacket.Field.FIRMWARE_VERSION, "S.1");
     c.set(ArConfigPacket.Field.GYRO_CCW, 77);
     c.setExtra(new byte[] {1, 2, 3});
     c.encode(p);

@@ -39,10 +39,27 @@ public final class LaserModel {
   private boolean legacyCommands;
   private final SrisimLaserSetup srisim = new SrisimLaserSetup();
 
+  /**
+   * Whether the beams are spread as MobileSim's laser spreads them: {@code n} readings over the
+   * field of view {@code span} lie {@code span / n} apart (not {@code span / (n − 1)}), so the last
+   * one falls one increment short of the end: a 181-reading scan of 180° has its beams 0.9945°
+   * apart and its last at 89.0°, while ARIA places reading k at −90 + k°.
+   */
+  private final boolean mobileSimSpacing;
+
   /** A laser mounted as {@code model} says. */
   public LaserModel(RobotModel model, RandomGenerator rng) {
+    this(model, rng, false);
+  }
+
+  /**
+   * A laser mounted as {@code model} says, its beams spread as MobileSim's are ({@code
+   * mobileSimSpacing}) or exactly one increment apart.
+   */
+  public LaserModel(RobotModel model, RandomGenerator rng, boolean mobileSimSpacing) {
     this.model = model;
     this.rng = rng;
+    this.mobileSimSpacing = mobileSimSpacing;
   }
 
   /**
@@ -96,9 +113,17 @@ public final class LaserModel {
     return Math.min(startDeg, endDeg);
   }
 
-  /** Angle between readings, degrees. */
+  /** Angle between readings, degrees (as set: what the client asked for). */
   public double getIncrement() {
     return incDeg;
+  }
+
+  /**
+   * Angle between the beams of a scan, degrees (see {@link #LaserModel(RobotModel, RandomGenerator,
+   * boolean)}).
+   */
+  public double beamSpacing() {
+    return mobileSimSpacing ? Math.abs(endDeg - startDeg) / readingCount() : incDeg;
   }
 
   /** Scans from the robot's true pose (x, y mm, thRad). */
@@ -115,7 +140,7 @@ public final class LaserModel {
     originTh = Math.toDegrees(thRad) + model.getLaserTh();
     double max = model.getLaserMaxRange();
     double first = Math.toRadians(originTh + getStart());
-    double inc = Math.toRadians(incDeg);
+    double inc = Math.toRadians(beamSpacing());
     for (int k = 0; k < count; k++) {
       double a = first + k * inc;
       world.cast(originX, originY, Math.cos(a), Math.sin(a), max, self, hit);

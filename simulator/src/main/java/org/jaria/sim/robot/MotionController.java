@@ -92,7 +92,9 @@ public final class MotionController {
     resetSettings();
   }
 
-  /** Returns every limit to the defaults (the model's FLASH, or MobileSim's), as a new session does. */
+  /**
+   * Returns every limit to the defaults (the model's FLASH, or MobileSim's), as a new session does.
+   */
   public void resetSettings() {
     if (mobileSim) {
       transVelMax = MOBILESIM_TRANS_VEL_MAX;
@@ -307,13 +309,7 @@ public final class MotionController {
       lastDs = (v0 + vel) / 2 * dt;
     } else {
       double r = moveRemaining;
-      double want =
-          stopping
-              ? 0
-              : Math.signum(r)
-                  * Math.min(
-                      Math.min(transVelMax, model.getTransVelTop()),
-                      Math.sqrt(2 * td * Math.abs(r)));
+      double want = stopping ? 0 : Math.signum(r) * moveSpeed(Math.abs(r), td);
       vel = approach(vel, want, ta, td, dt);
       lastDs = (v0 + vel) / 2 * dt;
       if (Math.abs(r) < 1e-6 || (r > 0 ? lastDs >= r : lastDs <= r)) {
@@ -332,8 +328,7 @@ public final class MotionController {
     } else {
       double err = ArMath.subAngle(headingTarget, headingDeg);
       double max = Math.min(err >= 0 ? rotVelMaxPos : rotVelMaxNeg, model.getRotVelTop());
-      double want =
-          stopping ? 0 : Math.signum(err) * Math.min(max, Math.sqrt(2 * rd * Math.abs(err)));
+      double want = stopping ? 0 : Math.signum(err) * headSpeed(Math.abs(err), max, rd);
       rotVel = approach(rotVel, want, ra, rd, dt);
       lastDth = (w0 + rotVel) / 2 * dt;
       if (Math.abs(err) < 1e-6 || (err > 0 ? lastDth >= err : lastDth <= err)) {
@@ -346,6 +341,35 @@ public final class MotionController {
       eStop = false;
     }
   }
+
+  /**
+   * How fast MOVE drives with {@code remaining} mm to go: ARCOS's trapezoid (as fast as it can
+   * still stop at the goal with deceleration {@code decel}), or MobileSim's proportional control
+   * (the distance to go in metres times the SETV speed, per second).
+   */
+  private double moveSpeed(double remaining, double decel) {
+    double max = Math.min(transVelMax, model.getTransVelTop());
+    if (mobileSim) {
+      return Math.min(model.getTransVelTop(), remaining / 1000 * transVelMax);
+    }
+    return Math.min(max, Math.sqrt(2 * decel * remaining));
+  }
+
+  /**
+   * How fast HEAD turns with {@code error} degrees to go: ARCOS's trapezoid, or MobileSim's
+   * proportional control (the error in radians as radians per second, at least 0.007 rad/s, at most
+   * the SETRV speed), which turns slowly as it nears the heading: ARIA's actions, which send a HEAD
+   * a little ahead of the robot every cycle, turn a MobileSim robot much more gently.
+   */
+  private double headSpeed(double error, double max, double decel) {
+    if (mobileSim) {
+      return Math.min(max, Math.max(MOBILESIM_HEAD_MIN_SPEED, error));
+    }
+    return Math.min(max, Math.sqrt(2 * decel * error));
+  }
+
+  /** MobileSim's slowest turn towards a HEAD heading, deg/s (0.007 rad/s). */
+  static final double MOBILESIM_HEAD_MIN_SPEED = Math.toDegrees(0.007);
 
   /** Moves {@code cur} towards {@code target} by at most one tick of (de)acceleration. */
   static double approach(double cur, double target, double acc, double dec, double dt) {

@@ -152,7 +152,7 @@ public final class RobotBody {
     this.io = profile == SimProfile.MOBILESIM ? new RobotIo(0xFF, 0xFF) : new RobotIo();
     this.odometry = new Odometry(model.getTrackWidth(), odometryError, rngs[0]);
     this.sonar = new SonarModel(model, sonarOptions, rngs[1]);
-    this.laser = hasLaser ? new LaserModel(model, rngs[2]) : null;
+    this.laser = hasLaser ? new LaserModel(model, rngs[2], profile == SimProfile.MOBILESIM) : null;
     this.gyro = hasGyro ? new GyroModel(model.getGyroScaler(), rngs[3]) : null;
     this.gripper = hasGripper ? new Gripper() : null;
     this.startPose = start;

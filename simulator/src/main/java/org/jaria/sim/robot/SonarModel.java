@@ -14,9 +14,9 @@ import org.jaria.sim.world.WorldGeometry;
  * transducer is kept as ground truth.
  *
  * <p>With {@link SonarOptions#allEachSip()} (MobileSim) every transducer of the enabled arrays is
- * measured every {@value SonarOptions#ALL_EACH_SIP_UPDATE_MILLIS} ms instead, nothing is queued, and
- * each SIP carries the last reading of every transducer measured since the session opened ({@link
- * #measuredThisSession}).
+ * measured every {@value SonarOptions#ALL_EACH_SIP_UPDATE_MILLIS} ms instead, nothing is queued,
+ * and each SIP carries the last reading of every transducer measured since the session opened
+ * ({@link #measuredThisSession}).
  *
  * <p>Not thread-safe: used by the world thread.
  */

@@ -12,8 +12,9 @@ import org.jaria.sim.robot.RobotModel;
  * values for every model but the type, subtype and whether it has sonar: "tops" of 9999 (it has no
  * firmware limits), a PWM maximum of 400, firmware "S.0", no bumpers, gyro, sonar cycle, battery
  * thresholds, encoder constants or gyro calibration (all 0), autobaud 2, and the session's current
- * speeds and accelerations (3000 mm/s, 150 °/s, 300 mm/s², 100 °/s² until the client changes
- * them). Both sonar rings are reported whenever the model has sonar at all, as MobileSim does.
+ * speeds and accelerations (3000 mm/s, 150 °/s, 300 mm/s², 100 °/s² until the client changes them),
+ * lateral tops of 9999 and lateral settings of 0. Both sonar rings are reported whenever the model
+ * has sonar at all, as MobileSim does.
  */
 final class MobileSimConfig {
 
@@ -28,11 +29,6 @@ final class MobileSimConfig {
 
   /** MobileSim's autobaud byte (ARIA reads 2 as "reset baud"). */
   static final int RESET_BAUD = 2;
-
-  /** MobileSim's default lateral limits (mm/s, mm/s²), reported although its Pioneers have none. */
-  static final int LAT_VEL_MAX = 3000;
-
-  static final int LAT_ACCEL = 300;
 
   private MobileSimConfig() {}
 
@@ -67,9 +63,7 @@ final class MobileSimConfig {
     c.set(Field.FIRMWARE_VERSION, FIRMWARE);
     c.set(Field.LAT_VEL_TOP, FAKE_TOP);
     c.set(Field.LAT_ACCEL_TOP, FAKE_TOP);
-    c.set(Field.LAT_VEL_MAX, LAT_VEL_MAX);
-    c.set(Field.LAT_ACCEL, LAT_ACCEL);
-    c.set(Field.LAT_DECEL, LAT_ACCEL);
+    // lateral maximum, acceleration and deceleration stay 0, as MobileSim sends them
     return c.encode(p);
   }
 

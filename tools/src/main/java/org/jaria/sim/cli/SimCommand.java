@@ -144,8 +144,9 @@ public final class SimCommand implements Callable<Integer> {
       paramLabel = "TYPE",
       description =
           "The camera or pan-tilt unit on every robot's AUX1 port, by ARIA's PTZType names: vcc4"
-              + " (default), sony, dpptu or none")
-  String ptzType = "vcc4";
+              + " (the pioneer profile's default), sony, dpptu or none (the mobilesim profile's"
+              + " default: MobileSim simulates no camera)")
+  String ptzType;
 
   /** The old switch for what is now the default (SRISim laser commands on). */
   @Option(
@@ -275,7 +276,8 @@ public final class SimCommand implements Callable<Integer> {
     }
     return o.withLegacyLaserCommands(o.laser() && !noSrisimLaserCompat)
         .withSrisimCompat(srisimCompat)
-        .withPtzType(ptzType)
+        .withPtzType(
+            ptzType != null ? ptzType : profile() == SimProfile.MOBILESIM ? "none" : "vcc4")
         .withGripper(profile().gripperByDefault());
   }
 
@@ -319,7 +321,9 @@ public final class SimCommand implements Callable<Integer> {
     return false;
   }
 
-  /** MobileSim's spellings of {@link SimCommand}'s own options (see {@link #usesMobileSimOptions}). */
+  /**
+   * MobileSim's spellings of {@link SimCommand}'s own options (see {@link #usesMobileSimOptions}).
+   */
   private static final Set<String> MOBILESIM_SPELLINGS =
       Set.of(
           "-m",
