@@ -62,6 +62,7 @@ start_amrisim() {
   (cd "$amri" && DISPLAY="$display" AMRISIM="$amri" exec ./AMRISim --no-gui --noninteractive \
     ${AMRISIM_ARGS:--m AMROffice.map -r p3dx:robot1} -p "$port") >"$out/amrisim-$1.log" 2>&1 &
   amripid=$!
+  disown "$amripid" # stopped by its id below; spares the "Killed" line of this shell
   amriport=""
   # up to 30 s: it retries a busy port for 6 s before it moves on
   for _ in $(seq 1 150); do

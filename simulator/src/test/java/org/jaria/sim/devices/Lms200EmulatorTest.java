@@ -182,7 +182,8 @@ class Lms200EmulatorTest {
     try (DeviceTcpServer server =
             new DeviceTcpServer(
                 0, (c, i) -> new Lms200Emulator(c, LaserSensor.of(robot), DeviceFaults.NONE, 20));
-        java.net.Socket socket = new java.net.Socket("127.0.0.1", server.getPort())) {
+        java.net.Socket socket =
+            new java.net.Socket(java.net.InetAddress.getLoopbackAddress(), server.getPort())) {
       socket.setSoTimeout((int) PATIENCE_MS);
       socket.getOutputStream().write(ariaCoda);
       java.io.DataInputStream in = new java.io.DataInputStream(socket.getInputStream());
