@@ -5,6 +5,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.SplittableRandom;
@@ -47,6 +48,20 @@ import picocli.CommandLine.Spec;
       "Connect any ARIA client (e.g. -remoteHost localhost -remoteRobotTcpPort 8101). Ctrl-C stops."
     })
 public final class SimCommand implements Callable<Integer> {
+
+  /**
+   * MobileSim's spellings of {@link SimCommand}'s own options (see {@link #usesMobileSimOptions}).
+   */
+  private static final Set<String> MOBILESIM_SPELLINGS =
+      Set.of(
+          "-m",
+          "-map",
+          "-r",
+          "-robot",
+          "--srisim-compat",
+          "--no-srisim-laser-compat",
+          "--ignore-command",
+          "--cwd");
 
   @Spec private CommandSpec spec;
 
@@ -308,7 +323,7 @@ public final class SimCommand implements Callable<Integer> {
     if (spec.commandLine().getParseResult() == null) {
       return false;
     }
-    Set<String> names = new java.util.HashSet<>(MOBILESIM_SPELLINGS);
+    Set<String> names = new HashSet<>(MOBILESIM_SPELLINGS);
     for (OptionSpec o : spec.mixins().get("mobileSim").options()) {
       names.addAll(List.of(o.names()));
     }
@@ -320,20 +335,6 @@ public final class SimCommand implements Callable<Integer> {
     }
     return false;
   }
-
-  /**
-   * MobileSim's spellings of {@link SimCommand}'s own options (see {@link #usesMobileSimOptions}).
-   */
-  private static final Set<String> MOBILESIM_SPELLINGS =
-      Set.of(
-          "-m",
-          "-map",
-          "-r",
-          "-robot",
-          "--srisim-compat",
-          "--no-srisim-laser-compat",
-          "--ignore-command",
-          "--cwd");
 
   /** The robot models to add, in order (none by default if there are robot factories). */
   List<String> robotModels() {
