@@ -12,11 +12,7 @@
 # default ./jaria of this checkout), JARIA_CP (class path for LaserProbe, default this checkout's
 # tools/target jar and libraries).
 #
-# Why it works this way: after a client leaves, AMRISim closes its robot's listening port and opens
-# it again; while the old connection is in TIME_WAIT it cannot, and after three tries two seconds
-# apart it moves the robot to the next free port. So the script starts a fresh AMRISim for each
-# client, reads the port AMRISim says it is ready on from its log (not the one it asked for), and
-# stops each AMRISim by the process id it started (never by name: other simulators may run).
+# Each client gets a fresh AMRISim (amrisim-lib.sh says why).
 set -uo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/.." && pwd)"
@@ -26,87 +22,9 @@ jaria="${JARIA:-$root/jaria}"
 cp="${JARIA_CP:-$root/tools/target/jaria-tools.jar:$root/tools/target/lib/*}"
 mkdir -p "$out"
 
-amripid=""
-xvfbpid=""
-
-# AMRISim needs an X display even with --no-gui: one Xvfb for the whole run, on a display number it
-# picks itself (-displayfd), ended by its process id.
-start_xvfb() {
-  local fdfile="$out/xvfb.display"
-  : >"$fdfile"
-  Xvfb -displayfd 3 -nolisten tcp -screen 0 640x480x24 3>"$fdfile" >"$out/xvfb.log" 2>&1 &
-  xvfbpid=$!
-  for _ in $(seq 1 50); do
-    [ -s "$fdfile" ] && break
-    sleep 0.1
-  done
-  display=":$(tr -d '\n' <"$fdfile")"
-  if [ "$display" = ":" ]; then
-    echo "Xvfb did not start (see $out/xvfb.log)" >&2
-    exit 1
-  fi
-}
-
-# Ends process $1: SIGINT (AMRISim's Ctrl-C), then SIGTERM, then SIGKILL, a few seconds apart.
-stop_pid() {
-  local pid="$1" sig
-  [ -n "$pid" ] || return 0
-  for sig in INT TERM KILL; do
-    kill -"$sig" "$pid" 2>/dev/null || break
-    for _ in $(seq 1 25); do
-      kill -0 "$pid" 2>/dev/null || break 2
-      sleep 0.2
-    done
-  done
-  wait "$pid" 2>/dev/null
-}
-
-cleanup() {
-  stop_pid "$amripid"
-  stop_pid "$xvfbpid"
-}
+# shellcheck source=conformance/amrisim-lib.sh
+. "$here/amrisim-lib.sh"
 trap cleanup EXIT
-
-# The TCP port AMRISim last said its robot is ready on (empty if it has not said so yet).
-amrisim_port() {
-  sed -n 's/.*ready for a client to connect.* on TCP port \([0-9][0-9]*\)\..*/\1/p' \
-    "$out/amrisim-$1.log" 2>/dev/null | tail -n 1
-}
-
-# Starts AMRISim (log amrisim-$1.log) asking for $port; sets amripid and amriport.
-start_amrisim() {
-  # exec: the id of the background job is AMRISim's own
-  (cd "$amri" && DISPLAY="$display" AMRISIM="$amri" exec ./AMRISim --no-gui --noninteractive \
-    -m AMROffice.map -r p3dx:robot1 -p "$port") >"$out/amrisim-$1.log" 2>&1 &
-  amripid=$!
-  amriport=""
-  # up to 30 s: it retries a busy port for 6 s before it moves on
-  for _ in $(seq 1 150); do
-    amriport=$(amrisim_port "$1")
-    [ -n "$amriport" ] && break
-    kill -0 "$amripid" 2>/dev/null || break
-    sleep 0.2
-  done
-  if [ -z "$amriport" ]; then
-    echo "AMRISim did not become ready (see $out/amrisim-$1.log)" >&2
-    stop_pid "$amripid"
-    amripid=""
-    port=$((port + 1))
-    return 1
-  fi
-  [ "$amriport" != "$port" ] && echo "note: AMRISim asked for port $port, listens on $amriport"
-  return 0
-}
-
-stop_amrisim() {
-  stop_pid "$amripid"
-  amripid=""
-  # The next AMRISim asks for the port after the last one this one reported (it moves its robot
-  # after each session): the ports it used may still be in TIME_WAIT.
-  local last
-  last=$(amrisim_port "$1")
-  port=$((${last:-$amriport} + 1))
-}
 
 start_xvfb
 for what in wander goto; do

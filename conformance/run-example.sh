@@ -14,8 +14,9 @@
 # the connection arguments in ARIAARGS instead of the command line, for examples that refuse
 # unknown arguments themselves, like gyroExample), KEYS (keys to type into a keyboard-driven
 # example through a pseudo-terminal, see below; demo has a default).
-# The result line: example | connected | laser connected after | robot moved | protocol warnings |
-# timing warnings | exit status | wall time.
+# The result line: example | connected | laser connected after | robot drove | protocol warnings |
+# timing warnings | exit status | wall time. "Robot drove" is the length of the robot's true path
+# (the simulator's odometer), not how far it ended from where it started.
 set -uo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/.." && pwd)"
@@ -80,11 +81,11 @@ t0=$(grep -a -m1 "Connected to robot" "$arialog" | cut -d' ' -f1)
 t1=$(grep -a -m1 "Connected to simulated laser" "$arialog" | cut -d' ' -f1)
 if [ -n "$t0" ] && [ -n "$t1" ]; then laser=$(printf '%.2f s' "$(echo "$t1 - $t0" | bc)"); fi
 if grep -q "Failed to connect to simulated laser" "$arialog"; then laser=FAILED; fi
-moved=$(sed -n 's/.*moved \([0-9]*\) mm.*/\1 mm/p' "$simlog" | head -n1)
+drove=$(sed -n 's/.*; drove \([0-9]*\) mm.*/\1 mm/p' "$simlog" | head -n1)
 # Protocol trouble ARIA reports, and ARIA's "cycle took too long" timing warnings (which a
 # loaded machine causes on its own) counted apart.
 warnings=$(grep -aicE "No packet handler wanted|too many readings|could not|failed|incorrect number|no response|bad header|unrecognized" "$arialog")
 timing=$(grep -aicE "took [0-9]+ ms to run|sync tasks too long" "$arialog")
 elapsed=$(echo "$(date +%s.%N) - $start" | bc)
 printf '%s | %s | %s | %s | %s | %s | %s | %.0f s\n' \
-  "$example" "$connected" "$laser" "${moved:-?}" "$warnings" "$timing" "$status" "$elapsed"
+  "$example" "$connected" "$laser" "${drove:-?}" "$warnings" "$timing" "$status" "$elapsed"

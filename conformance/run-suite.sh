@@ -35,7 +35,7 @@ suite=(
   "singleThreadLoopExample 20"
 )
 
-echo "| example | connected | laser connected after | robot moved | protocol warnings | timing warnings | exit status | ran |"
+echo "| example | connected | laser connected after | robot drove | protocol warnings | timing warnings | exit status | ran |"
 echo "|---|---|---|---|---|---|---|---|"
 for entry in "${suite[@]}"; do
   read -r name seconds extra <<<"$entry"

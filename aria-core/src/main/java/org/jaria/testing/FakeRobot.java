@@ -190,7 +190,7 @@ public final class FakeRobot {
     c.set(ArConfigPacket.Field.TRANS_ACCEL, 300).set(ArConfigPacket.Field.TRANS_DECEL, 300);
     c.set(ArConfigPacket.Field.ROT_ACCEL, 100).set(ArConfigPacket.Field.ROT_DECEL, 100);
     c.set(ArConfigPacket.Field.SIP_CYCLE_TIME, 100).set(ArConfigPacket.Field.WATCHDOG, 2000);
-    c.set(ArConfigPacket.Field.FIRMWARE_MAJOR, "F").set(ArConfigPacket.Field.FIRMWARE_MINOR, "1");
+    c.set(ArConfigPacket.Field.FIRMWARE_VERSION, "F.1");
     return c.encode(new ArRobotPacket());
   }
 

@@ -6,6 +6,7 @@ import java.util.Optional;
 import org.jaria.geom.ArPose;
 import org.jaria.params.ArRobotParams;
 import org.jaria.sim.robot.RobotModel;
+import org.jaria.sim.robot.SimProfile;
 
 /**
  * Robot models from ARIA robot parameter files: the footprint (RobotLengthFront/Rear, RobotWidth),
@@ -38,7 +39,50 @@ public final class RobotModels {
           "p3dx-sh-lms", new ArPose(21, 0, 0),
           "peoplebot-sh", new ArPose(21, 0, 0));
 
+  /**
+   * The top speeds of MobileSim's robot models ({@code max_speed}): subtype → {mm/s, deg/s}. A
+   * robot MobileSim simulates goes no faster whatever the client asks; models it does not define
+   * take its base Pioneer's 2000 mm/s and 1.74 rad/s.
+   */
+  private static final Map<String, double[]> MOBILESIM_TOPS =
+      Map.of(
+          "amigo", new double[] {500, Math.toDegrees(0.87)},
+          "amigo-sh", new double[] {750, Math.toDegrees(0.87)},
+          "p2at", new double[] {750, Math.toDegrees(1.74)},
+          "p3at", new double[] {600, Math.toDegrees(0.75)},
+          "p3at-sh", new double[] {600, Math.toDegrees(0.75)},
+          "p3dx", new double[] {1000, Math.toDegrees(1.74)},
+          "p3dx-sh", new double[] {1000, Math.toDegrees(1.74)},
+          "p3dx-sh-lms", new double[] {1000, Math.toDegrees(1.74)},
+          "peoplebot-sh", new double[] {750, Math.toDegrees(1.74)});
+
+  /** MobileSim's base model's top speeds, for models it does not define: mm/s, deg/s. */
+  private static final double[] MOBILESIM_BASE_TOPS = {2000, Math.toDegrees(1.74)};
+
+  /**
+   * How hard MobileSim stops (its E_STOP and the fake "top" accelerations its CONFIGpac reports),
+   * mm/s² and deg/s².
+   */
+  public static final int MOBILESIM_ACC_TOP = 9999;
+
   private RobotModels() {}
+
+  /**
+   * The model of {@code subtype} as {@code profile} simulates it: a real Pioneer's ({@link
+   * #forSubtype(String)}), or MobileSim's, whose top speeds are its model definitions' and whose
+   * stops are immediate.
+   *
+   * @throws IllegalArgumentException if JAria has no parameter file for it
+   */
+  public static RobotModel forSubtype(String subtype, SimProfile profile) {
+    RobotModel m = forSubtype(subtype);
+    if (profile != SimProfile.MOBILESIM) {
+      return m;
+    }
+    String s = subtype.trim().toLowerCase(Locale.ROOT);
+    double[] tops = MOBILESIM_TOPS.getOrDefault(s, MOBILESIM_BASE_TOPS);
+    return fromParams(s, ArRobotParams.forSubtype(s), tops, MOBILESIM_ACC_TOP);
+  }
 
   /**
    * Where MobileSim mounts the laser of {@code subtype} (case-insensitive), or empty if MobileSim's
@@ -73,9 +117,21 @@ public final class RobotModels {
 
   /** A model from parameters (e.g. a user's own .p file layered on the defaults). */
   public static RobotModel fromParams(String subtype, ArRobotParams p) {
+    double[] tops = {
+      positive(p.getAbsoluteMaxVelocity(), 2200), positive(p.getAbsoluteMaxRotVelocity(), 500)
+    };
+    return fromParams(subtype, p, tops, 0);
+  }
+
+  /**
+   * A model from parameters with these top speeds ({mm/s, deg/s}) and top accelerations (0: 2000
+   * mm/s², 500 deg/s²).
+   */
+  private static RobotModel fromParams(
+      String subtype, ArRobotParams p, double[] tops, double accTop) {
     Optional<ArPose> mount = mobileSimLaserMount(subtype);
-    double transTop = positive(p.getAbsoluteMaxVelocity(), 2200);
-    double rotTop = positive(p.getAbsoluteMaxRotVelocity(), 500);
+    double transTop = tops[0];
+    double rotTop = tops[1];
     RobotModel.Builder b =
         RobotModel.builder(subtype)
             .robotClass(
@@ -85,7 +141,7 @@ public final class RobotModels {
             .footprint(p.getRobotLengthFront(), p.getRobotLengthRear(), p.getRobotWidth())
             .radius(p.getRobotRadius())
             .velTops(transTop, rotTop)
-            .accTops(2000, 500)
+            .accTops(accTop > 0 ? accTop : 2000, accTop > 0 ? accTop : 500)
             .velMaxes(
                 positive(p.getTransVelMax(), Math.min(1500, transTop)),
                 positive(p.getRotVelMax(), Math.min(300, rotTop)))

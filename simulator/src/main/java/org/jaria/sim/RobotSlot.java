@@ -97,7 +97,8 @@ final class RobotSlot {
             rngs,
             o.laser(),
             o.gyro(),
-            o.gripper());
+            o.gripper(),
+            options.profile());
     if (o.legacyLaserCommands()) {
       body.laser().setAcceptsLegacyCommands(true);
     }

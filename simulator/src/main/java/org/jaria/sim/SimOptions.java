@@ -1,6 +1,7 @@
 package org.jaria.sim;
 
 import java.time.Duration;
+import org.jaria.sim.robot.SimProfile;
 
 /**
  * World-wide settings of a simulation. Build with {@link #builder()}; {@link #defaults()} gives
@@ -17,6 +18,8 @@ import java.time.Duration;
  * @param basePort TCP port of the first robot (default 8101; each further robot takes the next; 0
  *     lets the system pick free ports)
  * @param server how the robots' ports treat their clients (timeouts, ignored commands, map folder)
+ * @param profile whose robot the simulator copies: a real Pioneer's (the default) or MobileSim's
+ *     (see {@link SimProfile})
  */
 public record SimOptions(
     long seed,
@@ -27,7 +30,8 @@ public record SimOptions(
     SonarOptions sonar,
     OdometryError odometryError,
     int basePort,
-    ServerOptions server) {
+    ServerOptions server,
+    SimProfile profile) {
 
   /** MobileSim's first robot port. */
   public static final int DEFAULT_PORT = 8101;
@@ -56,9 +60,15 @@ public record SimOptions(
     if (server == null) {
       throw new IllegalArgumentException("server options must not be null");
     }
+    if (profile == null) {
+      throw new IllegalArgumentException("the profile must not be null: MOBILESIM or PIONEER");
+    }
   }
 
-  /** Defaults: seed 1, 10 ms ticks, 100 ms SIPs, 2 s watchdog, default sonar, exact odometry. */
+  /**
+   * Defaults: seed 1, 10 ms ticks, 100 ms SIPs, 2 s watchdog, the {@link SimProfile#PIONEER
+   * pioneer} profile with its sonar and exact odometry.
+   */
   public static SimOptions defaults() {
     return builder().build();
   }
@@ -80,6 +90,7 @@ public record SimOptions(
     b.odometryError = odometryError;
     b.basePort = basePort;
     b.server = server;
+    b.profile = profile;
     return b;
   }
 
@@ -94,8 +105,22 @@ public record SimOptions(
     private OdometryError odometryError = OdometryError.NONE;
     private int basePort = DEFAULT_PORT;
     private ServerOptions server = ServerOptions.DEFAULTS;
+    private SimProfile profile = SimProfile.PIONEER;
 
     private Builder() {}
+
+    /**
+     * Whose robot to copy; also sets the sonar and the odometry error to the profile's (call {@link
+     * #sonar} or {@link #odometryError} after this to change them).
+     */
+    public Builder profile(SimProfile p) {
+      profile = p;
+      if (p != null) {
+        sonar = p.sonar();
+        odometryError = p.odometryError();
+      }
+      return this;
+    }
 
     /** Random seed. */
     public Builder seed(long s) {
@@ -167,7 +192,8 @@ public record SimOptions(
           sonar,
           odometryError,
           basePort,
-          server);
+          server,
+          profile);
     }
   }
 }

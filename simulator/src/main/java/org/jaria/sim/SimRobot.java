@@ -188,6 +188,19 @@ public final class SimRobot implements CameraMount {
     }
   }
 
+  /**
+   * How far the robot has driven since it was made, mm: the length of its true path, forwards and
+   * backwards alike (an odometer), not the distance from where it started.
+   */
+  public double getDistanceDriven() {
+    world.lock.lock();
+    try {
+      return slot.body.travelled();
+    } finally {
+      world.lock.unlock();
+    }
+  }
+
   /** Moves the robot (its odometry does not notice, as with SIM_SET_POSE). */
   public void setTruePose(ArPose p) {
     world.lock.lock();

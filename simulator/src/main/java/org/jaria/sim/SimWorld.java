@@ -162,9 +162,12 @@ public final class SimWorld implements AutoCloseable, CameraScene {
 
   // ---------------------------------------------------------------- robots
 
-  /** Adds a robot of model {@code subtype} at the map's start position. */
+  /**
+   * Adds a robot of model {@code subtype} at the map's start position, with a gripper if the
+   * world's profile gives one ({@link org.jaria.sim.robot.SimProfile#gripperByDefault()}).
+   */
   public SimRobot addRobot(String subtype) {
-    return addRobot(RobotOptions.of(subtype));
+    return addRobot(RobotOptions.of(subtype).withGripper(options.profile().gripperByDefault()));
   }
 
   /**

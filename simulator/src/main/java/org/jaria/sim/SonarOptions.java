@@ -9,7 +9,13 @@ package org.jaria.sim;
  * echo, which is why real sonar misses walls seen at a grazing angle. The reported range gets
  * seeded Gaussian noise with standard deviation {@code noiseMm + noiseFraction × range}. As on
  * ARCOS, no echo, an echo beyond {@code maxRangeMm}, or one closer than {@code minRangeMm} reads
- * {@code maxRangeMm} (5000).
+ * {@code maxRangeMm} (5000); with {@code nearReadsMin} (MobileSim) an echo closer than {@code
+ * minRangeMm} reads {@code minRangeMm} instead.
+ *
+ * <p>When the transducers fire: on a real Pioneer ({@code allEachSip} off) each sonar array fires
+ * one transducer every SONARCYCLE ms, so a SIP carries the few readings taken since the last one.
+ * MobileSim ({@code allEachSip} on) measures every transducer at each update of its world (every
+ * 100 ms) and sends all their readings in every SIP.
  *
  * @param coneDegrees full opening angle of the cone, degrees
  * @param rays rays cast per firing (1 = the axis only)
@@ -19,6 +25,10 @@ package org.jaria.sim;
  * @param maxRangeMm range reported for no echo, and the farthest echo
  * @param specular whether grazing surfaces return no echo
  * @param specularDegrees incidence angle (from the surface normal) beyond which a ray is lost
+ * @param nearReadsMin whether an echo nearer than {@code minRangeMm} reads {@code minRangeMm}
+ *     (MobileSim) rather than no echo (ARCOS)
+ * @param allEachSip whether every transducer is measured every 100 ms and every SIP carries all the
+ *     readings (MobileSim) rather than the sonar cycle's (ARCOS)
  */
 public record SonarOptions(
     double coneDegrees,
@@ -28,11 +38,25 @@ public record SonarOptions(
     int minRangeMm,
     int maxRangeMm,
     boolean specular,
-    double specularDegrees) {
+    double specularDegrees,
+    boolean nearReadsMin,
+    boolean allEachSip) {
 
   /** ARCOS-like defaults: 30° cone, 7 rays, 10 mm + 0.5 % noise, 120..5000 mm, specular at 65°. */
   public static final SonarOptions DEFAULTS =
-      new SonarOptions(30, 7, 10, 0.005, 120, 5000, true, 65);
+      new SonarOptions(30, 7, 10, 0.005, 120, 5000, true, 65, false, false);
+
+  /**
+   * MobileSim's sonar: one ray along each transducer's axis, 100..5000 mm (nearer echoes read 100),
+   * no specular reflection, about ±0.5 mm of noise (MobileSim's is uniform within ±0.5 mm; this is
+   * a Gaussian of the same spread), every transducer measured every 100 ms and all of them in every
+   * SIP.
+   */
+  public static final SonarOptions MOBILESIM =
+      new SonarOptions(0, 1, 0.29, 0, 100, 5000, false, 65, true, true);
+
+  /** Time between two measurements of every transducer in {@link #allEachSip} mode, ms. */
+  public static final int ALL_EACH_SIP_UPDATE_MILLIS = 100;
 
   /** Checks the values. */
   public SonarOptions {
@@ -61,12 +85,30 @@ public record SonarOptions(
   /** These options with the specular model switched on or off. */
   public SonarOptions withSpecular(boolean on) {
     return new SonarOptions(
-        coneDegrees, rays, noiseMm, noiseFraction, minRangeMm, maxRangeMm, on, specularDegrees);
+        coneDegrees,
+        rays,
+        noiseMm,
+        noiseFraction,
+        minRangeMm,
+        maxRangeMm,
+        on,
+        specularDegrees,
+        nearReadsMin,
+        allEachSip);
   }
 
   /** These options with the given noise. */
   public SonarOptions withNoise(double mm, double fraction) {
     return new SonarOptions(
-        coneDegrees, rays, mm, fraction, minRangeMm, maxRangeMm, specular, specularDegrees);
+        coneDegrees,
+        rays,
+        mm,
+        fraction,
+        minRangeMm,
+        maxRangeMm,
+        specular,
+        specularDegrees,
+        nearReadsMin,
+        allEachSip);
   }
 }

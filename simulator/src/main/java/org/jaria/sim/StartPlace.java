@@ -8,10 +8,12 @@ import org.jaria.sim.world.WorldMap;
 
 /**
  * MobileSim's {@code --start}: where robots start instead of the map's home. A fixed pose ({@code
- * x,y,th} in mm and degrees) for the first robot (the others start as usual, beside the home),
- * {@code outside} (2 m beyond the map's bounds, one metre apart: a client must move them in with
- * SIM_SET_POSE), or {@code random} (anywhere within the map's bounds, from the world's seed; a spot
- * that touches something is moved aside as every start is).
+ * x,y,th} in mm and degrees), {@code outside} (2 m left of the map's bounds, level with its top, at
+ * heading 0: a client must move them in with SIM_SET_POSE), or {@code random} (anywhere within the
+ * map's bounds, from the world's seed; a spot that touches something is moved aside as every start
+ * is). As in MobileSim it applies to every robot: with a fixed pose or {@code outside} the robots
+ * stand in a row, each one metre below (−y) the one before; with {@code random} each gets its own
+ * spot.
  *
  * @param kind which of the three
  * @param pose the fixed pose (only for {@link Kind#FIXED})
@@ -30,6 +32,9 @@ public record StartPlace(Kind kind, ArPose pose) {
 
   /** Distance beyond the map's bounds of an {@code outside} start, mm. */
   public static final double OUTSIDE_MARGIN = 2000;
+
+  /** Distance between two robots of MobileSim's row, mm (each below the one before). */
+  public static final double ROW_SPACING = 1000;
 
   /**
    * Reads a {@code --start} value.
@@ -63,15 +68,13 @@ public record StartPlace(Kind kind, ArPose pose) {
             + "'");
   }
 
-  /**
-   * The start pose of robot number {@code index} (0 first) in {@code map}, or null for "as usual".
-   */
+  /** The start pose of robot number {@code index} (0 first) in {@code map}. */
   public ArPose poseFor(int index, WorldMap map, RandomGenerator rng) {
     return switch (kind) {
-      case FIXED -> index == 0 ? pose : null;
+      case FIXED -> inRow(pose, index);
       case OUTSIDE -> {
         double[] b = bounds(map);
-        yield new ArPose(b[2] + OUTSIDE_MARGIN + 1000.0 * index, b[3] + OUTSIDE_MARGIN, 0);
+        yield inRow(new ArPose(b[0] - OUTSIDE_MARGIN, b[3], 0), index);
       }
       case RANDOM -> {
         double[] b = bounds(map);
@@ -81,6 +84,11 @@ public record StartPlace(Kind kind, ArPose pose) {
             rng.nextDouble() * 360 - 180);
       }
     };
+  }
+
+  /** Where robot {@code index} of MobileSim's row starting at {@code first} stands. */
+  public static ArPose inRow(ArPose first, int index) {
+    return index == 0 ? first : new ArPose(first.x(), first.y() - ROW_SPACING * index, first.th());
   }
 
   /** minX, minY, maxX, maxY of the map's lines and points (a 10 m square at the origin if none). */

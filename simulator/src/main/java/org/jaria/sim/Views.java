@@ -71,10 +71,14 @@ final class Views {
     if (l == null || l.lastCount() == 0) {
       return null;
     }
+    int[] ranges = l.ranges();
+    int max = (int) Math.round(b.model().getLaserMaxRange());
+    for (int k = 0; k < ranges.length; k++) {
+      if (!l.echo(k)) {
+        ranges[k] = max; // drawn to the end of the beam, as the record says
+      }
+    }
     return new LaserScan(
-        new ArPose(l.originX(), l.originY(), l.originTh()),
-        l.getStart(),
-        l.getIncrement(),
-        l.ranges());
+        new ArPose(l.originX(), l.originY(), l.originTh()), l.getStart(), l.beamSpacing(), ranges);
   }
 }

@@ -64,6 +64,11 @@ final class WorldHost implements SessionHost {
               what);
       case BY_OPTION ->
           log.info("{}: {} ignored as the options ask (logged once)", robotName, what);
+      case NOT_IN_MOBILESIM ->
+          log.info(
+              "{}: {} ignored, as MobileSim ignores it (the mobilesim profile; logged once)",
+              robotName,
+              what);
       case REMOTE_CLIENT ->
           log.warn(
               "{}: {} refused: only clients on this machine may send it (logged once); see"

@@ -45,7 +45,7 @@ final class WorldRobots {
   RobotSlot add(RobotOptions o, RobotFactory factory) {
     statics.rebuild();
     int number = nextNumber;
-    RobotModel model = RobotModels.forSubtype(o.subtype());
+    RobotModel model = RobotModels.forSubtype(o.subtype(), world.getOptions().profile());
     String name = o.name() != null ? o.name() : o.subtype() + "_" + (number + 1);
     ArPose start =
         o.startPose() != null
@@ -81,7 +81,7 @@ final class WorldRobots {
     }
     RobotOptions o = factory.robotFor(client, statics.map());
     ArPose at = o.startPose() != null ? o.startPose() : statics.map().home();
-    RobotModel model = RobotModels.forSubtype(o.subtype());
+    RobotModel model = RobotModels.forSubtype(o.subtype(), world.getOptions().profile());
     return add(o.withStartPose(Placement.freeSpot(at, model, geometry)), factory);
   }
 

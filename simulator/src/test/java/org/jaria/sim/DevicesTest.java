@@ -20,6 +20,7 @@ import org.jaria.protocol.packets.JoystickPacket;
 import org.jaria.protocol.packets.PacketIds;
 import org.jaria.sim.robot.Gripper;
 import org.jaria.sim.robot.GyroModel;
+import org.jaria.sim.robot.LaserModel;
 import org.junit.jupiter.api.Test;
 
 /** Gripper, gyro, I/O, encoders, compass and laser through the protocol. */
@@ -260,7 +261,7 @@ class DevicesTest {
       assertEquals(0, p.bufToUByte2());
       assertEquals(32, p.bufToUByte());
       int range = p.bufToUByte2();
-      assertEquals((int) r.getModel().getLaserMaxRange(), range, "nothing to see");
+      assertEquals(LaserModel.NO_ECHO_MM, range, "nothing to see: MobileSim's no-echo value");
       assertEquals(0, p.bufToUByte(), "reflectance 0, as MobileSim for anything not a reflector");
     }
   }

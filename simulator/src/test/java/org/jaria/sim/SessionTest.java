@@ -168,7 +168,7 @@ class SessionTest {
       assertEquals("p3dx-sh", cfg.getSubType());
       assertEquals("SIM", cfg.getSerialNumber());
       assertEquals("MobileSim", cfg.getName());
-      assertEquals("S", cfg.getString(ArConfigPacket.Field.FIRMWARE_MAJOR));
+      assertEquals("S.1", cfg.getFirmwareVersion());
       assertEquals(100, cfg.getSipCycleTime());
       assertEquals(2000, cfg.getWatchdog());
       assertEquals(1, cfg.getHasGyro());

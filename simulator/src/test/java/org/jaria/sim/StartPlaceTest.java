@@ -1,7 +1,6 @@
 package org.jaria.sim;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -23,12 +22,18 @@ class StartPlaceTest {
             List.of(new ArLineSegment(0, 0, 10_000, 0), new ArLineSegment(0, 0, 0, 8_000)),
             ArPose.ORIGIN);
     ArPose out = StartPlace.parse("outside").poseFor(1, box, new SplittableRandom(1));
-    assertEquals(new ArPose(13_000, 10_000, 0), out, "2 m beyond, 1 m per robot");
+    assertEquals(
+        new ArPose(-2_000, 7_000, 0),
+        out,
+        "2 m left of the map, level with its top, 1 m per robot");
     StartPlace random = StartPlace.parse("random");
     ArPose a = random.poseFor(0, box, new SplittableRandom(7));
     assertEquals(a, random.poseFor(0, box, new SplittableRandom(7)), "the seed decides");
     assertTrue(a.x() >= 0 && a.x() <= 10_000 && a.y() >= 0 && a.y() <= 8_000, a.toString());
-    assertNull(StartPlace.parse("5,6,7").poseFor(1, box, null), "a fixed pose: first robot");
+    assertEquals(
+        new ArPose(5, -994, 7),
+        StartPlace.parse("5,6,7").poseFor(1, box, null),
+        "a fixed pose applies to every robot, in MobileSim's row 1 m apart");
     IllegalArgumentException e =
         assertThrows(IllegalArgumentException.class, () -> StartPlace.parse("1,2"));
     assertTrue(e.getMessage().contains("outside or random"), e.getMessage());
@@ -50,7 +55,7 @@ class StartPlaceTest {
   void anEmptyMapIsATenMetreSquareAtTheOrigin() {
     WorldMap empty = WorldMap.ofLines("empty", List.of(), ArPose.ORIGIN);
     assertEquals(
-        new ArPose(5000 + StartPlace.OUTSIDE_MARGIN, 5000 + StartPlace.OUTSIDE_MARGIN, 0),
+        new ArPose(-5000 - StartPlace.OUTSIDE_MARGIN, 5000, 0),
         StartPlace.parse("outside").poseFor(0, empty, new SplittableRandom(1)));
   }
 }

@@ -12,8 +12,11 @@ import org.jaria.protocol.ArRobotPacket;
  *
  * <p>The packet has some sixty fields; they are described once, in wire order, by {@link Field},
  * and both {@link #decode} and {@link #encode} walk that table, so the two directions cannot
- * disagree. Fields from {@link Field#FIRMWARE_MAJOR} on are absent in older firmware; bytes after
- * the last known field (newer firmware) are kept and written back unchanged.
+ * disagree. The order is the one ARIA's {@code ArRobotConfigPacketReader} reads (ARIA 2.9.1 and
+ * AriaCoda alike) and MobileSim sends: after ShutdownVolts one firmware version string, then the
+ * gyro calibration, the kinematics delay, the lateral limits and the charge threshold. Fields from
+ * {@link Field#FIRMWARE_VERSION} on are absent in older firmware; bytes after the last known field
+ * (newer firmware: PDB port, gyro rate limit, power bits, ...) are kept and written back unchanged.
  */
 public final class ArConfigPacket {
 
@@ -75,11 +78,17 @@ public final class ArConfigPacket {
     AUX3_BAUD(Kind.U8),
     TICKS_MM(Kind.U16),
     SHUTDOWN_VOLTS(Kind.U16),
-    FIRMWARE_MAJOR(Kind.STR),
-    FIRMWARE_MINOR(Kind.STR),
-    CHARGE_THRESHOLD(Kind.U16),
+    /** The firmware version as one string, e.g. "5.2" (MobileSim: "S.0"). */
+    FIRMWARE_VERSION(Kind.STR),
     GYRO_CW(Kind.U16),
-    GYRO_CCW(Kind.U16);
+    GYRO_CCW(Kind.U16),
+    KINEMATICS_DELAY(Kind.U8),
+    LAT_VEL_TOP(Kind.U16),
+    LAT_ACCEL_TOP(Kind.U16),
+    LAT_VEL_MAX(Kind.U16),
+    LAT_ACCEL(Kind.U16),
+    LAT_DECEL(Kind.U16),
+    CHARGE_THRESHOLD(Kind.U16);
 
     final Kind kind;
 
@@ -96,7 +105,7 @@ public final class ArConfigPacket {
   private static final Field[] FIELDS = Field.values();
 
   /** Fields before this one are always present. */
-  public static final Field FIRST_OPTIONAL = Field.FIRMWARE_MAJOR;
+  public static final Field FIRST_OPTIONAL = Field.FIRMWARE_VERSION;
 
   private final Map<Field, String> strings = new EnumMap<>(Field.class);
   private final int[] ints = new int[FIELDS.length];
@@ -235,9 +244,9 @@ public final class ArConfigPacket {
     return getString(Field.NAME);
   }
 
-  /** Firmware version, "major.minor". */
+  /** Firmware version, e.g. "5.2". */
   public String getFirmwareVersion() {
-    return getString(Field.FIRMWARE_MAJOR) + "." + getString(Field.FIRMWARE_MINOR);
+    return getString(Field.FIRMWARE_VERSION);
   }
 
   /** Top rotational velocity the FLASH allows, deg/s. */

@@ -97,8 +97,9 @@ class PacketCodecsTest {
     c.set(ArConfigPacket.Field.SERIAL_NUMBER, "SIM").set(ArConfigPacket.Field.NAME, "robbie");
     c.set(ArConfigPacket.Field.ROT_VEL_TOP, 500).set(ArConfigPacket.Field.TRANS_VEL_TOP, 2200);
     c.set(ArConfigPacket.Field.SIP_CYCLE_TIME, 100).set(ArConfigPacket.Field.WATCHDOG, 2000);
-    c.set(ArConfigPacket.Field.DRIFT_FACTOR, -123).set(ArConfigPacket.Field.FIRMWARE_MAJOR, "S");
-    c.set(ArConfigPacket.Field.FIRMWARE_MINOR, "1").set(ArConfigPacket.Field.GYRO_CCW, 77);
+    c.set(ArConfigPacket.Field.DRIFT_FACTOR, -123)
+        .set(ArConfigPacket.Field.FIRMWARE_VERSION, "S.1");
+    c.set(ArConfigPacket.Field.GYRO_CCW, 77);
     c.setExtra(new byte[] {1, 2, 3});
     c.encode(p);
     ArConfigPacket d = ArConfigPacket.decode(p);
@@ -121,7 +122,7 @@ class PacketCodecsTest {
     ArRobotPacket copy = new ArRobotPacket().copyFrom(p);
     for (int keep = copy.getDataLength(); keep > 0; keep--) {
       ArConfigPacket d = ArConfigPacket.decode(truncated(copy, keep));
-      if (d != null && !d.has(ArConfigPacket.Field.FIRMWARE_MAJOR)) {
+      if (d != null && !d.has(ArConfigPacket.Field.FIRMWARE_VERSION)) {
         len = keep;
         assertEquals(110, d.getInt(ArConfigPacket.Field.SHUTDOWN_VOLTS));
         assertEquals("p3at", d.getSubType());

@@ -209,7 +209,7 @@ class PacketGoldenVectorsTest {
   void configPac() {
     String frame =
         """
-        FA FB 71 20
+        FA FB 7C 20
         50 69 6F 6E 65 65 72 00   # type "Pioneer"
         70 33 64 78 2D 73 68 00   # subtype "p3dx-sh"
         41 42 31 32 00            # serial "AB12"
@@ -241,9 +241,12 @@ class PacketGoldenVectorsTest {
         00 00                     # Aux2Baud 0, Aux3Baud 0
         0C 00                     # TicksMM 12
         5A 00                     # ShutdownVolts 90
-        35 00 32 00               # version "5" "2"
-        F4 01 81 00 7F 00         # ChargeThreshold 500, GyroCW 129, GyroCCW 127
-        D8 64
+        35 2E 32 00               # firmware version "5.2"
+        81 00 7F 00               # GyroCW 129, GyroCCW 127
+        00                        # KinematicsDelay 0
+        00 00 00 00 00 00 00 00 00 00  # LatVelTop, LatAccelTop, LatVelMax, LatAccel, LatDecel 0
+        F4 01                     # ChargeThreshold 500
+        F8 71
         """;
     ArConfigPacket d = ArConfigPacket.decode(load(frame));
     assertNotNull(d);
@@ -278,7 +281,7 @@ class PacketGoldenVectorsTest {
     ArConfigPacket e = new ArConfigPacket();
     e.set(ArConfigPacket.Field.TYPE, "Pioneer").set(ArConfigPacket.Field.SUBTYPE, "p3dx-sh");
     e.set(ArConfigPacket.Field.SERIAL_NUMBER, "AB12").set(ArConfigPacket.Field.NAME, "Robbie");
-    e.set(ArConfigPacket.Field.FIRMWARE_MAJOR, "5").set(ArConfigPacket.Field.FIRMWARE_MINOR, "2");
+    e.set(ArConfigPacket.Field.FIRMWARE_VERSION, "5.2");
     int[][] ints = {
       {ArConfigPacket.Field.ROT_VEL_TOP.ordinal(), 360},
       {ArConfigPacket.Field.TRANS_VEL_TOP.ordinal(), 2200},

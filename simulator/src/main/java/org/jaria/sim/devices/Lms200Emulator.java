@@ -15,6 +15,8 @@ import org.jaria.laser.LmsScanData;
 import org.jaria.laser.LmsSettings;
 import org.jaria.laser.LmsTelegram;
 import org.jaria.protocol.DropCounters;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * A SICK LMS-200 as seen from its serial port, measuring with a {@link LaserSensor}: it answers the
@@ -24,6 +26,8 @@ import org.jaria.protocol.DropCounters;
  * switches the port after the answer, as the laser does.
  */
 public final class Lms200Emulator extends EmulatedDevice {
+
+  private static final Logger log = LoggerFactory.getLogger(Lms200Emulator.class);
 
   /** Status byte the laser appends to its answers: all well. */
   private static final int STATUS_OK = 0x10;
@@ -40,6 +44,7 @@ public final class Lms200Emulator extends EmulatedDevice {
   private boolean streaming;
   private long nextScanAt;
   private final AtomicLong scansSent = new AtomicLong();
+  private boolean zeroResolutionNoted;
 
   /**
    * An LMS-200 on {@code connection}.
@@ -119,10 +124,25 @@ public final class Lms200Emulator extends EmulatedDevice {
     }
   }
 
+  /**
+   * The variant request (0x3B): scanning angle 180° or 100°, resolution 1°, 0.5° or (100° only)
+   * 0.25°. A resolution of 0 keeps the current one and is answered as accepted: AriaCoda's {@code
+   * ArLMS2xx} always asks for 0 (it reads an unset field instead of its increment choice), and its
+   * users' lasers evidently carried on, so the emulator does too.
+   */
   private void variant(LmsTelegram t) throws IOException, InterruptedException {
     boolean ok = t.dataLength() == 4;
     int w = ok ? t.u16(0) : 0;
     int inc = ok ? t.u16(2) : 0;
+    if (inc == 0 && (w == 180 || w == 100)) {
+      inc = w == 180 && incrementHundredths == 25 ? 100 : incrementHundredths;
+      if (!zeroResolutionNoted) {
+        zeroResolutionNoted = true;
+        log.info(
+            "variant request with resolution 0 (as AriaCoda's ArLMS2xx sends): keeping {}°",
+            inc / 100.0);
+      }
+    }
     ok = ok && (w == 180 || w == 100) && (inc == 100 || inc == 50 || (inc == 25 && w == 100));
     if (ok) {
       degrees = w;

@@ -7,8 +7,9 @@ import org.jaria.sim.world.WorldGeometry;
 
 /**
  * A simulated laser range finder (a SICK LMS-200 as MobileSim models it): one ray per reading over
- * the field of view (default −90° to +90° at 1°, 181 readings), nearest hit or the maximum range,
- * small seeded noise. Scans are taken on request (once per SIP cycle while streaming).
+ * the field of view (default −90° to +90° at 1°, 181 readings), nearest hit with small seeded
+ * noise, or {@link #NO_ECHO_MM} for a beam that hits nothing within the maximum range. Scans are
+ * taken on request (once per SIP cycle while streaming).
  *
  * <p>Not thread-safe: used by the world thread.
  */
@@ -16,6 +17,13 @@ public final class LaserModel {
 
   /** Standard deviation of the range noise, mm. */
   public static final double NOISE_MM = 5;
+
+  /**
+   * The range sent for a beam with no echo, mm: MobileSim's (its LMS-200's 32.767 m "maximum
+   * range"), above the 32 m every ARIA laser class takes as its largest valid reading, so ARIA (and
+   * JAria) drop it as "no reading" instead of seeing a wall 32 m away.
+   */
+  public static final int NO_ECHO_MM = 32767;
 
   private final RobotModel model;
   private final RandomGenerator rng;
@@ -31,10 +39,27 @@ public final class LaserModel {
   private boolean legacyCommands;
   private final SrisimLaserSetup srisim = new SrisimLaserSetup();
 
+  /**
+   * Whether the beams are spread as MobileSim's laser spreads them: {@code n} readings over the
+   * field of view {@code span} lie {@code span / n} apart (not {@code span / (n − 1)}), so the last
+   * one falls one increment short of the end: a 181-reading scan of 180° has its beams 0.9945°
+   * apart and its last at 89.0°, while ARIA places reading k at −90 + k°.
+   */
+  private final boolean mobileSimSpacing;
+
   /** A laser mounted as {@code model} says. */
   public LaserModel(RobotModel model, RandomGenerator rng) {
+    this(model, rng, false);
+  }
+
+  /**
+   * A laser mounted as {@code model} says, its beams spread as MobileSim's are ({@code
+   * mobileSimSpacing}) or exactly one increment apart.
+   */
+  public LaserModel(RobotModel model, RandomGenerator rng, boolean mobileSimSpacing) {
     this.model = model;
     this.rng = rng;
+    this.mobileSimSpacing = mobileSimSpacing;
   }
 
   /**
@@ -88,9 +113,17 @@ public final class LaserModel {
     return Math.min(startDeg, endDeg);
   }
 
-  /** Angle between readings, degrees. */
+  /** Angle between readings, degrees (as set: what the client asked for). */
   public double getIncrement() {
     return incDeg;
+  }
+
+  /**
+   * Angle between the beams of a scan, degrees (see {@link #LaserModel(RobotModel, RandomGenerator,
+   * boolean)}).
+   */
+  public double beamSpacing() {
+    return mobileSimSpacing ? Math.abs(endDeg - startDeg) / readingCount() : incDeg;
   }
 
   /** Scans from the robot's true pose (x, y mm, thRad). */
@@ -107,7 +140,7 @@ public final class LaserModel {
     originTh = Math.toDegrees(thRad) + model.getLaserTh();
     double max = model.getLaserMaxRange();
     double first = Math.toRadians(originTh + getStart());
-    double inc = Math.toRadians(incDeg);
+    double inc = Math.toRadians(beamSpacing());
     for (int k = 0; k < count; k++) {
       double a = first + k * inc;
       world.cast(originX, originY, Math.cos(a), Math.sin(a), max, self, hit);
@@ -116,18 +149,18 @@ public final class LaserModel {
         ranges[k] = (int) Math.round(ArMath.clamp(r, 0, max));
         echo[k] = true;
       } else {
-        ranges[k] = (int) Math.round(max);
+        ranges[k] = NO_ECHO_MM;
         echo[k] = false;
       }
     }
   }
 
-  /** Ranges of the last scan, mm (a copy). */
+  /** Ranges of the last scan as sent, mm ({@link #NO_ECHO_MM} where nothing was hit; a copy). */
   public int[] ranges() {
     return ranges.clone();
   }
 
-  /** Range {@code k} of the last scan, mm. */
+  /** Range {@code k} of the last scan as sent, mm ({@link #NO_ECHO_MM} for no echo). */
   public int range(int k) {
     return ranges[k];
   }

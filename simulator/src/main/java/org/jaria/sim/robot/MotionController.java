@@ -31,7 +31,28 @@ public final class MotionController {
     HEADING
   }
 
+  /**
+   * MobileSim's session settings, the same for every model (what its CONFIGpac reports until the
+   * client changes them): mm/s, deg/s, mm/s², deg/s².
+   */
+  public static final int MOBILESIM_TRANS_VEL_MAX = 3000;
+
+  /** MobileSim's default maximum rotational speed, deg/s. */
+  public static final int MOBILESIM_ROT_VEL_MAX = 150;
+
+  /** MobileSim's default translational acceleration and deceleration, mm/s². */
+  public static final int MOBILESIM_TRANS_ACCEL = 300;
+
+  /** MobileSim's default rotational acceleration and deceleration, deg/s². */
+  public static final int MOBILESIM_ROT_ACCEL = 100;
+
   private final RobotModel model;
+
+  /**
+   * MobileSim's way: session defaults from MobileSim rather than the model's FLASH values, and SETV
+   * / SETRV taken as sent (MobileSim's robot is limited by its model's top speed alone).
+   */
+  private final boolean mobileSim;
 
   private double transVelMax;
   private double rotVelMaxPos;
@@ -58,12 +79,33 @@ public final class MotionController {
 
   /** A controller with the model's default limits, motors disabled and stopped. */
   public MotionController(RobotModel model) {
+    this(model, SimProfile.PIONEER);
+  }
+
+  /**
+   * A controller with the defaults of {@code profile} (the model's FLASH values, or MobileSim's),
+   * motors disabled and stopped.
+   */
+  public MotionController(RobotModel model, SimProfile profile) {
     this.model = model;
+    this.mobileSim = profile == SimProfile.MOBILESIM;
     resetSettings();
   }
 
-  /** Returns every limit to the model's (FLASH) defaults, as a new session does. */
+  /**
+   * Returns every limit to the defaults (the model's FLASH, or MobileSim's), as a new session does.
+   */
   public void resetSettings() {
+    if (mobileSim) {
+      transVelMax = MOBILESIM_TRANS_VEL_MAX;
+      rotVelMaxPos = MOBILESIM_ROT_VEL_MAX;
+      rotVelMaxNeg = MOBILESIM_ROT_VEL_MAX;
+      transAccel = MOBILESIM_TRANS_ACCEL;
+      transDecel = MOBILESIM_TRANS_ACCEL;
+      rotAccel = MOBILESIM_ROT_ACCEL;
+      rotDecel = MOBILESIM_ROT_ACCEL;
+      return;
+    }
     transVelMax = model.getTransVelMax();
     rotVelMaxPos = model.getRotVelMax();
     rotVelMaxNeg = model.getRotVelMax();
@@ -110,7 +152,8 @@ public final class MotionController {
       return;
     }
     transMode = TransMode.VELOCITY;
-    velTarget = ArMath.clamp(v, -transVelMax, transVelMax);
+    double max = Math.min(transVelMax, model.getTransVelTop());
+    velTarget = ArMath.clamp(v, -max, max);
   }
 
   /** MOVE: travel {@code mm} (+5000 / −4999 at most) at the SETV speed. */
@@ -128,7 +171,8 @@ public final class MotionController {
       return;
     }
     rotMode = RotMode.VELOCITY;
-    rotVelTarget = ArMath.clamp(w, -rotVelMaxNeg, rotVelMaxPos);
+    double top = model.getRotVelTop();
+    rotVelTarget = ArMath.clamp(w, -Math.min(rotVelMaxNeg, top), Math.min(rotVelMaxPos, top));
   }
 
   /** HEAD: turn the shortest way to the absolute odometry heading {@code deg}. */
@@ -180,14 +224,14 @@ public final class MotionController {
     eStop = vel != 0 || rotVel != 0;
   }
 
-  /** SETV: maximum translational speed, limited by the firmware top. */
+  /** SETV: maximum translational speed, limited by the firmware top (MobileSim: as sent). */
   public void setTransVelMax(double v) {
-    transVelMax = ArMath.clamp(Math.abs(v), 0, model.getTransVelTop());
+    transVelMax = ArMath.clamp(Math.abs(v), 0, mobileSim ? 65535 : model.getTransVelTop());
   }
 
-  /** SETRV: maximum rotational speed both ways. */
+  /** SETRV: maximum rotational speed both ways (MobileSim: as sent). */
   public void setRotVelMax(double w) {
-    double m = ArMath.clamp(Math.abs(w), 0, model.getRotVelTop());
+    double m = ArMath.clamp(Math.abs(w), 0, mobileSim ? 65535 : model.getRotVelTop());
     rotVelMaxPos = m;
     rotVelMaxNeg = m;
   }
@@ -265,8 +309,7 @@ public final class MotionController {
       lastDs = (v0 + vel) / 2 * dt;
     } else {
       double r = moveRemaining;
-      double want =
-          stopping ? 0 : Math.signum(r) * Math.min(transVelMax, Math.sqrt(2 * td * Math.abs(r)));
+      double want = stopping ? 0 : Math.signum(r) * moveSpeed(Math.abs(r), td);
       vel = approach(vel, want, ta, td, dt);
       lastDs = (v0 + vel) / 2 * dt;
       if (Math.abs(r) < 1e-6 || (r > 0 ? lastDs >= r : lastDs <= r)) {
@@ -284,9 +327,8 @@ public final class MotionController {
       lastDth = (w0 + rotVel) / 2 * dt;
     } else {
       double err = ArMath.subAngle(headingTarget, headingDeg);
-      double max = err >= 0 ? rotVelMaxPos : rotVelMaxNeg;
-      double want =
-          stopping ? 0 : Math.signum(err) * Math.min(max, Math.sqrt(2 * rd * Math.abs(err)));
+      double max = Math.min(err >= 0 ? rotVelMaxPos : rotVelMaxNeg, model.getRotVelTop());
+      double want = stopping ? 0 : Math.signum(err) * headSpeed(Math.abs(err), max, rd);
       rotVel = approach(rotVel, want, ra, rd, dt);
       lastDth = (w0 + rotVel) / 2 * dt;
       if (Math.abs(err) < 1e-6 || (err > 0 ? lastDth >= err : lastDth <= err)) {
@@ -299,6 +341,35 @@ public final class MotionController {
       eStop = false;
     }
   }
+
+  /**
+   * How fast MOVE drives with {@code remaining} mm to go: ARCOS's trapezoid (as fast as it can
+   * still stop at the goal with deceleration {@code decel}), or MobileSim's proportional control
+   * (the distance to go in metres times the SETV speed, per second).
+   */
+  private double moveSpeed(double remaining, double decel) {
+    double max = Math.min(transVelMax, model.getTransVelTop());
+    if (mobileSim) {
+      return Math.min(model.getTransVelTop(), remaining / 1000 * transVelMax);
+    }
+    return Math.min(max, Math.sqrt(2 * decel * remaining));
+  }
+
+  /**
+   * How fast HEAD turns with {@code error} degrees to go: ARCOS's trapezoid, or MobileSim's
+   * proportional control (the error in radians as radians per second, at least 0.007 rad/s, at most
+   * the SETRV speed), which turns slowly as it nears the heading: ARIA's actions, which send a HEAD
+   * a little ahead of the robot every cycle, turn a MobileSim robot much more gently.
+   */
+  private double headSpeed(double error, double max, double decel) {
+    if (mobileSim) {
+      return Math.min(max, Math.max(MOBILESIM_HEAD_MIN_SPEED, error));
+    }
+    return Math.min(max, Math.sqrt(2 * decel * error));
+  }
+
+  /** MobileSim's slowest turn towards a HEAD heading, deg/s (0.007 rad/s). */
+  static final double MOBILESIM_HEAD_MIN_SPEED = Math.toDegrees(0.007);
 
   /** Moves {@code cur} towards {@code target} by at most one tick of (de)acceleration. */
   static double approach(double cur, double target, double acc, double dec, double dt) {

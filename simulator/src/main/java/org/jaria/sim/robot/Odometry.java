@@ -44,6 +44,14 @@ public final class Odometry {
   private double encRight;
   private double lastMeasured;
 
+  /** MobileSim's scale errors in use (RANDOM_EACH_UPDATE, RANDOM_INIT), fractions. */
+  private double scaleTrans;
+
+  private double scaleRot;
+
+  /** Simulated time since RANDOM_EACH_UPDATE last drew its factors, ms. */
+  private double sinceDraw;
+
   /**
    * Odometry for wheels {@code trackWidth} mm apart.
    *
@@ -55,6 +63,21 @@ public final class Odometry {
     this.rng = rng;
     this.trueRevCount = Math.PI * trackWidth * TICKS_PER_MM;
     resetSettings();
+    if (error.mode() == OdometryError.Mode.RANDOM_INIT
+        || error.mode() == OdometryError.Mode.RANDOM_EACH_UPDATE) {
+      drawScales();
+    }
+  }
+
+  /** New MobileSim scale errors, uniform within the error's bounds. */
+  private void drawScales() {
+    scaleTrans = uniform(error.transPerMetre());
+    scaleRot = uniform(error.rotPerRadian());
+    sinceDraw = 0;
+  }
+
+  private double uniform(double bound) {
+    return bound == 0 ? 0 : (rng.nextDouble() * 2 - 1) * bound;
   }
 
   /** Returns TICKSMM, REVCOUNT and DRIFTFACTOR to the hardware values. */
@@ -72,10 +95,17 @@ public final class Odometry {
   }
 
   /**
-   * Measures the true motion of one tick ({@code ds} mm forward along the arc, {@code dthDeg}
-   * turned) and integrates it.
+   * Measures the true motion of one tick of {@code dtMs} ms ({@code ds} mm forward along the arc,
+   * {@code dthDeg} turned) and integrates it.
    */
-  public void update(double ds, double dthDeg) {
+  public void update(double ds, double dthDeg, double dtMs) {
+    if (error.mode() == OdometryError.Mode.RANDOM_EACH_UPDATE) {
+      // MobileSim draws at every update of its world, moving or not
+      sinceDraw += dtMs;
+      if (sinceDraw >= OdometryError.UPDATE_MILLIS) {
+        drawScales();
+      }
+    }
     if (ds == 0 && dthDeg == 0) {
       lastMeasured = 0;
       return;
@@ -86,6 +116,10 @@ public final class Odometry {
       case CONSTANT -> {
         ds *= 1 + error.transPerMetre();
         dth *= 1 + error.rotPerRadian();
+      }
+      case RANDOM_EACH_UPDATE, RANDOM_INIT -> {
+        ds *= 1 + scaleTrans;
+        dth *= 1 + scaleRot;
       }
       case RANDOM -> {
         ds += rng.nextGaussian() * error.transPerMetre() * Math.sqrt(Math.abs(ds) * 1000);

@@ -64,7 +64,8 @@ public final class RobotBody {
   private final LaserModel laser;
   private final GyroModel gyro;
   private final Gripper gripper;
-  private final RobotIo io = new RobotIo();
+  private final RobotIo io;
+  private final SimProfile profile;
 
   /**
    * AUX1..AUX3; a Canon VC-C4 on AUX1 (where a Pioneer's PTZ camera is wired) unless {@link
@@ -84,6 +85,7 @@ public final class RobotBody {
   private int bumpStall;
   private double lastDs;
   private double lastDth;
+  private double travelled;
 
   /**
    * A robot at {@code start}.
@@ -105,6 +107,35 @@ public final class RobotBody {
       boolean hasLaser,
       boolean hasGyro,
       boolean hasGripper) {
+    this(
+        index,
+        name,
+        model,
+        start,
+        sonarOptions,
+        odometryError,
+        rngs,
+        hasLaser,
+        hasGyro,
+        hasGripper,
+        SimProfile.PIONEER);
+  }
+
+  /**
+   * A robot at {@code start} that behaves as {@code profile} says (the other parameters as above).
+   */
+  public RobotBody(
+      int index,
+      String name,
+      RobotModel model,
+      ArPose start,
+      SonarOptions sonarOptions,
+      OdometryError odometryError,
+      RandomGenerator[] rngs,
+      boolean hasLaser,
+      boolean hasGyro,
+      boolean hasGripper,
+      SimProfile profile) {
     this.index = index;
     this.name = name;
     this.model = model;
@@ -116,14 +147,19 @@ public final class RobotBody {
     this.rearZone =
         new Footprint(
             model.getLengthFront(), model.getLengthRear() + BUMPER_TRAVEL, model.getWidth());
-    this.motion = new MotionController(model);
+    this.profile = profile;
+    this.motion = new MotionController(model, profile);
+    this.io = profile == SimProfile.MOBILESIM ? new RobotIo(0xFF, 0xFF) : new RobotIo();
     this.odometry = new Odometry(model.getTrackWidth(), odometryError, rngs[0]);
     this.sonar = new SonarModel(model, sonarOptions, rngs[1]);
-    this.laser = hasLaser ? new LaserModel(model, rngs[2]) : null;
+    this.laser = hasLaser ? new LaserModel(model, rngs[2], profile == SimProfile.MOBILESIM) : null;
     this.gyro = hasGyro ? new GyroModel(model.getGyroScaler(), rngs[3]) : null;
     this.gripper = hasGripper ? new Gripper() : null;
     this.startPose = start;
     setTruePose(start);
+    if (profile.motorsEnabledAtStart()) {
+      motion.enableMotors(true);
+    }
   }
 
   /**
@@ -178,11 +214,12 @@ public final class RobotBody {
       }
     }
     latchedBits |= stallBits;
+    travelled += Math.abs(ds);
     lastDs = ds;
     lastDth = dth;
-    odometry.update(ds, dth);
-    motion.measured(odometry.lastMeasured());
     double dtMs = dt * 1000;
+    odometry.update(ds, dth, dtMs);
+    motion.measured(odometry.lastMeasured());
     if (gyro != null) {
       gyro.tick(dtMs, dth);
     }
@@ -238,10 +275,18 @@ public final class RobotBody {
     return Math.max(0, Math.min(n - 1, i));
   }
 
-  /** Starts the robot as a fresh session does: stopped, defaults, odometry at 0,0,0. */
+  /**
+   * Starts the robot as a fresh session does: stopped, defaults, odometry at 0,0,0; a real
+   * Pioneer's motors off (MobileSim leaves them as they are: on when the robot was made, off after
+   * a session ended).
+   */
   public void openSession() {
     motion.resetSettings();
-    motion.enableMotors(false);
+    if (profile == SimProfile.MOBILESIM) {
+      motion.halt();
+    } else {
+      motion.enableMotors(false);
+    }
     odometry.resetSettings();
     odometry.setPose(0, 0, 0);
     sonar.resetSettings();
@@ -363,6 +408,16 @@ public final class RobotBody {
   /** BUMPSTALL: 0 none, 1 front, 2 rear, 3 both. */
   public void setBumpStall(int mode) {
     bumpStall = mode & 3;
+  }
+
+  /** Distance driven since the robot was made (forwards and backwards counted alike), mm. */
+  public double travelled() {
+    return travelled;
+  }
+
+  /** Whose behaviour the robot copies: MobileSim's or a real Pioneer's. */
+  public SimProfile profile() {
+    return profile;
   }
 
   /** Distance actually travelled in the last tick, mm. */

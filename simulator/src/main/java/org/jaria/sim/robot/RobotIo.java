@@ -18,6 +18,7 @@ public final class RobotIo {
 
   private int digIn;
   private int digOut;
+  private final int digOutAtOpen;
   private final int[] analog = new int[ANALOG_PORTS];
   private int anPort;
   private int batteryOverride;
@@ -25,9 +26,24 @@ public final class RobotIo {
   private byte[] lastSay = new byte[0];
   private int compassMode;
 
+  /** I/O with all digital inputs and outputs low (a real Pioneer's at power-on). */
+  public RobotIo() {
+    this(0, 0);
+  }
+
+  /**
+   * I/O whose digital inputs read {@code digIn} until set, and whose outputs start at {@code
+   * digOutAtOpen} with every session (MobileSim reports 0xFF for both).
+   */
+  public RobotIo(int digIn, int digOutAtOpen) {
+    this.digIn = digIn & 0xFF;
+    this.digOutAtOpen = digOutAtOpen & 0xFF;
+    this.digOut = this.digOutAtOpen;
+  }
+
   /** Returns the session settings to their defaults (digital inputs and analogs are physical). */
   public void resetSettings() {
-    digOut = 0;
+    digOut = digOutAtOpen;
     anPort = 0;
     soundOn = true;
     compassMode = 0;

@@ -13,6 +13,11 @@ import org.jaria.sim.world.WorldGeometry;
  * SonarOptions}). New readings wait in a queue for the next SIP; the last reading of every
  * transducer is kept as ground truth.
  *
+ * <p>With {@link SonarOptions#allEachSip()} (MobileSim) every transducer of the enabled arrays is
+ * measured every {@value SonarOptions#ALL_EACH_SIP_UPDATE_MILLIS} ms instead, nothing is queued,
+ * and each SIP carries the last reading of every transducer measured since the session opened
+ * ({@link #measuredThisSession}).
+ *
  * <p>Not thread-safe: used by the world thread.
  */
 public final class SonarModel {
@@ -45,6 +50,12 @@ public final class SonarModel {
   private final long[] firedAt;
   private final long[] fireCount;
 
+  /** Which transducers were measured since the session opened (all-each-SIP mode). */
+  private final boolean[] measured;
+
+  /** Time since every transducer was last measured (all-each-SIP mode), ms. */
+  private double sinceAll;
+
   private final int[] pendingNumber = new int[MAX_PENDING];
   private final int[] pendingRange = new int[MAX_PENDING];
   private int pendingCount;
@@ -63,6 +74,7 @@ public final class SonarModel {
     hitY = new double[n];
     firedAt = new long[n];
     fireCount = new long[n];
+    measured = new boolean[n];
     Arrays.fill(truth, Double.NaN);
     Arrays.fill(reported, opts.maxRangeMm());
     resetSettings();
@@ -83,11 +95,16 @@ public final class SonarModel {
     cycleMs = DEFAULT_CYCLE_MS;
     enabledArrays = 0;
     pendingCount = 0;
+    Arrays.fill(measured, false);
+    sinceAll = SonarOptions.ALL_EACH_SIP_UPDATE_MILLIS; // measure at the first tick
   }
 
   /** Turns every array on (OPEN) or off (CLOSE). */
   public void setAllEnabled(boolean on) {
     enabledArrays = on ? 0xF : 0;
+    if (!on) {
+      Arrays.fill(measured, false);
+    }
   }
 
   /**
@@ -161,6 +178,18 @@ public final class SonarModel {
     if (enabledArrays == 0 || n == 0) {
       return;
     }
+    if (opts.allEachSip()) {
+      sinceAll += dtMs;
+      if (sinceAll >= SonarOptions.ALL_EACH_SIP_UPDATE_MILLIS) {
+        sinceAll = 0;
+        for (int i = 0; i < n; i++) {
+          if (arrayEnabled(i)) {
+            fire(i, x, y, thRad, world, self, nowNanos);
+          }
+        }
+      }
+      return;
+    }
     for (int a = 0; a < ARRAYS; a++) {
       int[] seq = sequence[a];
       if ((enabledArrays & (1 << a)) == 0 || seq.length == 0) {
@@ -208,15 +237,41 @@ public final class SonarModel {
       truth[i] = best;
       double sigma = opts.noiseMm() + opts.noiseFraction() * best;
       double r = best + (sigma > 0 ? rng.nextGaussian() * sigma : 0);
-      range =
-          (r < opts.minRangeMm() || r > opts.maxRangeMm())
-              ? opts.maxRangeMm()
-              : (int) Math.round(r);
+      if (r < opts.minRangeMm() && opts.nearReadsMin()) {
+        range = opts.minRangeMm();
+      } else if (r < opts.minRangeMm() || r > opts.maxRangeMm()) {
+        range = opts.maxRangeMm();
+      } else {
+        range = (int) Math.round(r);
+      }
     }
     reported[i] = range;
     firedAt[i] = now;
     fireCount[i]++;
-    queue(i, range);
+    if (opts.allEachSip()) {
+      measured[i] = true;
+    } else {
+      queue(i, range);
+    }
+  }
+
+  /** Whether transducer {@code i}'s array is enabled. */
+  public boolean arrayEnabled(int i) {
+    int a = i / 8;
+    return a < ARRAYS && (enabledArrays & (1 << a)) != 0;
+  }
+
+  /**
+   * Whether transducer {@code i} was measured since the session opened and its array is on (in
+   * all-each-SIP mode the SIP carries exactly these readings).
+   */
+  public boolean measuredThisSession(int i) {
+    return measured[i] && arrayEnabled(i);
+  }
+
+  /** Whether every transducer is measured at once and every SIP carries them all (MobileSim). */
+  public boolean allEachSip() {
+    return opts.allEachSip();
   }
 
   private void queue(int number, int range) {

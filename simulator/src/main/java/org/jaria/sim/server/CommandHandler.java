@@ -1,6 +1,8 @@
 package org.jaria.sim.server;
 
 import java.nio.charset.StandardCharsets;
+import java.util.EnumSet;
+import java.util.Set;
 import org.jaria.geom.ArPose;
 import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
@@ -11,6 +13,7 @@ import org.jaria.protocol.packets.SerAuxPacket;
 import org.jaria.sim.robot.LaserModel;
 import org.jaria.sim.robot.MotionController;
 import org.jaria.sim.robot.RobotBody;
+import org.jaria.sim.robot.SimProfile;
 import org.jaria.sim.robot.SrisimLaserSetup;
 import org.jaria.sim.serial.AuxPort;
 import org.slf4j.Logger;
@@ -39,6 +42,13 @@ final class CommandHandler {
 
   private static final Logger log = LoggerFactory.getLogger(CommandHandler.class);
 
+  /**
+   * Requests MobileSim leaves unanswered (it sends no ENCODERpac, IOpac, JOYSTICKpac or TCM2pac),
+   * ignored in the {@code mobilesim} profile. GRIPREQUEST too, once it is not a laser command.
+   */
+  private static final Set<ArCommands> MOBILESIM_IGNORES =
+      EnumSet.of(ArCommands.ENCODER, ArCommands.IOREQUEST, ArCommands.JOYREQUEST, ArCommands.TCM2);
+
   private final ArcosSession s;
   private final RobotBody body;
 
@@ -54,6 +64,10 @@ final class CommandHandler {
     }
     if (command == null) {
       ignored(p.getID(), IgnoredCommand.Reason.UNKNOWN);
+      return;
+    }
+    if (body.profile() == SimProfile.MOBILESIM && MOBILESIM_IGNORES.contains(command)) {
+      ignored(command, IgnoredCommand.Reason.NOT_IN_MOBILESIM);
       return;
     }
     MotionController m = body.motion();
@@ -121,7 +135,12 @@ final class CommandHandler {
         }
       }
       case GRIPREQUEST -> {
-        if (srisimLaserStep(legacyLaser, p) == SrisimLaserSetup.Step.ARCOS) {
+        if (srisimLaserStep(legacyLaser, p) != SrisimLaserSetup.Step.ARCOS) {
+          return;
+        }
+        if (body.profile() == SimProfile.MOBILESIM) {
+          ignored(command, IgnoredCommand.Reason.NOT_IN_MOBILESIM);
+        } else {
           s.gripMode = clampMode(intArg(p, 1)); // GRIPPERpac says "none" on a robot without
         }
       }

@@ -23,6 +23,11 @@ public record IgnoredCommand(int command, String name, Reason reason, long count
     /** The user told the simulator to ignore this command ({@code --ignore-command}). */
     BY_OPTION,
     /**
+     * MobileSim does not answer this request (encoder, I/O, joystick, compass and gripper packets),
+     * so neither does the {@code mobilesim} profile.
+     */
+    NOT_IN_MOBILESIM,
+    /**
      * Only clients on the simulator's own machine may send it (SIM_EXIT, map loads without a map
      * folder); this client is on another machine.
      */

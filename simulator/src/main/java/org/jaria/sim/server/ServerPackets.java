@@ -20,6 +20,7 @@ import org.jaria.sim.robot.Odometry;
 import org.jaria.sim.robot.RobotBody;
 import org.jaria.sim.robot.RobotIo;
 import org.jaria.sim.robot.RobotModel;
+import org.jaria.sim.robot.SimProfile;
 import org.jaria.sim.robot.SonarModel;
 
 /**
@@ -39,11 +40,11 @@ public final class ServerPackets {
   /** Serial number in CONFIGpac; clients recognise a simulator by it. */
   public static final String SERIAL = "SIM";
 
-  /** Firmware major version in CONFIGpac ("S" marks a simulator, like MobileSim's "S."). */
-  public static final String FIRMWARE_MAJOR = "S";
-
-  /** Firmware minor version in CONFIGpac. */
-  public static final String FIRMWARE_MINOR = "1";
+  /**
+   * Firmware version in CONFIGpac of the {@code pioneer} profile ("S" marks a simulator, like
+   * MobileSim's "S.0", which the {@code mobilesim} profile sends).
+   */
+  public static final String FIRMWARE_VERSION = "S.1";
 
   /** Simulator name in SIMINFO. */
   public static final String SIM_NAME = "JAriaSim";
@@ -53,6 +54,15 @@ public final class ServerPackets {
 
   /** Optional SIP fields sent: GRIP_STATE through FAULT_FLAGS (the thesis's table 4.1). */
   public static final int SIP_OPTIONALS = 9;
+
+  /**
+   * Optional SIP fields MobileSim sends: up to the state of charge (lateral velocity, temperature,
+   * state of charge after the fault flags).
+   */
+  public static final int MOBILESIM_SIP_OPTIONALS = 12;
+
+  /** The temperature byte MobileSim sends for "no temperature sensor". */
+  public static final int MOBILESIM_NO_TEMPERATURE = -127;
 
   /** Most laser readings per laser packet (as MobileSim). */
   public static final int LASER_READINGS_PER_PACKET = 32;
@@ -71,16 +81,22 @@ public final class ServerPackets {
     return p.empty().setID(id).finalizePacket();
   }
 
-  /** The standard SIP; takes the pending sonar readings out of the sonar queue. */
+  /**
+   * The standard SIP; takes the pending sonar readings out of the sonar queue. In the {@code
+   * mobilesim} profile it is laid out as MobileSim's: always ID 0x32, stall bits without bumpers,
+   * CONTROL 0, and the tail up to the state of charge (lateral velocity 0, temperature -127 for "no
+   * sensor", state of charge 0).
+   */
   public static ArRobotPacket sip(ArRobotPacket p, StandardSip sip, RobotBody b) {
     RobotModel m = b.model();
     Odometry o = b.odometry();
     MotionController mc = b.motion();
     RobotIo io = b.io();
+    boolean mobileSim = b.profile() == SimProfile.MOBILESIM;
     double v = mc.getVel();
     double w = mc.getRotVel();
     double half = Math.toRadians(w) * m.getTrackWidth() / 2;
-    sip.setMoving(Math.abs(v) >= 0.5 || Math.abs(w) >= 0.05);
+    sip.setMoving(!mobileSim && (Math.abs(v) >= 0.5 || Math.abs(w) >= 0.05));
     // THPOS counts angle units round and round (Odometry.getThUnits says why not from the heading).
     int thUnits = o.getThUnits(m.getAngleConvFactor());
     sip.setPos(
@@ -91,26 +107,46 @@ public final class ServerPackets {
         (int) Math.round((v - half) / m.getVelConvFactor()),
         (int) Math.round((v + half) / m.getVelConvFactor()));
     sip.setBattery(Math.min(255, io.getBattery()));
-    sip.setStallAndBumpers(b.takeLatchedStallBits());
+    int stall = b.takeLatchedStallBits();
+    // MobileSim simulates no bumpers: a collision shows as both motors stalled, nothing else
+    sip.setStallAndBumpers(
+        mobileSim ? stall & (RobotBody.STALL_LEFT | RobotBody.STALL_RIGHT) : stall);
     // The heading setpoint travels in angle units like THPOS (ARIA reads it that way), counted
     // from THPOS so that the difference ARIA takes is the angle whatever the wrap.
     double toControl = ArMath.subAngle(mc.getControlHeading(o.getTh()), o.getTh());
-    sip.setControl(thUnits + (int) Math.round(Math.toRadians(toControl) / m.getAngleConvFactor()));
+    sip.setControl(
+        mobileSim
+            ? 0
+            : thUnits + (int) Math.round(Math.toRadians(toControl) / m.getAngleConvFactor()));
     int flags = mc.areMotorsEnabled() ? 1 : 0;
     flags |= b.sonar().getEnabledArrays() << 1;
     sip.setFlags(flags);
     sip.setCompass(io.getCompassMode() > 0 ? compassByte(b.trueTh()) : 0);
     sip.clearSonar();
     SonarModel s = b.sonar();
-    for (int k = 0; k < s.pendingCount(); k++) {
-      sip.addSonar(
-          s.pendingNumber(k), (int) Math.round(s.pendingRange(k) / m.getRangeConvFactor()));
+    if (s.allEachSip()) {
+      // MobileSim: the last reading of every transducer, in every SIP
+      for (int i = 0; i < s.size(); i++) {
+        if (s.measuredThisSession(i)) {
+          sip.addSonar(i, (int) Math.round(s.reportedRange(i) / m.getRangeConvFactor()));
+        }
+      }
+    } else {
+      for (int k = 0; k < s.pendingCount(); k++) {
+        sip.addSonar(
+            s.pendingNumber(k), (int) Math.round(s.pendingRange(k) / m.getRangeConvFactor()));
+      }
     }
     s.clearPending();
     int grip = b.gripper() != null ? b.gripper().state() : 0;
     sip.setIo(grip, io.getAnPort(), io.selectedAnalogByte(), digIn(b), io.getDigOut());
     sip.setPower(io.getBattery(), 0, (int) Math.round(w * 10), 0);
-    sip.setOptionalCount(SIP_OPTIONALS);
+    if (mobileSim) {
+      sip.setExtended(0, MOBILESIM_NO_TEMPERATURE, 0, 0, 0);
+      sip.setOptionalCount(MOBILESIM_SIP_OPTIONALS);
+    } else {
+      sip.setOptionalCount(SIP_OPTIONALS);
+    }
     return sip.encode(p);
   }
 
@@ -132,9 +168,15 @@ public final class ServerPackets {
     return ((int) Math.round(h / 2)) % 180;
   }
 
-  /** CONFIGpac from the model and the session's current settings. */
+  /**
+   * CONFIGpac from the model and the session's current settings (in the {@code mobilesim} profile,
+   * MobileSim's values: see {@link MobileSimConfig}).
+   */
   public static ArRobotPacket config(
       ArRobotPacket p, RobotBody b, int sipCycleMs, int watchdogMs, int gyroCw, int gyroCcw) {
+    if (b.profile() == SimProfile.MOBILESIM) {
+      return MobileSimConfig.config(p, b, sipCycleMs, watchdogMs);
+    }
     RobotModel m = b.model();
     MotionController mc = b.motion();
     ArConfigPacket c = new ArConfigPacket();
@@ -179,11 +221,10 @@ public final class ServerPackets {
     c.set(Field.AUX3_BAUD, 0);
     c.set(Field.TICKS_MM, b.odometry().getTicksMm());
     c.set(Field.SHUTDOWN_VOLTS, 105);
-    c.set(Field.FIRMWARE_MAJOR, FIRMWARE_MAJOR);
-    c.set(Field.FIRMWARE_MINOR, FIRMWARE_MINOR);
-    c.set(Field.CHARGE_THRESHOLD, 0);
+    c.set(Field.FIRMWARE_VERSION, FIRMWARE_VERSION);
     c.set(Field.GYRO_CW, gyroCw);
     c.set(Field.GYRO_CCW, gyroCcw);
+    c.set(Field.CHARGE_THRESHOLD, 0);
     return c.encode(p);
   }
 

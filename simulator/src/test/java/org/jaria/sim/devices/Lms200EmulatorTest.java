@@ -15,6 +15,7 @@ import org.jaria.geom.ArPose;
 import org.jaria.laser.ArLMS2xx;
 import org.jaria.laser.ArSick;
 import org.jaria.laser.LmsSettings;
+import org.jaria.laser.LmsTelegram;
 import org.jaria.range.LaserScan;
 import org.jaria.sim.RobotOptions;
 import org.jaria.sim.SimOptions;
@@ -167,6 +168,35 @@ class Lms200EmulatorTest {
       assertTrue(laser.waitForScans(5, PATIENCE_MS), "scans resume");
       assertNotNull(laser.getLaserScan());
       assertEquals(2, server.getDevices().size());
+    }
+  }
+
+  /**
+   * AriaCoda's ArLMS2xx asks for the variant with a resolution of 0 (it sends an increment field
+   * that is never set: the bytes below are what its laserConnect sends for 180° at 1°). The
+   * emulator keeps its resolution and says yes, so AriaCoda's laser programs connect.
+   */
+  @Test
+  void ariaCodasVariantRequestWithResolutionZeroIsAccepted() throws Exception {
+    byte[] ariaCoda = LmsTelegram.toLaser(0x3B, (byte) 0xB4, (byte) 0, (byte) 0, (byte) 0).encode();
+    try (DeviceTcpServer server =
+            new DeviceTcpServer(
+                0, (c, i) -> new Lms200Emulator(c, LaserSensor.of(robot), DeviceFaults.NONE, 20));
+        java.net.Socket socket =
+            new java.net.Socket(java.net.InetAddress.getLoopbackAddress(), server.getPort())) {
+      socket.setSoTimeout((int) PATIENCE_MS);
+      socket.getOutputStream().write(ariaCoda);
+      java.io.DataInputStream in = new java.io.DataInputStream(socket.getInputStream());
+      assertEquals(LmsTelegram.ACK, in.readUnsignedByte());
+      assertEquals(LmsTelegram.STX, in.readUnsignedByte());
+      assertEquals(LmsTelegram.FROM_LASER, in.readUnsignedByte());
+      int len = in.readUnsignedByte() | in.readUnsignedByte() << 8;
+      byte[] body = new byte[len];
+      in.readFully(body);
+      assertEquals(0xBB, body[0] & 0xFF, "the variant answer");
+      assertEquals(1, body[1], "accepted (ARIA gives up on 0)");
+      assertEquals(180, (body[2] & 0xFF) | (body[3] & 0xFF) << 8, "180°");
+      assertEquals(100, (body[4] & 0xFF) | (body[5] & 0xFF) << 8, "at the 1° it had");
     }
   }
 

@@ -36,8 +36,8 @@ public final class MobileSimOptions {
       names = {"--start", "-start"},
       paramLabel = "x,y,th|outside|random",
       description =
-          "Where robots start: x,y,th (mm, deg; the first robot), outside (2 m beyond the map) or"
-              + " random (within the map, from --seed)")
+          "Where robots start: x,y,th (mm, deg), outside (2 m left of the map) or random (within"
+              + " the map, from --seed); every robot, the next ones 1 m below (-y) the one before")
   String start;
 
   @Option(
@@ -93,8 +93,16 @@ public final class MobileSimOptions {
 
   @Option(
       names = {"--no-error", "-no-error"},
-      description = "Exact odometry (JAria's default; see --odometry-error)")
+      description = "Exact odometry (the pioneer profile's default; see --odometry-error)")
   boolean noError;
+
+  @Option(
+      names = {"--odom-error-mode", "-odom-error-mode"},
+      paramLabel = "MODE",
+      description =
+          "MobileSim's odometry error modes: random_each_update (the mobilesim profile's"
+              + " default), random_init, constant (0.0075 per metre and per radian) or none")
+  String odomErrorMode;
 
   /** MobileSim options with no meaning in a headless simulator without crash handlers. */
   @Option(

@@ -5,6 +5,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.SplittableRandom;
@@ -21,6 +22,7 @@ import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
 import org.jaria.sim.StartPlace;
+import org.jaria.sim.robot.SimProfile;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -46,6 +48,20 @@ import picocli.CommandLine.Spec;
       "Connect any ARIA client (e.g. -remoteHost localhost -remoteRobotTcpPort 8101). Ctrl-C stops."
     })
 public final class SimCommand implements Callable<Integer> {
+
+  /**
+   * MobileSim's spellings of {@link SimCommand}'s own options (see {@link #usesMobileSimOptions}).
+   */
+  private static final Set<String> MOBILESIM_SPELLINGS =
+      Set.of(
+          "-m",
+          "-map",
+          "-r",
+          "-robot",
+          "--srisim-compat",
+          "--no-srisim-laser-compat",
+          "--ignore-command",
+          "--cwd");
 
   @Spec private CommandSpec spec;
 
@@ -103,9 +119,21 @@ public final class SimCommand implements Callable<Integer> {
       names = "--odometry-error",
       paramLabel = "SPEC",
       description =
-          "Odometry error: none, constant:T,R or random:T,R (per metre, per radian), e.g."
-              + " random:0.02,0.05")
-  String odometryError = "none";
+          "Odometry error: none, constant:T,R, random:T,R, random_each_update:T,R or"
+              + " random_init:T,R (per metre, per radian), e.g. random:0.02,0.05 (default: the"
+              + " profile's: none for pioneer, random_each_update:0.0075,0.0075 for mobilesim)")
+  String odometryError;
+
+  @Option(
+      names = "--profile",
+      paramLabel = "mobilesim|pioneer",
+      description =
+          "Behave as MobileSim (ray sonar, all 16 readings per SIP, motors on, MobileSim's"
+              + " CONFIGpac, drifting odometry, no gripper) or as a real Pioneer (sonar cone and"
+              + " cycle, motors off until enabled, the model's CONFIGpac, exact odometry). Default:"
+              + " mobilesim when the command line uses MobileSim's own options (-m, -r, --nomap,"
+              + " --start, --nogui, ...), else pioneer")
+  String profileName;
 
   @Option(names = "--sip-cycle", paramLabel = "MS", description = "SIP cycle, ms (default 100)")
   int sipCycle = 100;
@@ -131,8 +159,9 @@ public final class SimCommand implements Callable<Integer> {
       paramLabel = "TYPE",
       description =
           "The camera or pan-tilt unit on every robot's AUX1 port, by ARIA's PTZType names: vcc4"
-              + " (default), sony, dpptu or none")
-  String ptzType = "vcc4";
+              + " (the pioneer profile's default), sony, dpptu or none (the mobilesim profile's"
+              + " default: MobileSim simulates no camera)")
+  String ptzType;
 
   /** The old switch for what is now the default (SRISim laser commands on). */
   @Option(
@@ -202,9 +231,18 @@ public final class SimCommand implements Callable<Integer> {
             plan.factoryPort(i),
             m -> start == null ? null : start.poseFor(0, m, rng));
       }
+      boolean row = options.profile() == SimProfile.MOBILESIM;
       for (int i = 0; i < specs.size(); i++) {
         RobotOptions o = robotOptions(specs.get(i)).withPort(plan.robotPort(i));
-        ArPose pose = start == null ? null : start.poseFor(i, world.getMap(), rng);
+        ArPose pose;
+        if (start != null) {
+          pose = start.poseFor(i, world.getMap(), rng);
+        } else if (row && i > 0) {
+          // MobileSim stands its robots in a row below the map's home, 1 m apart
+          pose = StartPlace.inRow(world.getMap().home(), i);
+        } else {
+          pose = null; // the home, or the nearest free spot around it
+        }
         world.addRobot(pose == null ? o : o.withStartPose(pose));
       }
     } catch (IllegalArgumentException e) {
@@ -253,7 +291,49 @@ public final class SimCommand implements Callable<Integer> {
     }
     return o.withLegacyLaserCommands(o.laser() && !noSrisimLaserCompat)
         .withSrisimCompat(srisimCompat)
-        .withPtzType(ptzType);
+        .withPtzType(
+            ptzType != null ? ptzType : profile() == SimProfile.MOBILESIM ? "none" : "vcc4")
+        .withGripper(profile().gripperByDefault());
+  }
+
+  /**
+   * The profile: {@code --profile} if given, else {@code mobilesim} when the command line is
+   * MobileSim's (see {@link #usesMobileSimOptions()}), else {@code pioneer}.
+   *
+   * @throws ParameterException if {@code --profile} names no profile
+   */
+  public SimProfile profile() {
+    if (profileName != null) {
+      try {
+        return SimProfile.parse(profileName);
+      } catch (IllegalArgumentException e) {
+        throw new ParameterException(spec.commandLine(), e.getMessage());
+      }
+    }
+    return usesMobileSimOptions() ? SimProfile.MOBILESIM : SimProfile.PIONEER;
+  }
+
+  /**
+   * Whether the command line uses an option JAria has only because MobileSim has it: any of {@link
+   * MobileSimOptions}, the spellings {@code -m}, {@code -map}, {@code -r}, {@code -robot}, and
+   * {@code --srisim-compat}, {@code --no-srisim-laser-compat}, {@code --ignore-command}, {@code
+   * --cwd}. JAria's own {@code --map}, {@code --robot} and {@code -p}/{@code --port} do not count.
+   */
+  boolean usesMobileSimOptions() {
+    if (spec.commandLine().getParseResult() == null) {
+      return false;
+    }
+    Set<String> names = new HashSet<>(MOBILESIM_SPELLINGS);
+    for (OptionSpec o : spec.mixins().get("mobileSim").options()) {
+      names.addAll(List.of(o.names()));
+    }
+    for (String a : spec.commandLine().getParseResult().originalArgs()) {
+      int eq = a.indexOf('=');
+      if (names.contains(eq > 0 ? a.substring(0, eq) : a)) {
+        return true;
+      }
+    }
+    return false;
   }
 
   /** The robot models to add, in order (none by default if there are robot factories). */
@@ -286,15 +366,25 @@ public final class SimCommand implements Callable<Integer> {
       throw new ParameterException(
           spec.commandLine(), "--seconds must be positive, was " + seconds);
     }
+    SimProfile profile = profile();
     OdometryError err;
     try {
-      err = OdometryError.parse(mobileSim.noError ? "none" : odometryError);
+      if (mobileSim.noError) {
+        err = OdometryError.NONE;
+      } else if (odometryError != null) {
+        err = OdometryError.parse(odometryError);
+      } else if (mobileSim.odomErrorMode != null) {
+        err = OdometryError.ofMobileSimMode(mobileSim.odomErrorMode);
+      } else {
+        err = profile.odometryError();
+      }
     } catch (IllegalArgumentException e) {
       throw new ParameterException(spec.commandLine(), e.getMessage());
     }
     try {
       Integer tick = mobileSim.tickMillis();
       return SimOptions.builder()
+          .profile(profile)
           .server(serverOptions())
           .tickMillis(tick != null ? tick : 10)
           .seed(seed)
@@ -302,7 +392,7 @@ public final class SimCommand implements Callable<Integer> {
           .sipCycleMillis(sipCycle)
           .watchdogWarnOnly(watchdogWarnOnly)
           .odometryError(err)
-          .sonar(SimOptions.defaults().sonar().withSpecular(!noSpecular))
+          .sonar(noSpecular ? profile.sonar().withSpecular(false) : profile.sonar())
           .build();
     } catch (IllegalArgumentException e) {
       throw new ParameterException(spec.commandLine(), e.getMessage());
@@ -408,7 +498,8 @@ public final class SimCommand implements Callable<Integer> {
       world.listen();
       printListening(world, out);
       out.printf(
-          "map %s, %s; %s%n",
+          "profile %s; map %s, %s; %s%n",
+          world.getOptions().profile().cliName(),
           map != null ? map : (mobileSim.noMap ? "none (empty world)" : "office"),
           isUnthrottled() ? "unthrottled" : "speed-up " + pacing(),
           seconds == null
@@ -480,8 +571,8 @@ public final class SimCommand implements Callable<Integer> {
       ArPose b = r.getTruePose();
       out.printf(
           java.util.Locale.ROOT,
-          "robot %s: started at %.0f,%.0f,%.0f; now at %.0f,%.0f,%.0f; moved %.0f mm; %d"
-              + " client session(s)%n",
+          "robot %s: started at %.0f,%.0f,%.0f; now at %.0f,%.0f,%.0f; moved %.0f mm from the"
+              + " start; drove %.0f mm; %d client session(s)%n",
           r.getName(),
           a.x(),
           a.y(),
@@ -490,6 +581,7 @@ public final class SimCommand implements Callable<Integer> {
           b.y(),
           b.th(),
           Math.hypot(b.x() - a.x(), b.y() - a.y()),
+          r.getDistanceDriven(),
           r.getSessionCount());
     }
     for (RobotFactory f : world.getRobotFactories()) {
