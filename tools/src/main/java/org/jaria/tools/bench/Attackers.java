@@ -14,7 +14,7 @@ import java.util.concurrent.atomic.AtomicLong;
  * send a valid packet (silent, or one garbage byte a second each) and connect again as soon as the
  * server drops them, for as long as they run. Stopped and joined by {@link #close()}.
  */
-final class Attackers implements AutoCloseable {
+public final class Attackers implements AutoCloseable {
 
   private static final byte[] GARBAGE = {'x'};
 
@@ -30,7 +30,7 @@ final class Attackers implements AutoCloseable {
    * Starts {@code n} attackers on the loopback {@code port}; with {@code trickle}, each sends one
    * garbage byte a second, else nothing.
    */
-  Attackers(int port, int n, boolean trickle) {
+  public Attackers(int port, int n, boolean trickle) {
     this.port = port;
     this.trickle = trickle;
     this.socks = new SocketChannel[n];
@@ -40,12 +40,12 @@ final class Attackers implements AutoCloseable {
   }
 
   /** Waits until every attacker has connected once (at most 30 s). */
-  void awaitConnected() throws InterruptedException {
+  public void awaitConnected() throws InterruptedException {
     connected.await(30, TimeUnit.SECONDS);
   }
 
   /** Connections made again after the server dropped one. */
-  long reconnects() {
+  public long reconnects() {
     return reconnects.get();
   }
 
