@@ -81,7 +81,13 @@ public final class SimWorld implements AutoCloseable, CameraScene {
   private final ClientMapLoader mapLoader;
   private final CommandPolicy commandPolicy;
   private volatile IntConsumer exitHandler =
-      code -> log.warn("a client asked the simulator to exit with code {}; no exit handler", code);
+      code -> {
+        if (code == EXIT_WORLD_FAILED) {
+          log.warn("the simulator stopped (code {}); no exit handler ends the program", code);
+        } else {
+          log.warn("a client asked the simulator to exit with code {}; no exit handler", code);
+        }
+      };
   private boolean closed;
 
   private SimWorld(WorldMap map, SimOptions options, VirtualClock clock) {
