@@ -38,7 +38,7 @@ final class SquatterBenchmark {
   /** Appends the rows (fewer and shorter attempts when {@code quick}). */
   static void rows(StringBuilder out, boolean quick) throws Exception {
     int attempts = quick ? 5 : 30;
-    long runMillis = quick ? 300 : 1000;
+    long runMillis = quick ? 500 : 1000;
     out.append(
         String.format(
             Locale.ROOT,
@@ -124,6 +124,9 @@ final class SquatterBenchmark {
               served++;
             }
             Thread.sleep(runMillis / 10); // spread the attempts over the attack
+          }
+          if (running) {
+            Thread.sleep(runMillis); // and the program runs on a while, as in the other rows
           }
           stop(robot);
         }
