@@ -99,6 +99,8 @@ final class ClientMapLoader implements AutoCloseable {
       log.warn("{}: client map '{}' refused: {}", robotName, shown, e.getMessage());
     } catch (MapFormatException e) {
       log.warn("{}: client map '{}' is not a valid map (line {})", robotName, shown, e.getLine());
+    } catch (MapBudget.MapTooBigException e) {
+      log.warn("{}: client map refused: {}", robotName, e.getMessage());
     } catch (IOException e) {
       log.warn(
           "{}: client map '{}' cannot be read ({})",

@@ -8,6 +8,7 @@ import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
 import org.jaria.map.ArMapPoints;
 import org.jaria.map.MapFormatException;
+import org.jaria.sim.world.MapCost;
 import org.jaria.sim.world.WorldMap;
 
 /**
@@ -33,9 +34,40 @@ public final class MapSupport {
     return s.endsWith(".map") ? s.substring(0, s.length() - 4) : s;
   }
 
-  /** The physical content of {@code map}. */
+  /**
+   * The physical content of {@code map}, if it fits the simulator's {@link MapBudget#DEFAULT}.
+   *
+   * @throws MapBudget.MapTooBigException if it does not (checked before anything is built)
+   */
   public static WorldMap fromArMap(ArMap map, String source) {
+    return fromArMap(map, source, MapBudget.DEFAULT);
+  }
+
+  /**
+   * The physical content of {@code map}, if it fits {@code budget}.
+   *
+   * @throws MapBudget.MapTooBigException if it does not (checked before anything is built)
+   */
+  public static WorldMap fromArMap(ArMap map, String source, MapBudget budget) {
     List<ArLineSegment> lines = map.getLines();
+    ArMapPoints pts = map.getPoints();
+    int n = pts.size();
+    // counts first: they alone bound what the copies below cost
+    budget.check(new MapCost(lines.size(), n, 0), source);
+    int[] xs = new int[n];
+    int[] ys = new int[n];
+    for (int i = 0; i < n; i++) {
+      xs[i] = pts.x(i);
+      ys[i] = pts.y(i);
+    }
+    double radius = pointRadius(map);
+    budget.check(MapCost.of(lines, xs, ys, radius), source);
+    ArPose home = map.findHomePose().orElse(ArPose.ORIGIN);
+    return new WorldMap(source, lines, xs, ys, radius, home);
+  }
+
+  /** What {@code map} costs the simulator (see {@link MapBudget}). */
+  public static MapCost cost(ArMap map) {
     ArMapPoints pts = map.getPoints();
     int n = pts.size();
     int[] xs = new int[n];
@@ -44,22 +76,24 @@ public final class MapSupport {
       xs[i] = pts.x(i);
       ys[i] = pts.y(i);
     }
+    return MapCost.of(map.getLines(), xs, ys, pointRadius(map));
+  }
+
+  private static double pointRadius(ArMap map) {
     int res = map.getResolution();
-    double radius = res > 0 ? res / 2.0 : DEFAULT_POINT_RADIUS;
-    ArPose home = map.findHomePose().orElse(ArPose.ORIGIN);
-    return new WorldMap(source, lines, xs, ys, radius, home);
+    return res > 0 ? res / 2.0 : DEFAULT_POINT_RADIUS;
   }
 
   /**
    * Reads a map file.
    *
    * @throws IOException if the file cannot be read, or (with the parser's "file:line: what"
-   *     message) if a line is malformed
+   *     message) if a line is malformed, or if the map is over the simulator's {@link MapBudget}
    */
   public static WorldMap load(Path file) throws IOException {
     try {
       return fromArMap(ArMap.readFile(file), file.toString());
-    } catch (MapFormatException e) {
+    } catch (MapFormatException | MapBudget.MapTooBigException e) {
       throw new IOException(e.getMessage(), e);
     }
   }

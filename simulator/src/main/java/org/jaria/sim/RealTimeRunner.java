@@ -53,13 +53,10 @@ final class RealTimeRunner {
       long t0 = System.nanoTime();
       try {
         world.step();
-      } catch (IllegalStateException e) {
-        if (running) {
-          log.warn("world thread stops: {}", e.getMessage());
+      } catch (Throwable e) { // NOPMD: an Error too must not leave ports nobody serves
+        if (running && !world.isClosed()) {
+          world.worldThreadFailed(e);
         }
-        return;
-      } catch (RuntimeException e) {
-        log.error("world step failed; the simulation stops", e);
         return;
       }
       ticks++;

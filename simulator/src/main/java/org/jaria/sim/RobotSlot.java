@@ -1,7 +1,6 @@
 package org.jaria.sim;
 
 import java.nio.channels.ServerSocketChannel;
-import java.nio.channels.SocketChannel;
 import java.util.SplittableRandom;
 import java.util.concurrent.TimeUnit;
 import java.util.random.RandomGenerator;
@@ -12,10 +11,11 @@ import org.jaria.sim.robot.RobotModel;
 import org.jaria.sim.serial.AuxDevices;
 import org.jaria.sim.server.ArcosSession;
 import org.jaria.sim.server.LogRateLimit;
+import org.jaria.sim.server.RobotClients;
 
 /**
  * A robot in a world with its server side: TCP port (none for a robot a {@link RobotFactory} made
- * for one client), current client session, drop counters.
+ * for one client), its clients (the one holding it and those in their handshake), drop counters.
  */
 final class RobotSlot {
 
@@ -35,19 +35,9 @@ final class RobotSlot {
 
   ServerSocketChannel server;
   int boundPort = -1;
-  ArcosSession session;
-  long sessionsStarted;
 
-  /** A client that connected while the robot had one; it gets the robot when that one leaves. */
-  SocketChannel waiting;
-
-  long waitingSinceNanos;
-
-  /** Connections refused (the robot was taken), sessions ended by a timeout. */
-  long refused;
-
-  long timedOut;
-  final LogRateLimit refusalLog;
+  /** Every connection to the robot and who holds it. */
+  final RobotClients clients;
 
   RobotSlot(
       SimWorld world,
@@ -61,9 +51,18 @@ final class RobotSlot {
     this.factory = factory;
     this.drops = new DropCounters(body.name());
     this.handle = new SimRobot(world, this);
-    this.refusalLog =
-        new LogRateLimit(
-            TimeUnit.MILLISECONDS.toNanos(world.getOptions().server().refusalLogMillis()));
+    this.clients =
+        new RobotClients(
+            body,
+            world.host(),
+            drops,
+            new LogRateLimit(
+                TimeUnit.MILLISECONDS.toNanos(world.getOptions().server().refusalLogMillis())));
+  }
+
+  /** The session holding the robot, or null. */
+  ArcosSession session() {
+    return clients.holder();
   }
 
   /**
@@ -109,44 +108,24 @@ final class RobotSlot {
     return new RobotSlot(world, body, o, port, factory);
   }
 
-  /** Lets the session read and execute what its client sent; forgets it if the client left. */
+  /** Lets every connection read and execute what its client sent. */
   void poll(long now) {
-    ArcosSession ses = session;
-    if (ses != null) {
-      ses.poll(now);
-      forgetIfEnded(ses);
-    }
+    clients.poll(now);
   }
 
-  /** Lets the session send what is due after the tick's physics. */
+  /** Lets every connection send what is due after the tick's physics. */
   void afterPhysics(long now) {
-    ArcosSession ses = session;
-    if (ses != null) {
-      ses.afterPhysics(now);
-      forgetIfEnded(ses);
-    }
-  }
-
-  private void forgetIfEnded(ArcosSession ses) {
-    if (ses.state() == ArcosSession.State.ENDED && session == ses) {
-      session = null;
-      if (ses.timedOut()) {
-        timedOut++;
-      }
-    }
+    clients.afterPhysics(now);
   }
 
   /** Whether a factory made this robot and its client has gone (so the robot leaves the world). */
   boolean isOrphan() {
-    return factory != null && session == null;
+    return factory != null && !clients.hasConnections();
   }
 
-  /** Ends the current session, if any. */
+  /** Ends every connection to the robot. */
   void endSession(String why) {
-    if (session != null) {
-      session.end(why);
-      session = null;
-    }
+    clients.endAll(why);
   }
 
   @Override

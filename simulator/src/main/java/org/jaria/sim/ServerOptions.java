@@ -10,7 +10,8 @@ import java.util.Set;
  * defaults" in docs/simulator.md.
  *
  * @param handshakeTimeoutMillis a network client that has not sent OPEN this long after connecting
- *     (or after a CLOSE) is disconnected, ms (default 5000)
+ *     (or after a CLOSE) is disconnected, ms (default 2000). Until it has completed the handshake
+ *     (SYNC0..SYNC2) a connection never holds the robot, so this only bounds what a squatter costs.
  * @param clientTimeoutMillis a network client of an open robot that sends no packet for this long
  *     is disconnected and the robot freed, ms (default 10000; 0 never). The watchdog stops the
  *     robot long before.
@@ -22,6 +23,9 @@ import java.util.Set;
  *     false: only clients on the loopback may end it)
  * @param refusalLogMillis at most one log line per robot this often about refused connections, ms
  *     (default 10000); the rest are counted
+ * @param replaceSilentMillis a network client holding a robot that has sent no valid packet for
+ *     this long gives it up to the next client that completes the handshake, ms (default 2000, the
+ *     watchdog's time; ARIA sends a packet at least every half second)
  */
 public record ServerOptions(
     int handshakeTimeoutMillis,
@@ -30,11 +34,12 @@ public record ServerOptions(
     Path mapFolder,
     long maxMapBytes,
     boolean remoteExit,
-    int refusalLogMillis) {
+    int refusalLogMillis,
+    int replaceSilentMillis) {
 
   /** The defaults. */
   public static final ServerOptions DEFAULTS =
-      new ServerOptions(5000, 10_000, Set.of(), null, 64L << 20, false, 10_000);
+      new ServerOptions(2000, 10_000, Set.of(), null, 64L << 20, false, 10_000, 2000);
 
   /** Checks the values. */
   public ServerOptions {
@@ -59,6 +64,11 @@ public record ServerOptions(
       throw new IllegalArgumentException(
           "the refusal log interval must be 0 or more ms, was " + refusalLogMillis);
     }
+    if (replaceSilentMillis < 1) {
+      throw new IllegalArgumentException(
+          "the time after which a silent client can be replaced must be at least 1 ms, was "
+              + replaceSilentMillis);
+    }
   }
 
   /** These options with other timeouts, ms. */
@@ -70,7 +80,8 @@ public record ServerOptions(
         mapFolder,
         maxMapBytes,
         remoteExit,
-        refusalLogMillis);
+        refusalLogMillis,
+        replaceSilentMillis);
   }
 
   /** These options ignoring {@code commands} (numbers 0..255). */
@@ -82,7 +93,8 @@ public record ServerOptions(
         mapFolder,
         maxMapBytes,
         remoteExit,
-        refusalLogMillis);
+        refusalLogMillis,
+        replaceSilentMillis);
   }
 
   /**
@@ -97,7 +109,8 @@ public record ServerOptions(
         folder,
         maxBytes,
         remoteExit,
-        refusalLogMillis);
+        refusalLogMillis,
+        replaceSilentMillis);
   }
 
   /** These options letting clients on other machines end the simulator with SIM_EXIT. */
@@ -109,6 +122,23 @@ public record ServerOptions(
         mapFolder,
         maxMapBytes,
         allowed,
-        refusalLogMillis);
+        refusalLogMillis,
+        replaceSilentMillis);
+  }
+
+  /**
+   * These options with holders silent for {@code millis} replaceable by the next client that
+   * completes the handshake.
+   */
+  public ServerOptions withReplaceSilentMillis(int millis) {
+    return new ServerOptions(
+        handshakeTimeoutMillis,
+        clientTimeoutMillis,
+        ignoredCommands,
+        mapFolder,
+        maxMapBytes,
+        remoteExit,
+        refusalLogMillis,
+        millis);
   }
 }

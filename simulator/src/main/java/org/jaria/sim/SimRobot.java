@@ -14,6 +14,7 @@ import org.jaria.sim.robot.RobotModel;
 import org.jaria.sim.serial.AuxSerialDevice;
 import org.jaria.sim.serial.PtzHead;
 import org.jaria.sim.server.ArcosSession;
+import org.jaria.sim.server.ClientKind;
 
 /**
  * A robot in a {@link SimWorld}, seen from a test or a tool: connect a client to it, read and set
@@ -95,8 +96,7 @@ public final class SimRobot implements CameraMount {
       } catch (IOException e) {
         throw new UncheckedIOException(e);
       }
-      slot.session = new ArcosSession(slot.body, pair.b(), world.host(), slot.drops);
-      slot.sessionsStarted++;
+      slot.clients.attach(pair.b(), ClientKind.IN_MEMORY);
       return pair.a();
     } finally {
       world.lock.unlock();
@@ -110,23 +110,22 @@ public final class SimRobot implements CameraMount {
   public void dropConnection() {
     world.lock.lock();
     try {
-      ArcosSession s = slot.session;
-      if (s != null) {
+      for (ArcosSession s : slot.clients.all()) {
         if (s.connection() instanceof PipeConnection p) {
           p.breakConnection();
         }
-        slot.endSession("dropped through the simulator API");
       }
+      slot.endSession("dropped through the simulator API");
     } finally {
       world.lock.unlock();
     }
   }
 
-  /** Whether a client is connected. */
+  /** Whether a client is connected (holding the robot or still in its handshake). */
   public boolean isClientConnected() {
     world.lock.lock();
     try {
-      return slot.session != null;
+      return slot.clients.hasConnections();
     } finally {
       world.lock.unlock();
     }
@@ -136,7 +135,8 @@ public final class SimRobot implements CameraMount {
   public boolean isSessionOpen() {
     world.lock.lock();
     try {
-      return slot.session != null && slot.session.state() == ArcosSession.State.OPEN;
+      ArcosSession s = slot.session();
+      return s != null && s.state() == ArcosSession.State.OPEN;
     } finally {
       world.lock.unlock();
     }
@@ -146,7 +146,7 @@ public final class SimRobot implements CameraMount {
   public long getSessionCount() {
     world.lock.lock();
     try {
-      return slot.sessionsStarted;
+      return slot.clients.connections();
     } finally {
       world.lock.unlock();
     }

@@ -50,6 +50,9 @@ public final class SimWorld implements AutoCloseable, CameraScene {
 
   private static final Logger log = LoggerFactory.getLogger(SimWorld.class);
 
+  /** The exit code the exit handler hears when the world thread fails (sysexits' EX_SOFTWARE). */
+  public static final int EXIT_WORLD_FAILED = 70;
+
   /** Numbers worlds for their names (and their threads' names) only; holds no simulation state. */
   private static final AtomicInteger WORLD_NUMBERS = new AtomicInteger();
 
@@ -78,7 +81,13 @@ public final class SimWorld implements AutoCloseable, CameraScene {
   private final ClientMapLoader mapLoader;
   private final CommandPolicy commandPolicy;
   private volatile IntConsumer exitHandler =
-      code -> log.warn("a client asked the simulator to exit with code {}; no exit handler", code);
+      code -> {
+        if (code == EXIT_WORLD_FAILED) {
+          log.warn("the simulator stopped (code {}); no exit handler ends the program", code);
+        } else {
+          log.warn("a client asked the simulator to exit with code {}; no exit handler", code);
+        }
+      };
   private boolean closed;
 
   private SimWorld(WorldMap map, SimOptions options, VirtualClock clock) {
@@ -135,12 +144,13 @@ public final class SimWorld implements AutoCloseable, CameraScene {
   /**
    * A world on a map file.
    *
-   * @throws IOException if the file cannot be read or parsed (the message names file and line)
+   * @throws IOException if the file cannot be read or parsed (the message names file and line), or
+   *     if the map is over the simulator's {@link MapBudget} (the message says which count)
    */
   public static SimWorld load(Path mapFile, SimOptions options) throws IOException {
     try {
       return of(ArMap.readFile(mapFile), mapFile.toString(), options, new VirtualClock());
-    } catch (org.jaria.map.MapFormatException e) {
+    } catch (org.jaria.map.MapFormatException | MapBudget.MapTooBigException e) {
       throw new IOException(e.getMessage(), e);
     }
   }
@@ -386,9 +396,10 @@ public final class SimWorld implements AutoCloseable, CameraScene {
   }
 
   /**
-   * What to do when a client sends SIM_EXIT (the command line ends its run). The handler runs on
-   * the stepping thread in the middle of a tick: it should only signal another thread (which may
-   * then close the world), never block or close the world itself.
+   * What to do when a client sends SIM_EXIT (the command line ends its run), or with {@link
+   * #EXIT_WORLD_FAILED} when the real-time thread fails. The handler runs on the stepping thread:
+   * it should only signal another thread (which may then close the world), never block or close the
+   * world itself.
    */
   public void setExitHandler(IntConsumer handler) {
     exitHandler = handler;
@@ -400,7 +411,12 @@ public final class SimWorld implements AutoCloseable, CameraScene {
 
   // ---------------------------------------------------------------- map and obstacles
 
-  /** Replaces the map; robots move to free spots near the new map's start position. */
+  /**
+   * Replaces the map; robots move to free spots near the new map's start position.
+   *
+   * @throws MapBudget.MapTooBigException if the map is over the simulator's budget (the world keeps
+   *     its map)
+   */
   public void loadMap(ArMap newMap, String source) {
     whileLocked(() -> obstacles.loadMap(newMap, source, robots.slots()));
   }
@@ -562,7 +578,35 @@ public final class SimWorld implements AutoCloseable, CameraScene {
   }
 
   boolean isClosed() {
-    return closed;
+    lock.lock();
+    try {
+      return closed;
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  /**
+   * The real-time thread could not step the world ({@code e}, an {@link Error} too): rather than
+   * leave ports that accept clients nobody serves, every client is disconnected, every port closed
+   * and the world closed; then the exit handler hears {@link #EXIT_WORLD_FAILED}.
+   */
+  void worldThreadFailed(Throwable e) {
+    log.error("the world thread failed; the simulator closes its ports and stops", e);
+    lock.lock();
+    try {
+      if (!closed) {
+        closed = true;
+        for (RobotSlot s : robots.slots()) {
+          s.endSession("the simulator failed");
+        }
+        serving.closePorts(robots.slots());
+      }
+    } finally {
+      lock.unlock();
+    }
+    mapLoader.close();
+    exitHandler.accept(EXIT_WORLD_FAILED);
   }
 
   void requireOpen() {

@@ -11,13 +11,10 @@ import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.Iterator;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import java.util.function.BiConsumer;
 import org.jaria.clock.Clock;
-import org.jaria.sim.server.ArcosSession;
 import org.jaria.sim.server.ClientKind;
 import org.jaria.sim.server.NioSocketConnection;
-import org.jaria.sim.server.SessionHost;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -29,6 +26,13 @@ import org.slf4j.LoggerFactory;
 final class TcpServers implements AutoCloseable {
 
   private static final Logger log = LoggerFactory.getLogger(TcpServers.class);
+
+  /**
+   * Connections the system may complete before the world thread accepts them (it accepts every
+   * tick). A short queue makes a burst of connects wait for the system's SYN retry (a second or
+   * more each) however fast the world accepts; the system may cap it (Linux: net.core.somaxconn).
+   */
+  static final int LISTEN_BACKLOG = 1024;
 
   private final Selector selector;
 
@@ -74,72 +78,17 @@ final class TcpServers implements AutoCloseable {
   }
 
   /**
-   * Gives a newly accepted client to its robot. If the robot still has a client, that client is
-   * checked first (it may just have left: ARIA's disconnect and a new connect can arrive in the
-   * same tick); if it is still there, the newcomer waits (one per robot, see {@link #serveWaiting})
-   * and any further one is refused.
+   * Gives a newly accepted client to its robot, where it waits beside the robot until it completes
+   * the handshake (see {@link org.jaria.sim.server.RobotClients} for who holds the robot).
    */
-  static void attach(RobotSlot slot, SocketChannel c, Clock clock, SessionHost host) {
-    long now = clock.nanoTime();
-    slot.poll(now);
-    if (slot.session == null) {
-      start(slot, c, clock, host);
-    } else if (slot.waiting == null) {
-      slot.waiting = c;
-      slot.waitingSinceNanos = now;
-    } else {
-      refuse(slot, c, now, "it already has a client and another is waiting");
-    }
-  }
-
-  /**
-   * Hands the waiting client over once its robot is free; refuses it if the robot is still taken
-   * after the handshake timeout.
-   */
-  static void serveWaiting(RobotSlot slot, Clock clock, SessionHost host) {
-    SocketChannel c = slot.waiting;
-    if (c == null) {
-      return;
-    }
-    long now = clock.nanoTime();
-    if (slot.session == null) {
-      slot.waiting = null;
-      start(slot, c, clock, host);
-    } else if (now - slot.waitingSinceNanos
-        > TimeUnit.MILLISECONDS.toNanos(host.handshakeTimeoutMillis())) {
-      slot.waiting = null;
-      refuse(slot, c, now, "it still has a client");
-    }
-  }
-
-  /** Starts a session between {@code slot}'s robot and the client {@code c}. */
-  static void start(RobotSlot slot, SocketChannel c, Clock clock, SessionHost host) {
+  static void attach(RobotSlot slot, SocketChannel c, Clock clock) {
     try {
       SocketAddress remote = c.getRemoteAddress();
-      ClientKind kind = ClientKind.ofTcpPeer(remote);
-      slot.session =
-          new ArcosSession(slot.body, new NioSocketConnection(c, clock), host, slot.drops, kind);
-      slot.sessionsStarted++;
-      log.info("robot {}: client connected ({})", slot.body.name(), remote);
+      slot.clients.attach(new NioSocketConnection(c, clock), ClientKind.ofTcpPeer(remote));
+      log.debug("robot {}: client connected ({})", slot.body.name(), remote);
     } catch (IOException e) {
       log.warn("robot {}: could not set up the connection: {}", slot.body.name(), e.getMessage());
       closeQuietly(c);
-    }
-  }
-
-  /** Closes a client the robot cannot take; counted always, logged rate-limited. */
-  private static void refuse(RobotSlot slot, SocketChannel c, long now, String why) {
-    closeQuietly(c);
-    slot.refused++;
-    long unlogged = slot.refusalLog.record(now);
-    if (unlogged == 0) {
-      log.warn("robot {}: connection refused: {}", slot.body.name(), why);
-    } else if (unlogged > 0) {
-      log.warn(
-          "robot {}: connection refused: {} ({} more refused since the last line)",
-          slot.body.name(),
-          why,
-          unlogged);
     }
   }
 
@@ -171,8 +120,7 @@ final class TcpServers implements AutoCloseable {
     ServerSocketChannel ch = ServerSocketChannel.open();
     try {
       ch.setOption(StandardSocketOptions.SO_REUSEADDR, true);
-      // a factory expects many clients at once (each gets a robot); a robot, one
-      ch.bind(new InetSocketAddress(bindAddress, port), owner instanceof RobotFactory ? 64 : 8);
+      ch.bind(new InetSocketAddress(bindAddress, port), LISTEN_BACKLOG);
       ch.configureBlocking(false);
       ch.register(selector, SelectionKey.OP_ACCEPT, owner);
       return ch;
@@ -243,10 +191,6 @@ final class TcpServers implements AutoCloseable {
 
   /** Closes one robot's port. */
   static void unbind(RobotSlot slot) {
-    if (slot.waiting != null) {
-      closeQuietly(slot.waiting);
-      slot.waiting = null;
-    }
     if (slot.server != null) {
       closeQuietly(slot.server);
       slot.server = null;

@@ -28,7 +28,7 @@ final class Views {
               t.reportedRangeMm(),
               t.hasEcho()));
     }
-    ArcosSession ses = s.session;
+    ArcosSession ses = s.session();
     return new SimSnapshot.RobotView(
         b.index(),
         b.name(),

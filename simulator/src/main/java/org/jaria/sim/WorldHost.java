@@ -3,6 +3,7 @@ package org.jaria.sim;
 import org.jaria.clock.Clock;
 import org.jaria.protocol.ArCommands;
 import org.jaria.protocol.ArRobotPacket;
+import org.jaria.sim.server.ArcosSession;
 import org.jaria.sim.server.CommandPolicy;
 import org.jaria.sim.server.IgnoredCommand;
 import org.jaria.sim.server.ServerPackets;
@@ -118,10 +119,11 @@ final class WorldHost implements SessionHost {
   }
 
   private static void answer(RobotSlot s, int status, String name) {
-    if (s.session != null) {
+    ArcosSession holder = s.session();
+    if (holder != null) {
       ArRobotPacket p = new ArRobotPacket();
       ServerPackets.mapChanged(p, false, status, name);
-      s.session.sendPacket(p);
+      holder.sendPacket(p);
     }
   }
 
@@ -138,6 +140,11 @@ final class WorldHost implements SessionHost {
   @Override
   public int clientTimeoutMillis() {
     return world.getOptions().server().clientTimeoutMillis();
+  }
+
+  @Override
+  public int replaceSilentMillis() {
+    return world.getOptions().server().replaceSilentMillis();
   }
 
   @Override

@@ -40,7 +40,7 @@ final class WorldQueries {
   int connectedClientCount(List<RobotSlot> slots) {
     int n = 0;
     for (RobotSlot s : slots) {
-      if (s.session != null) {
+      if (s.clients.hasConnections()) {
         n++;
       }
     }
@@ -52,11 +52,13 @@ final class WorldQueries {
     long sessions = 0;
     long refused = 0;
     long timedOut = 0;
+    long replaced = 0;
     for (RobotSlot s : slots) {
-      sessions += s.sessionsStarted;
-      refused += s.refused;
-      timedOut += s.timedOut;
+      sessions += s.clients.connections();
+      refused += s.clients.refused();
+      timedOut += s.clients.timedOut();
+      replaced += s.clients.replaced();
     }
-    return new ServerCounters(sessions, refused, timedOut);
+    return new ServerCounters(sessions, refused, timedOut, replaced);
   }
 }

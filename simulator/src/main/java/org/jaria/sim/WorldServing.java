@@ -5,7 +5,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.locks.ReentrantLock;
 import org.jaria.clock.VirtualClock;
-import org.jaria.sim.server.SessionHost;
 
 /**
  * How a world meets the outside: the robots' and robot factories' TCP ports and the thread that
@@ -68,16 +67,13 @@ final class WorldServing {
 
   /**
    * Gives clients that connected since the last tick to their robots (a factory's client to a new
-   * robot made for it), and waiting clients to robots that became free.
+   * robot made for it).
    */
-  void acceptPending(VirtualClock clock, SessionHost host, WorldRobots robots) {
+  void acceptPending(VirtualClock clock, WorldRobots robots) {
     if (servers != null) {
       servers.acceptPending(
-          (slot, c) -> TcpServers.attach(slot, c, clock, host),
-          (factory, c) -> TcpServers.start(robots.makeFor(factory, c), c, clock, host));
-      for (RobotSlot s : robots.slots()) {
-        TcpServers.serveWaiting(s, clock, host);
-      }
+          (slot, c) -> TcpServers.attach(slot, c, clock),
+          (factory, c) -> TcpServers.attach(robots.makeFor(factory, c), c, clock));
     }
   }
 

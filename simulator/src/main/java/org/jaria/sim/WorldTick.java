@@ -46,7 +46,7 @@ final class WorldTick {
       world.host().mapLoadFinished(loaded);
     }
     statics.rebuild();
-    serving.acceptPending(clock, world.host(), robots);
+    serving.acceptPending(clock, robots);
     List<RobotSlot> slots = robots.slots();
     for (RobotSlot s : slots) {
       s.poll(now);

@@ -105,6 +105,20 @@ class ClientMapLoadTest {
   }
 
   @Test
+  void aMapOverTheBudgetIsRefusedAndTheWorldKeepsItsMap(@TempDir Path dir) throws Exception {
+    MapBudgetTest.writeLongWalls(dir.resolve("long-walls.map"));
+    Files.writeString(dir.resolve("box.map"), BOX);
+    try (SimWorld w = SimWorld.empty(inFolder(dir, 64L << 20))) {
+      SimRobot r = w.addRobot("p3dx-sh");
+      ArcosTestClient c = new ArcosTestClient(w, r).open();
+      assertEquals(-1, load(w, c, "long-walls.map"), "under the byte limit, over the budget");
+      assertFalse(w.haveMap(), "nothing of it was built");
+      assertTrue(r.isSessionOpen());
+      assertEquals(1, load(w, c, "box.map"), "the next map loads as usual");
+    }
+  }
+
+  @Test
   void aFileThatIsNotAMapNeverReachesTheLog(@TempDir Path dir) throws Exception {
     Files.writeString(dir.resolve("secret.map"), "TOPSECRET-FIRST-LINE hunter2\nmore\n");
     PrintStream old = System.err;

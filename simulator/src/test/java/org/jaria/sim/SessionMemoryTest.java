@@ -42,7 +42,7 @@ class SessionMemoryTest {
   private static ArcosSession currentSession(SimWorld w) {
     w.lock.lock();
     try {
-      return w.slots().get(0).session;
+      return w.slots().get(0).session();
     } finally {
       w.lock.unlock();
     }

@@ -34,15 +34,16 @@ import org.slf4j.LoggerFactory;
  *       {@link ServerSettings#maxFps()} times a second (a still image is simply re-tracked, which
  *       also picks up channel changes made meanwhile);
  *   <li>{@code accept}: accepts clients and, at least once a second, disconnects clients idle for
- *       {@link ServerSettings#idleTimeoutMillis()} (they neither sent a byte nor took a reply:
- *       clients that only connect, stop reading, or vanished without closing). When the server is
- *       full ({@link ServerSettings#maxClients()}) a newcomer replaces the client idle longest
- *       among those that never sent a byte or have been idle half the idle timeout (at most 5 s;
- *       see {@link IdleClients}); if every client is busy, the newcomer is refused (closed at once,
- *       counted, logged at most once every 10 s).
+ *       {@link ServerSettings#idleTimeoutMillis()} (they neither asked for blobs nor took a reply:
+ *       clients that only connect, send only garbage, stop reading, or vanished without closing).
+ *       When the server is full ({@link ServerSettings#maxClients()}) a newcomer replaces the
+ *       client idle longest among those that never asked for blobs or have been idle half the idle
+ *       timeout (at most 5 s; see {@link IdleClients}); if every client is busy, the newcomer is
+ *       refused (closed at once, counted, logged at most once every 10 s).
  *   <li>{@code client-N}: one per client; answers each {@code '0'} with the latest reply, ignores
- *       (and counts) any other byte except {@code '1'} (quit). A client that vanishes, sends
- *       garbage or stops reading only ever blocks its own thread, until it is dropped as idle.
+ *       (and counts) any other byte except {@code '1'} (quit). Garbage is not activity. A client
+ *       that vanishes, sends garbage or stops reading only ever blocks its own thread, until it is
+ *       dropped as idle.
  * </ul>
  *
  * <p>The server listens on {@link ServerSettings#bindHost()}: every interface by default, as ACTS
@@ -129,7 +130,8 @@ public final class ActsServer implements AutoCloseable {
       try {
         InetAddress addr =
             settings.bindHost().isEmpty() ? null : InetAddress.getByName(settings.bindHost());
-        ss.bind(new InetSocketAddress(addr, settings.port()), 16);
+        // a burst of connects waits in the system's queue, not for its SYN retries
+        ss.bind(new InetSocketAddress(addr, settings.port()), 256);
       } catch (IOException e) {
         ss.close();
         throw new IOException(
@@ -321,7 +323,7 @@ public final class ActsServer implements AutoCloseable {
   private final class Client implements Runnable {
     final Socket socket;
     private volatile long lastActivityNanos;
-    private volatile boolean spoke;
+    private volatile boolean asked;
 
     Client(Socket socket, long now) {
       this.socket = socket;
@@ -329,7 +331,7 @@ public final class ActsServer implements AutoCloseable {
     }
 
     IdleClients.View view() {
-      return new IdleClients.View(lastActivityNanos, spoke);
+      return new IdleClients.View(lastActivityNanos, asked);
     }
 
     @Override
@@ -346,10 +348,11 @@ public final class ActsServer implements AutoCloseable {
           if (n < 0) {
             return;
           }
-          spoke = true;
-          lastActivityNanos = clock.nanoTime();
           for (int i = 0; i < n; i++) {
             if (buf[i] == ActsProtocol.REQUEST_PACKET) {
+              // only a request is activity: garbage, however steady, leaves the client idle
+              asked = true;
+              lastActivityNanos = clock.nanoTime();
               byte[] r = reply;
               out.write(r, 0, r.length);
               lastActivityNanos = clock.nanoTime();

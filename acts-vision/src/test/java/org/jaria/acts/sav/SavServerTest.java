@@ -5,6 +5,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayInputStream;
+import java.net.InetAddress;
+import java.net.Socket;
+import java.util.ArrayList;
+import java.util.List;
 import javax.imageio.ImageIO;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.client.ArClientBase;
@@ -31,6 +35,29 @@ class SavServerTest {
       int rgb = img.getRGB(80, 60);
       assertTrue(
           ((rgb >> 16) & 0xff) > 200 && (rgb & 0xff) < 60, "red: " + Integer.toHexString(rgb));
+    }
+  }
+
+  @Test
+  void threeHundredIdleSocketsDoNotKeepALoginOut() throws Exception {
+    int[] px = new int[160 * 120];
+    List<Socket> idle = new ArrayList<>();
+    try (SavServer sav = SavServer.open(px::clone, () -> 7, 160, 120, "127.0.0.1", 0)) {
+      try {
+        for (int i = 0; i < 300; i++) {
+          idle.add(new Socket(InetAddress.getLoopbackAddress(), sav.getPort()));
+        }
+        try (ArClientBase c = new ArClientBase("after-idle-sockets")) {
+          c.connect("127.0.0.1", sav.getPort(), "", "");
+          assertEquals(160, c.requestOnce("videoSize").get().bufToUByte2());
+        }
+        long replaced = sav.getServer().getStats().getReplacedPending();
+        assertTrue(replaced >= 292, "the stalest idle sockets made room: " + replaced);
+      } finally {
+        for (Socket s : idle) {
+          s.close();
+        }
+      }
     }
   }
 

@@ -242,8 +242,10 @@ class ActsServerTest {
   @Test
   void trainingChangesReachClientsWhileServing() throws Exception {
     try (ArACTS_1_2 acts = client()) {
-      long before = server.framesProcessed();
       new Trainer(bank).clearTraining();
+      // counted after the change: frame before + 1 may have started with the old tables, frame
+      // before + 2 starts once it is out, so after the change
+      long before = server.framesProcessed();
       assertTrue(server.awaitFrames(before + 2, 10, TimeUnit.SECONDS));
       acts.requestPacket();
       assertTrue(acts.receiveBlobInfo());

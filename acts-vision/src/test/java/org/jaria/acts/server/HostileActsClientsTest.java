@@ -8,6 +8,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.net.InetAddress;
 import java.net.Socket;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -17,6 +18,7 @@ import org.jaria.acts.color.ChannelBank;
 import org.jaria.acts.image.StillImageSource;
 import org.jaria.acts.image.TestScene;
 import org.jaria.clock.Clock;
+import org.jaria.clock.VirtualClock;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -26,6 +28,10 @@ import org.junit.jupiter.api.Test;
 class HostileActsClientsTest {
 
   private static ActsServer start(ServerSettings s) throws Exception {
+    return start(s, Clock.system());
+  }
+
+  private static ActsServer start(ServerSettings s, Clock clock) throws Exception {
     ActsServer srv =
         new ActsServer(
             new VisionPipeline(
@@ -33,7 +39,7 @@ class HostileActsClientsTest {
                 new ChannelBank(),
                 TrackerSettings.DEFAULT),
             s.withAddress("127.0.0.1", 0),
-            Clock.system());
+            clock);
     srv.start();
     assertTrue(srv.awaitFrames(1, 10, TimeUnit.SECONDS));
     return srv;
@@ -119,6 +125,68 @@ class HostileActsClientsTest {
       assertEquals(2, srv.clientsDroppedIdle());
       assertEquals(0, srv.activeClients());
       assertFalse(srv.clientsRefused() > 0);
+    }
+  }
+
+  /**
+   * Waits (bounded, for an event, not a time) until the server has read {@code n} garbage bytes.
+   */
+  private static void awaitGarbage(ActsServer srv, long n) {
+    for (long i = 0; i < 2_000_000_000L && srv.garbageBytes() < n; i++) {
+      Thread.onSpinWait();
+    }
+    assertEquals(n, srv.garbageBytes());
+  }
+
+  @Test
+  void aClientSendingOnlyGarbageIsIdleAndDroppedAfterTheIdleTimeout() throws Exception {
+    VirtualClock clock = new VirtualClock();
+    try (ActsServer srv = start(ServerSettings.DEFAULT, clock);
+        Socket trickle = connect(srv);
+        Socket real = connect(srv)) {
+      for (int s = 0; s < 36; s += 6) {
+        trickle.getOutputStream().write('x'); // one garbage byte
+        awaitGarbage(srv, s / 6 + 1);
+        assertTrue(served(real), "the real client asks and is answered");
+        clock.advance(Duration.ofSeconds(6));
+      }
+      assertTrue(closedByServer(trickle), "36 s of garbage is 36 s idle: dropped");
+      assertEquals(1, srv.clientsDroppedIdle());
+      assertTrue(served(real), "the client that asks stays");
+    }
+  }
+
+  @Test
+  void aFullServerOfGarbageSendersMakesRoomForARealClient() throws Exception {
+    VirtualClock clock = new VirtualClock();
+    List<Socket> tricklers = new ArrayList<>();
+    try (ActsServer srv = start(ServerSettings.DEFAULT.withMaxClients(4), clock)) {
+      try {
+        for (int i = 0; i < 4; i++) {
+          tricklers.add(connect(srv));
+        }
+        for (int round = 1; round <= 3; round++) {
+          for (Socket t : tricklers) {
+            t.getOutputStream().write(0x55);
+          }
+          awaitGarbage(srv, 4L * round);
+        }
+        for (int i = 0; i < 30; i++) {
+          try (Socket real = connect(srv)) {
+            assertTrue(served(real), "real client " + i + " served past the garbage senders");
+          }
+          // the next one comes once this one is gone (an event, bounded)
+          for (long k = 0; k < 2_000_000_000L && srv.activeClients() > 3; k++) {
+            Thread.onSpinWait();
+          }
+        }
+        assertEquals(0, srv.clientsRefused());
+        assertEquals(1, srv.clientsReplaced(), "one garbage sender made room");
+      } finally {
+        for (Socket s : tricklers) {
+          s.close();
+        }
+      }
     }
   }
 }

@@ -252,18 +252,22 @@ final class IoLoop implements Runnable {
         return;
       }
       int pending = 0;
+      ArServerClient stalest = null;
       for (ArServerClient o : clients) {
-        if (!o.isLoggedIn()) {
+        if (!o.isLoggedIn() && !o.closeAfterFlush) {
           pending++;
+          if (stalest == null || o.connectedNanos - stalest.connectedNanos < 0) {
+            stalest = o;
+          }
         }
       }
-      if (pending >= options.maxPendingLogins()) {
-        // Sockets that never log in must not lock real users out: refuse the newcomer at once.
-        server.stats.refusedPending.increment();
-        log.info(
-            "refused a connection from {}: already {} connections waiting to log in", ip, pending);
-        closeQuietly(ch);
-        continue;
+      if (pending >= options.maxPendingLogins() && stalest != null) {
+        // Sockets that never log in must not lock real users out, nor keep a newcomer out: the one
+        // that has waited longest without logging in makes room (a real client logs in within a
+        // round trip, so it is never the stalest for long).
+        server.stats.replacedPending.increment();
+        log.debug("{} made room for a connection from {}: not logged in yet", stalest, ip);
+        close(stalest, null, "made room for a newer connection while not logged in", false);
       }
       long authKey;
       do {

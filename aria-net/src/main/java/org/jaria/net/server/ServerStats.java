@@ -17,6 +17,7 @@ public final class ServerStats {
   final LongAdder updatesQueued = new LongAdder();
   final LongAdder loginThrottled = new LongAdder();
   final LongAdder refusedPending = new LongAdder();
+  final LongAdder replacedPending = new LongAdder();
   final LongAdder requestErrors = new LongAdder();
   final LongAdder udpDropped = new LongAdder();
 
@@ -75,6 +76,14 @@ public final class ServerStats {
   /** Connections closed at once because too many had not logged in yet. */
   public long getRefusedPending() {
     return refusedPending.sum();
+  }
+
+  /**
+   * Connections not logged in that were closed to make room for a newer one when {@code
+   * maxPendingLogins} had not logged in yet.
+   */
+  public long getReplacedPending() {
+    return replacedPending.sum();
   }
 
   /** Requests that failed (bad arguments, handler errors, busy). */

@@ -17,13 +17,16 @@ import org.slf4j.LoggerFactory;
  * One client connection to one simulated robot, seen from the robot: the ARCOS state machine.
  *
  * <p>Waiting for a client, the robot echoes SYNC0 and SYNC1 and answers SYNC2 with its name, type
- * and subtype (an out-of-order SYNC0 restarts the sequence; other packets are ignored). OPEN then
- * starts the servers: a SIP every SIP cycle, sonar on, motors disabled until ENABLE. In an open
- * session IDs 0, 1 and 2 mean PULSE, OPEN and CLOSE, so a client that restarts the handshake on a
- * robot still open from an earlier client gets a SIP in answer to its SYNC0, sends CLOSE and starts
- * again, exactly as with ARCOS. CLOSE stops the robot and returns to waiting; the connection stays
- * up. The watchdog stops the robot when commands stop for the watchdog time and lets it resume on
- * the next command other than PULSE (see {@link #packetReceived}).
+ * and subtype (an out-of-order SYNC0 restarts the sequence; other packets are ignored). The answer
+ * to SYNC2 is where a connection takes the robot: it is held back while the {@link Gate} says the
+ * robot is taken, so a connection that has not completed the handshake never holds the robot (see
+ * {@link RobotClients}). OPEN then starts the servers: a SIP every SIP cycle, sonar on, motors
+ * disabled until ENABLE. In an open session IDs 0, 1 and 2 mean PULSE, OPEN and CLOSE, so a client
+ * that restarts the handshake on a robot still open from an earlier client gets a SIP in answer to
+ * its SYNC0, sends CLOSE and starts again, exactly as with ARCOS. CLOSE stops the robot and returns
+ * to waiting; the connection stays up. The watchdog stops the robot when commands stop for the
+ * watchdog time and lets it resume on the next command other than PULSE (see {@link
+ * #packetReceived}).
  *
  * <p>The world thread drives it: {@link #poll} reads whatever arrived (never blocking) and executes
  * it, {@link #afterPhysics} sends what is due.
@@ -31,6 +34,19 @@ import org.slf4j.LoggerFactory;
 public final class ArcosSession implements ArRobotPacketReceiver.Listener {
 
   private static final Logger log = LoggerFactory.getLogger(ArcosSession.class);
+
+  /** Decides whether a session that has just completed the handshake may take the robot. */
+  @FunctionalInterface
+  public interface Gate {
+    /**
+     * Whether {@code s}, which has just sent SYNC2, may hold the robot now; if so, it holds it from
+     * this call on (and whoever held it before has been let go).
+     */
+    boolean mayHold(ArcosSession s);
+
+    /** A gate that always lets the session in (a robot with only ever one connection). */
+    Gate ALWAYS = s -> true;
+  }
 
   /** Where the session is in its life. */
   public enum State {
@@ -54,9 +70,14 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
   private final StandardSip sip = new StandardSip();
 
   private final ClientKind kind;
+  private final Gate gate;
+  private final long connectedNanos;
   private State state = State.SYNC;
   private int expectedSync;
   private long handshakeSinceNanos;
+  private long lastPacketNanos;
+  private boolean sentPacket;
+  private boolean awaitingRobot;
   private boolean timedOut;
   private long lastCommandNanos;
   private boolean watchdogTripped;
@@ -81,7 +102,7 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
    */
   public ArcosSession(
       RobotBody body, ArDeviceConnection conn, SessionHost host, DropCounters drops) {
-    this(body, conn, host, drops, ClientKind.IN_MEMORY);
+    this(body, conn, host, drops, ClientKind.IN_MEMORY, Gate.ALWAYS);
   }
 
   /**
@@ -90,20 +111,25 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
    * timeout.
    *
    * @param drops the robot's drop counters (kept across sessions)
+   * @param gate asked, when the client has sent SYNC2, whether it may take the robot
    */
   public ArcosSession(
       RobotBody body,
       ArDeviceConnection conn,
       SessionHost host,
       DropCounters drops,
-      ClientKind kind) {
+      ClientKind kind,
+      Gate gate) {
     this.body = body;
     this.conn = conn;
     this.host = host;
     this.kind = kind;
+    this.gate = gate;
     this.receiver = new ArRobotPacketReceiver(drops);
     this.commands = new CommandHandler(this);
-    this.handshakeSinceNanos = host.clock().nanoTime();
+    this.connectedNanos = host.clock().nanoTime();
+    this.handshakeSinceNanos = connectedNanos;
+    this.lastPacketNanos = connectedNanos;
   }
 
   /** Where the client is. */
@@ -119,6 +145,44 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
   /** The session's state. */
   public State state() {
     return state;
+  }
+
+  /** Whether the session holds the robot: it completed the handshake and has not closed. */
+  public boolean holdsRobot() {
+    return state == State.CONNECTED || state == State.OPEN;
+  }
+
+  /** Whether the client sent SYNC2 and waits for the answer because the robot is taken. */
+  public boolean awaitingRobot() {
+    return awaitingRobot;
+  }
+
+  /** When the connection was made (the session's clock). */
+  public long connectedNanos() {
+    return connectedNanos;
+  }
+
+  /**
+   * When the client last sent a whole, valid packet (its connection time before the first): bytes
+   * that do not make a packet are not activity.
+   */
+  public long lastPacketNanos() {
+    return lastPacketNanos;
+  }
+
+  /** Whether the client has sent one whole, valid packet yet. */
+  public boolean sentPacket() {
+    return sentPacket;
+  }
+
+  /**
+   * Asks the gate again for a client that waits for the robot (its SYNC2 held back), and answers
+   * SYNC2 if the robot is now free for it.
+   */
+  public void retryHold() {
+    if (awaitingRobot && state == State.SYNC && gate.mayHold(this)) {
+      completeHandshake();
+    }
   }
 
   /** The client connection. */
@@ -165,6 +229,8 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
   @Override
   public void packetReceived(ArRobotPacket p) {
     int id = p.getID();
+    lastPacketNanos = host.clock().nanoTime();
+    sentPacket = true;
     switch (state) {
       case SYNC -> handleSync(id);
       case CONNECTED -> {
@@ -216,15 +282,25 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
   private void handleSync(int id) {
     if (id == expectedSync || id == 0) {
       if (id == 2) {
-        send(ServerPackets.sync2(out, body.model()));
-        state = State.CONNECTED;
-        expectedSync = 0;
-        log.debug("{}: handshake done", body.name());
+        awaitingRobot = true;
+        if (gate.mayHold(this)) {
+          completeHandshake();
+        }
       } else {
+        awaitingRobot = false;
         send(ServerPackets.syncEcho(out, id));
         expectedSync = id + 1;
       }
     }
+  }
+
+  /** SYNC2's answer: the session holds the robot from now on. */
+  private void completeHandshake() {
+    awaitingRobot = false;
+    send(ServerPackets.sync2(out, body.model()));
+    state = State.CONNECTED;
+    expectedSync = 0;
+    log.debug("{}: handshake done", body.name());
   }
 
   private void open() {
@@ -257,10 +333,19 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
     if (state == State.ENDED) {
       return;
     }
-    body.closeSession();
+    boolean held = holdsRobot();
+    if (held) {
+      // a connection that does not hold the robot must not stop it under its real client
+      body.closeSession();
+    }
     state = State.ENDED;
     conn.close();
-    log.info("{}: client gone: {}", body.name(), why);
+    if (held) {
+      log.info("{}: client gone: {}", body.name(), why);
+    } else {
+      // squatters come and go by the hundred: counted (RobotClients), not logged one by one
+      log.debug("{}: connection closed before it held the robot: {}", body.name(), why);
+    }
   }
 
   /** Sends a finalized packet to the client (a failed write ends the session). */
@@ -329,7 +414,10 @@ public final class ArcosSession implements ArRobotPacketReceiver.Listener {
       long limit = TimeUnit.MILLISECONDS.toNanos(host.handshakeTimeoutMillis());
       if (now - handshakeSinceNanos > limit) {
         timedOut = true;
-        end("no handshake within " + host.handshakeTimeoutMillis() + " ms");
+        end(
+            awaitingRobot
+                ? "the robot stayed taken for " + host.handshakeTimeoutMillis() + " ms"
+                : "no handshake within " + host.handshakeTimeoutMillis() + " ms");
         return true;
       }
     } else if (state == State.OPEN && host.clientTimeoutMillis() > 0) {

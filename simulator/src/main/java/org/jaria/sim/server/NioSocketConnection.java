@@ -30,7 +30,14 @@ public final class NioSocketConnection implements ArDeviceConnection {
   private final SocketChannel channel;
   private final Clock clock;
   private final String name;
-  private final ByteBuffer pending = ByteBuffer.allocate(MAX_PENDING_BYTES);
+
+  /**
+   * Bytes the kernel did not take yet, ready to write (position..limit). Empty until a write is
+   * left over, then grown as needed up to {@link #MAX_PENDING_BYTES}: a robot keeps many
+   * connections in their handshake, and those must cost next to nothing.
+   */
+  private ByteBuffer pending = ByteBuffer.allocate(0);
+
   private final ByteBuffer readWrap = ByteBuffer.allocate(0);
   private Selector readSelector;
   private volatile Status status = Status.OPEN;
@@ -52,7 +59,6 @@ public final class NioSocketConnection implements ArDeviceConnection {
             + (remote instanceof InetSocketAddress a
                 ? a.getAddress().getHostAddress() + ":" + a.getPort()
                 : String.valueOf(remote));
-    pending.flip();
   }
 
   @Override
@@ -118,15 +124,23 @@ public final class NioSocketConnection implements ArDeviceConnection {
         len = src.remaining();
       }
       if (len > 0) {
-        pending.compact();
-        if (pending.remaining() < len) {
-          pending.flip();
+        if (pending.remaining() + len > MAX_PENDING_BYTES) {
           fail();
           throw new IOException(
               name
                   + " stopped reading ("
                   + MAX_PENDING_BYTES
                   + " bytes unsent); dropping the client");
+        }
+        if (pending.capacity() - pending.remaining() < len) {
+          int need = pending.remaining() + len;
+          ByteBuffer bigger =
+              ByteBuffer.allocate(
+                  Math.min(MAX_PENDING_BYTES, Math.max(need, 2 * pending.capacity())));
+          bigger.put(pending);
+          pending = bigger;
+        } else {
+          pending.compact();
         }
         pending.put(buf, off, len);
         pending.flip();

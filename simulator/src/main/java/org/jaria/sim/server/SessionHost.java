@@ -41,11 +41,20 @@ public interface SessionHost {
   /** Which commands are carried out for which clients. */
   CommandPolicy commandPolicy();
 
-  /** A network client has this long from connecting (or CLOSE) to OPEN, ms. */
+  /**
+   * A network client has this long from connecting (or CLOSE) to OPEN, ms; a connection that has
+   * not completed the handshake by then is closed.
+   */
   int handshakeTimeoutMillis();
 
   /** A network client of an open robot silent this long is disconnected, ms (0 never). */
   int clientTimeoutMillis();
+
+  /**
+   * A network client holding a robot that has sent no valid packet this long gives the robot up to
+   * the next client that completes the handshake, ms.
+   */
+  int replaceSilentMillis();
 
   /** SIM_EXIT: a client asks the simulator to exit with {@code code}. */
   void exitRequested(int code, String robotName);

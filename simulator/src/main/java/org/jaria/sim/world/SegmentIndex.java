@@ -30,6 +30,9 @@ public final class SegmentIndex {
 
   private static final long MAX_CELLS = 1 << 22;
 
+  /** Cell bounds are capped here, far above any budget, so their sums cannot overflow. */
+  private static final double BOUND_CAP = 1e15;
+
   private final int count;
   private final byte[] shape;
   private final byte[] kind;
@@ -83,10 +86,7 @@ public final class SegmentIndex {
     minY = y0 - 1;
     maxX = x1 + 1;
     maxY = y1 + 1;
-    double c = cellHint > 0 ? cellHint : autoCell(maxX - minX, maxY - minY, count);
-    while ((long) Math.ceil((maxX - minX) / c) * (long) Math.ceil((maxY - minY) / c) > MAX_CELLS) {
-      c *= 1.5;
-    }
+    double c = cellFor(maxX - minX, maxY - minY, count, cellHint);
     cell = c;
     invCell = 1 / c;
     nx = Math.max(1, (int) Math.ceil((maxX - minX) / c));
@@ -99,6 +99,13 @@ public final class SegmentIndex {
     for (int k = 0; k < nx * ny; k++) {
       int n = cellStart[k];
       cellStart[k] = total;
+      if (n > Integer.MAX_VALUE - total) {
+        throw new IllegalStateException(
+            "the index would hold more than "
+                + Integer.MAX_VALUE
+                + " cell entries; check the map"
+                + " against MapBudget before building a world on it");
+      }
       total += n;
     }
     cellStart[nx * ny] = total;
@@ -112,6 +119,36 @@ public final class SegmentIndex {
   private static double autoCell(double w, double h, int n) {
     double c = 2 * Math.sqrt(w * h / Math.max(1, n));
     return Math.max(MIN_CELL, Math.min(MAX_CELL, c));
+  }
+
+  /**
+   * The cell edge an index picks for {@code count} primitives over a {@code w} × {@code h} mm
+   * extent (the given {@code hint} if positive), grown until the grid has at most {@link
+   * #MAX_CELLS} cells.
+   */
+  static double cellFor(double w, double h, int count, double hint) {
+    double c = hint > 0 ? hint : autoCell(w, h, count);
+    while ((long) Math.ceil(w / c) * (long) Math.ceil(h / c) > MAX_CELLS) {
+      c *= 1.5;
+    }
+    return c;
+  }
+
+  /**
+   * At most how many grid cells a segment from (x1, y1) to (x2, y2) is recorded in, with cells of
+   * edge {@code cell}: the index records it row by row, at most two cells more per row than its run
+   * across the row.
+   */
+  static long segmentCellsBound(double x1, double y1, double x2, double y2, double cell) {
+    double cols = Math.ceil(Math.abs(x2 - x1) / cell);
+    double rows = Math.floor(Math.abs(y2 - y1) / cell) + 2;
+    return (long) Math.min(cols + 2 * rows + 1, BOUND_CAP);
+  }
+
+  /** At most how many grid cells a disc of radius {@code r} is recorded in. */
+  static long discCellsBound(double r, double cell) {
+    double side = Math.floor(2 * r / cell) + 2;
+    return (long) Math.min(side * side, BOUND_CAP);
   }
 
   /** A builder collecting primitives. */
@@ -132,6 +169,11 @@ public final class SegmentIndex {
   /** Number of grid cells. */
   public int cellCount() {
     return nx * ny;
+  }
+
+  /** How many (cell, primitive) entries the grid holds: what the index costs beyond its shapes. */
+  public int cellEntries() {
+    return cellItems.length;
   }
 
   private int cellX(double x) {

@@ -11,13 +11,18 @@ import java.util.concurrent.Callable;
 import org.jaria.map.ArMap;
 import org.jaria.map.ArMapObject;
 import org.jaria.map.MapFormatException;
+import org.jaria.sim.MapBudget;
+import org.jaria.sim.MapSupport;
+import org.jaria.sim.world.MapCost;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code jaria map info FILE}: what a map file holds, and whether it reads and writes back cleanly.
+ * {@code jaria map info FILE}: what a map file holds, what it costs the simulator (a map over the
+ * simulator's {@link MapBudget} is refused as {@code jaria sim -m} refuses it), and whether it
+ * reads and writes back cleanly.
  */
 @Command(
     name = "map",
@@ -54,6 +59,12 @@ final class MapCommand implements Runnable {
         spec.commandLine().getErr().println(e.getMessage());
         return 1;
       }
+      MapCost cost = MapSupport.cost(m);
+      String over = MapBudget.DEFAULT.overBy(cost);
+      if (over != null) {
+        // the same refusal, in the same words, as 'jaria sim -m' and a client's map load
+        throw new IOException("map " + map + " is too big for the simulator: " + over);
+      }
       out.printf(Locale.ROOT, "%s (%s)%n", map, m.getMapType());
       out.printf(
           Locale.ROOT,
@@ -64,6 +75,11 @@ final class MapCommand implements Runnable {
           m.getPoints().size(),
           m.getMapObjects().size(),
           m.getGoals().size());
+      out.printf(
+          Locale.ROOT,
+          "  cost     %,d grid cells in the simulator's index at most (it takes %,d)%n",
+          cost.cellEntries(),
+          MapBudget.DEFAULT.maxCellEntries());
       m.findHomePose().ifPresent(h -> out.println("  home     " + h));
       for (ArMapObject o : m.getMapObjects()) {
         out.printf(Locale.ROOT, "  %-16s %-24s %s%n", o.type(), '"' + o.name() + '"', o.pose());
