@@ -98,6 +98,8 @@ public final class GuiServer implements AutoCloseable {
     commands = new ArServerHandlerCommands(server);
     commands.addCommand("enableMotors", "switches the motors on", robot::enableMotors);
     commands.addCommand("disableMotors", "switches the motors off", robot::disableMotors);
+    // Switching the motors off stops the robot: a safety command, like stop.
+    server.setCallPolicy("disableMotors", CallPolicy.SAFETY);
     modeStop = new ArServerModeStop(server, robot);
     modeRatioDrive = new ArServerModeRatioDrive(server, robot);
     modeWander = new ArServerModeWander(server, robot);

@@ -137,8 +137,15 @@ public final class GuiServerCommand implements Callable<Integer> {
       paramLabel = "ADDRESS",
       description =
           "Interface to listen on (default: all interfaces with a login, this computer only"
-              + " without one).")
+              + " without one; beyond this computer without a login only with --no-login).")
   String bind;
+
+  @Option(
+      names = "--no-login",
+      description =
+          "Serve without a login beyond this computer (with --bind): anybody who can reach the"
+              + " port may then drive the robot. Only on a network you trust completely.")
+  boolean noLogin;
 
   @Option(
       names = "--speed",
@@ -228,12 +235,58 @@ public final class GuiServerCommand implements Callable<Integer> {
         userFile != null
             ? ArServerUserInfo.readFile(userFile)
             : secret != null ? Authenticator.sharedSecret(secret) : Authenticator.open();
+    if (noLogin && !auth.isOpen()) {
+      throw new IllegalArgumentException(
+          "give --no-login or a password (or --user-file), not both");
+    }
+    if (auth.isOpen() && !noLogin && bind != null && !isLoopback(bind)) {
+      throw new IllegalArgumentException(
+          "--bind "
+              + bind
+              + " without a password would let anybody who can reach port "
+              + port
+              + " drive the robot: give --password-file FILE or --user-file FILE (see"
+              + " docs/networking.md), or add --no-login if that is really meant");
+    }
     return ServerOptions.builder()
         .serverName("guiServer")
         .port(port)
         .bindAddress(bind)
         .authenticator(auth)
+        .openBeyondLoopback(noLogin)
         .build();
+  }
+
+  private static boolean isLoopback(String address) throws IOException {
+    return java.net.InetAddress.getByName(address).isLoopbackAddress();
+  }
+
+  /**
+   * What the server's address and login mean, said plainly: "Listening on 0.0.0.0:7272 (NO LOGIN:
+   * anybody who can reach this port may drive the robot)".
+   */
+  static String listeningLine(String address, int port, boolean open) {
+    boolean local;
+    try {
+      local = java.net.InetAddress.getByName(address).isLoopbackAddress();
+    } catch (java.net.UnknownHostException e) {
+      local = false;
+    }
+    String what;
+    if (open) {
+      what =
+          local
+              ? "no login needed; this computer only: give --password-file or --user-file to"
+                  + " serve others"
+              : "NO LOGIN: anybody who can reach this port may drive the robot";
+    } else {
+      what =
+          local
+              ? "login required; this computer only"
+              : "login required; the login is weak and nothing is encrypted: across a network you"
+                  + " do not trust, see docs/networking.md";
+    }
+    return String.format(Locale.ROOT, "Listening on %s:%d (%s)", address, port, what);
   }
 
   static ArMap loadMap(String map) throws IOException {
@@ -369,16 +422,9 @@ public final class GuiServerCommand implements Callable<Integer> {
       GuiServer gui, ArRobot robot, ArHybridForwarderVideo forwarder, PrintWriter out) {
     var server = gui.getServer();
     boolean open = server.getOptions().authenticator().isOpen();
-    String host = server.getOptions().bindAddress();
-    String shown = host == null ? (open ? "127.0.0.1" : "0.0.0.0") : host;
-    out.printf(
-        Locale.ROOT,
-        "Listening on %s:%d (%s)%n",
-        shown,
-        server.getPort(),
-        open
-            ? "no login needed; this computer only: give --password or --user-file to serve others"
-            : "login required");
+    // Where it really listens, not what was asked for.
+    String shown = server.getAddress();
+    out.println(listeningLine(shown, server.getPort(), open));
     out.printf(
         Locale.ROOT,
         "Watch it with: ./jaria monitor %s:%d%s%n",

@@ -26,6 +26,7 @@ import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ArServerClient;
 import org.jaria.net.server.NetRequestException;
 import org.jaria.net.server.NumericArgs;
+import org.jaria.net.server.TextLimits;
 import org.jaria.net.server.Where;
 import org.jaria.robot.ArRobot;
 
@@ -184,6 +185,11 @@ public class ArServerModeGoto extends ArServerMode {
   private void serverGotoGoal(ArServerClient client, ArNetPacket request, ArNetPacket reply)
       throws NetRequestException, InterruptedException {
     String name = request.bufToStr();
+    if (name.length() > TextLimits.MAX_NAME) {
+      throw new NetRequestException(
+          NetError.BAD_ARGUMENTS,
+          "a goal name has at most " + TextLimits.MAX_NAME + " characters; see getGoals");
+    }
     if (planner != null) {
       startWithPlanner("goal " + name, () -> planner.pathPlanToGoal(name));
       return;
@@ -232,6 +238,13 @@ public class ArServerModeGoto extends ArServerMode {
     if (!start.start()) {
       throw new NetRequestException(
           NetError.FAILED, "cannot go to " + name + ": " + planner.getStatusString());
+    }
+    if (!isActive()) {
+      // A stop (or another mode) took over while the plan was being started: deactivating this
+      // mode cancelled the plan before it existed, so cancel the one just started.
+      planner.cancelPathPlan();
+      throw new NetRequestException(
+          NetError.FAILED, "the goal to " + name + " was cancelled by a newer command");
     }
   }
 
