@@ -198,8 +198,11 @@ final class CallRunner {
    * one for a request at an interval (an ArNetworking handler that sends nothing sends nothing).
    */
   private void sendReply(ArServerClient c, DataEntry e, ArServerClient.Request r, ArNetPacket p) {
-    boolean send =
-        p.getDataLength() > 0 || (r == null && (!e.info.returnsNothing() || c.wantsAcks));
+    // Data whose return description is "none" answer nothing, whatever their flags, as in ARIA
+    // (setCameraAbs is RETURN_SINGLE there and sends nothing); a JAria client gets its ack.
+    String ret = e.info.returnDescription();
+    boolean answers = !e.info.returnsNothing() && !ret.isBlank() && !ret.equalsIgnoreCase("none");
+    boolean send = p.getDataLength() > 0 || (r == null && (answers || c.wantsAcks));
     if (send) {
       p.setCommand(e.id());
       server.sendPacket(c, p);

@@ -129,7 +129,7 @@ class GuiServerCommandTest {
       {"--no-login", "--password", "secret"}
     };
     String[] reasons = {
-      "--camera and --video are for a real robot",
+      "--camera, --video and --ptz are for a real robot",
       "--remote or --serial, not both",
       "--camera or --video, not both",
       "--forward-video or --camera/--video, not both",

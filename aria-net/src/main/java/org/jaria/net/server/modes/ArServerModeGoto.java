@@ -46,7 +46,7 @@ public class ArServerModeGoto extends ArServerMode {
   private static final long ACTIVATION_TIMEOUT_SECONDS = 5;
 
   private final PathPlanningInfo planner;
-  private final ArMap map;
+  private volatile ArMap map;
   private final ArActionGroup group;
   private final ArActionGoto gotoAction = new ArActionGoto("goto");
   private final HoldAtGoal hold = new HoldAtGoal(gotoAction);
@@ -130,11 +130,12 @@ public class ArServerModeGoto extends ArServerMode {
         "Movement",
         planner == null ? Where.CYCLE : Where.WORKER,
         (client, request, reply) -> {
+          ArMap m = map;
           ArPose home =
-              map == null
+              m == null
                   ? null
-                  : map.findFirstMapObjectOfType("RobotHome")
-                      .or(() -> map.findFirstMapObjectOfType("Dock"))
+                  : m.findFirstMapObjectOfType("RobotHome")
+                      .or(() -> m.findFirstMapObjectOfType("Dock"))
                       .map(ArMapObject::pose)
                       .orElse(null);
           if (home == null) {
@@ -149,11 +150,20 @@ public class ArServerModeGoto extends ArServerMode {
         });
   }
 
+  /**
+   * Takes goals and bounds from another map from now on (after a map change; a goal being driven to
+   * is cancelled by stopping first).
+   */
+  public void setMap(ArMap m) {
+    map = m;
+  }
+
   /** The names of the map's goals, in map order. */
   public List<String> getGoals() {
     List<String> l = new ArrayList<>();
-    if (map != null) {
-      for (ArMapObject o : map.getGoals()) {
+    ArMap m = map;
+    if (m != null) {
+      for (ArMapObject o : m.getGoals()) {
         l.add(o.name());
       }
     }
@@ -194,10 +204,11 @@ public class ArServerModeGoto extends ArServerMode {
       startWithPlanner("goal " + name, () -> planner.pathPlanToGoal(name));
       return;
     }
+    ArMap m = map;
     Optional<ArMapObject> goal =
-        map == null
+        m == null
             ? Optional.empty()
-            : map.getGoals().stream().filter(o -> o.name().equalsIgnoreCase(name)).findFirst();
+            : m.getGoals().stream().filter(o -> o.name().equalsIgnoreCase(name)).findFirst();
     if (goal.isEmpty()) {
       throw new NetRequestException(
           NetError.BAD_ARGUMENTS, "no goal called '" + name + "' on the map; see getGoals");
