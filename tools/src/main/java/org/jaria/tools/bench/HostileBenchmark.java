@@ -60,6 +60,7 @@ public final class HostileBenchmark {
     simFlood(out, flood);
     actsFlood(out, flood);
     reconnects(out, quick ? 5 : 25);
+    out.append(GuiServerHostileBenchmark.run(quick));
     return out.toString();
   }
 
