@@ -75,6 +75,11 @@ public final class RawClient implements AutoCloseable {
     send(p);
   }
 
+  /** Bytes that can be read now without waiting. */
+  public int available() throws IOException {
+    return in.available();
+  }
+
   /** Reads one packet. */
   public ArNetPacket read() throws IOException {
     byte[] h = new byte[4];

@@ -23,6 +23,7 @@ class GuiServerCameraTest {
     volatile double tilt;
     volatile int zoom;
     volatile int commands;
+    final java.util.List<double[]> history = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     @Override
     public String getTypeName() {
@@ -34,6 +35,7 @@ class GuiServerCameraTest {
       pan = Math.max(-98, Math.min(98, p));
       tilt = Math.max(-30, Math.min(88, t));
       commands++;
+      history.add(new double[] {pan, tilt});
       return true;
     }
 
