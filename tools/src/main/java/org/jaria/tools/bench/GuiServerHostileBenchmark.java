@@ -163,8 +163,9 @@ public final class GuiServerHostileBenchmark {
               try (ArClientBase bad = new ArClientBase("long-strings")) {
                 bad.connect("127.0.0.1", s.port(), "vandal", PASSWORD);
                 while (!stop.get()) {
-                  bad.requestOnce("gotoGoal", name)
-                      .whenComplete((r, e) -> refusals.addAndGet(e != null ? 1 : 0));
+                  var unused =
+                      bad.requestOnce("gotoGoal", name)
+                          .whenComplete((r, e) -> refusals.addAndGet(e != null ? 1 : 0));
                   pause(Duration.ofMillis(100));
                 }
               } catch (ArClientException e) {
