@@ -261,7 +261,14 @@ final class Dispatcher {
     int command = p.bufToUByte2();
     long ms = p.bufToByte4();
     byte[] args = p.remainingBytes();
-    server.stats.requests.increment();
+    try {
+      dispatchRequest(c, command, ms, args);
+    } finally {
+      server.stats.requests.increment();
+    }
+  }
+
+  private void dispatchRequest(ArServerClient c, int command, long ms, byte[] args) {
     DataEntry e = server.entry(command);
     if (e == null) {
       server.stats.requestErrors.increment();
@@ -308,8 +315,17 @@ final class Dispatcher {
   }
 
   private void requestOnce(ArServerClient c, ArNetPacket p) {
+    try {
+      dispatchOnce(c, p);
+    } finally {
+      // Counted once handed on (queued, refused or failed), so a count that includes a request
+      // means its work is already where it will run.
+      server.stats.requests.increment();
+    }
+  }
+
+  private void dispatchOnce(ArServerClient c, ArNetPacket p) {
     int command = p.getCommand();
-    server.stats.requests.increment();
     DataEntry e = server.entry(command);
     if (e == null) {
       server.stats.requestErrors.increment();

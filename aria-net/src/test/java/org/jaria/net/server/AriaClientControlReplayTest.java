@@ -29,6 +29,17 @@ class AriaClientControlReplayTest {
   /** Reads packets until one of {@code command}, advancing the robot while it has work waiting. */
   private static ArNetPacket readStepping(GuiRig rig, RawClient aria, int command)
       throws Exception {
+    return readStepping(rig, aria, command, -1).get(command);
+  }
+
+  /**
+   * Reads packets until one of {@code command} and one of {@code other} (-1: none) have come, in
+   * either order (two workers may answer one client's requests in either order), advancing the
+   * robot while it has work waiting; the first of each by command.
+   */
+  private static Map<Integer, ArNetPacket> readStepping(
+      GuiRig rig, RawClient aria, int command, int other) throws Exception {
+    Map<Integer, ArNetPacket> got = new java.util.HashMap<>();
     long end = System.nanoTime() + Eventually.LIMIT.toNanos();
     while (System.nanoTime() < end) {
       if (rig.gui.getServer().getPendingCycleCommands() > 0) {
@@ -36,8 +47,15 @@ class AriaClientControlReplayTest {
       }
       while (aria.available() > 0) {
         ArNetPacket p = aria.read();
-        if (p.getCommand() == command) {
-          return p;
+        if (p.getCommand() == command || p.getCommand() == other) {
+          got.putIfAbsent(p.getCommand(), p);
+          if (got.containsKey(command) && (other < 0 || got.containsKey(other))) {
+            return got;
+          }
+        }
+        if (p.getCommand() == Protocol.FIRST_DATA_COMMAND) {
+          throw new AssertionError(
+              "requestFailed: " + p.bufToStr() + ": " + p.bufToStr() + " (" + p.bufToByte2() + ")");
         }
       }
       java.util.concurrent.locks.LockSupport.parkNanos(200_000);
@@ -168,9 +186,12 @@ class AriaClientControlReplayTest {
       ArServerBase s = rig.gui.getServer();
       aria.readIntroduction();
       aria.send(PeerRecording.renumbered(c2s, s2c, s::findCommandFromName));
-      ArNetPacket first = readStepping(rig, aria, s.findCommandFromName("getConfigBySections"));
-      assertEquals("Files", ConfigLayout.readAll(first).get(0).name(), "the section it looks for");
-      ArNetPacket answer = readStepping(rig, aria, s.findCommandFromName("setConfig"));
+      int bySections = s.findCommandFromName("getConfigBySections");
+      int set = s.findCommandFromName("setConfig");
+      Map<Integer, ArNetPacket> got = readStepping(rig, aria, bySections, set);
+      assertEquals(
+          "Files", ConfigLayout.readAll(got.get(bySections)).get(0).name(), "what it looks for");
+      ArNetPacket answer = got.get(set);
       assertEquals("", answer.bufToStr(), "every value taken");
       assertEquals("hall", rig.gui.getMapName());
       assertEquals(
