@@ -29,9 +29,20 @@ public final class RawClient implements AutoCloseable {
 
   /** Connects with a small receive buffer (a client that reads slowly), 0 for the default. */
   public RawClient(int port, int receiveBuffer) throws IOException {
+    this(port, receiveBuffer, null);
+  }
+
+  /**
+   * Connects from local address {@code from} (another address of 127.0.0.0/8, say: a client on
+   * another computer as far as the server can tell), null for any.
+   */
+  public RawClient(int port, int receiveBuffer, String from) throws IOException {
     socket = new Socket();
     if (receiveBuffer > 0) {
       socket.setReceiveBufferSize(receiveBuffer);
+    }
+    if (from != null) {
+      socket.bind(new InetSocketAddress(InetAddress.getByName(from), 0));
     }
     socket.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), 5000);
     socket.setSoTimeout(20_000);
@@ -62,6 +73,11 @@ public final class RawClient implements AutoCloseable {
     ArNetPacket p = new ArNetPacket(Protocol.CLIENT_REQUEST);
     p.uByte2ToBuf(command).byte4ToBuf(ms);
     send(p);
+  }
+
+  /** Bytes that can be read now without waiting. */
+  public int available() throws IOException {
+    return in.available();
   }
 
   /** Reads one packet. */

@@ -7,7 +7,7 @@ import org.jaria.net.data.VideoFrame;
 import org.jaria.net.provider.VideoSource;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ServerOptions;
-import org.jaria.net.server.info.ArServerHandlerCamera;
+import org.jaria.net.server.info.ArServerHandlerVideo;
 
 /**
  * ACTS's SAV server: the frames ACTS tracks, served as JPEG over ArNetworking (by default on port
@@ -54,7 +54,7 @@ public final class SavServer implements AutoCloseable {
                 .port(port)
                 .bindAddress(bind == null ? "127.0.0.1" : bind)
                 .build());
-    new ArServerHandlerCamera(s, new Frames(pixels, frameNumber, width, height));
+    new ArServerHandlerVideo(s, new Frames(pixels, frameNumber, width, height));
     s.open();
     return new SavServer(s);
   }

@@ -1,6 +1,7 @@
 package org.jaria.net.arnl;
 
 import java.util.Objects;
+import java.util.function.Supplier;
 import org.jaria.arnl.ArSonarLocalizationTask;
 import org.jaria.arnl.LocalizationState;
 import org.jaria.geom.ArPose;
@@ -15,15 +16,22 @@ import org.jaria.net.provider.LocalizationInfo;
  */
 public final class ArnlLocalization implements LocalizationInfo {
 
-  private final ArSonarLocalizationTask loc;
+  private final Supplier<ArSonarLocalizationTask> current;
 
   /** Serves {@code loc}. */
   public ArnlLocalization(ArSonarLocalizationTask loc) {
-    this.loc = Objects.requireNonNull(loc, "loc");
+    Objects.requireNonNull(loc, "loc");
+    this.current = () -> loc;
+  }
+
+  /** Serves whichever task {@code current} gives (a new one after a map change). */
+  ArnlLocalization(Supplier<ArSonarLocalizationTask> current) {
+    this.current = current;
   }
 
   @Override
   public LocalizationSnapshot getLocalizationState() {
+    ArSonarLocalizationTask loc = current.get();
     LocalizationState s = loc.getState();
     return new LocalizationSnapshot(
         s.name(),
@@ -35,6 +43,7 @@ public final class ArnlLocalization implements LocalizationInfo {
 
   @Override
   public Particles getParticles() {
+    ArSonarLocalizationTask loc = current.get();
     return new Particles(loc.getUpdateCount(), Points.of(loc.getCurrentSamplePoses(), true));
   }
 
@@ -46,6 +55,7 @@ public final class ArnlLocalization implements LocalizationInfo {
    */
   @Override
   public boolean localizeToPose(ArPose pose) {
+    ArSonarLocalizationTask loc = current.get();
     if (!loc.localizeRobotAtPose(pose)) {
       loc.forceUpdatePose(pose);
     }
@@ -54,6 +64,6 @@ public final class ArnlLocalization implements LocalizationInfo {
 
   /** The task served. */
   public ArSonarLocalizationTask getTask() {
-    return loc;
+    return current.get();
   }
 }

@@ -1,5 +1,6 @@
 package org.jaria.net.arnl;
 
+import java.util.List;
 import java.util.Objects;
 import org.jaria.arnl.ArActionLost;
 import org.jaria.arnl.ArActionSlowDownWhenNotCertain;
@@ -7,8 +8,12 @@ import org.jaria.arnl.ArForbiddenRangeDevice;
 import org.jaria.arnl.ArPathPlanningTask;
 import org.jaria.arnl.ArSonarLocalizationTask;
 import org.jaria.config.ArConfig;
+import org.jaria.config.ArConfigArg;
+import org.jaria.config.ArConfigSection;
 import org.jaria.map.ArMap;
+import org.jaria.net.data.ConfigSection;
 import org.jaria.net.provider.ArConfigRegistry;
+import org.jaria.net.provider.ConfigRegistry;
 import org.jaria.net.server.Where;
 import org.jaria.net.server.info.ArServerHandlerCommands;
 import org.jaria.range.ArBumpers;
@@ -43,23 +48,46 @@ public final class ArnlNavigation implements AutoCloseable {
     SYNCHRONOUS
   }
 
+  /** What is built on one map: the parameters, the two tasks and the map's forbidden lines. */
+  private record Tasks(
+      ArConfig config,
+      ArSonarLocalizationTask loc,
+      ArPathPlanningTask path,
+      ArForbiddenRangeDevice forbidden) {}
+
   private final ArRobot robot;
-  private final ArConfig config;
-  private final ArSonarLocalizationTask loc;
-  private final ArPathPlanningTask path;
+  private final ArSonarDevice sonar;
+  private final ArBumpers bumpers;
+  private final ArIRs irs;
+  private final Mode mode;
+  private final long seed;
   private final ArnlLocalization locInfo;
   private final ArnlPathPlanning pathInfo;
-  private final ArConfigRegistry registry;
+  private final ConfigRegistry registry;
+  private volatile Tasks tasks;
 
   private ArnlNavigation(
-      ArRobot robot, ArConfig config, ArSonarLocalizationTask loc, ArPathPlanningTask path) {
+      ArRobot robot, ArSonarDevice sonar, ArBumpers bumpers, ArIRs irs, Mode mode, long seed) {
     this.robot = robot;
-    this.config = config;
-    this.loc = loc;
-    this.path = path;
-    this.locInfo = new ArnlLocalization(loc);
-    this.pathInfo = new ArnlPathPlanning(path);
-    this.registry = new ArConfigRegistry(config);
+    this.sonar = sonar;
+    this.bumpers = bumpers;
+    this.irs = irs;
+    this.mode = mode;
+    this.seed = seed;
+    this.locInfo = new ArnlLocalization(() -> tasks.loc());
+    this.pathInfo = new ArnlPathPlanning(() -> tasks.path());
+    this.registry =
+        new ConfigRegistry() {
+          @Override
+          public List<ConfigSection> getSections() {
+            return new ArConfigRegistry(tasks.config()).getSections();
+          }
+
+          @Override
+          public String setParam(String section, String name, String valueText) {
+            return new ArConfigRegistry(tasks.config()).setParam(section, name, valueText);
+          }
+        };
   }
 
   /**
@@ -72,11 +100,27 @@ public final class ArnlNavigation implements AutoCloseable {
     Objects.requireNonNull(map, "a navigation server needs a map");
     ArSonarDevice sonar = new ArSonarDevice();
     ArBumpers bumpers = new ArBumpers();
-    ArForbiddenRangeDevice forbidden = new ArForbiddenRangeDevice(map);
+    ArIRs irs = robot.getRobotParams().getNumIR() > 0 ? new ArIRs() : null;
     robot.lock();
     try {
       robot.addRangeDevice(sonar);
       robot.addRangeDevice(bumpers);
+      if (irs != null) {
+        robot.addRangeDevice(irs);
+      }
+    } finally {
+      robot.unlock();
+    }
+    ArnlNavigation nav = new ArnlNavigation(robot, sonar, bumpers, irs, mode, seed);
+    nav.tasks = nav.build(map, null);
+    return nav;
+  }
+
+  /** Localization and path planning on {@code map}, with the values of {@code previous} if any. */
+  private Tasks build(ArMap map, ArConfig previous) {
+    ArForbiddenRangeDevice forbidden = new ArForbiddenRangeDevice(map);
+    robot.lock();
+    try {
       robot.addRangeDevice(forbidden);
     } finally {
       robot.unlock();
@@ -103,16 +147,53 @@ public final class ArnlNavigation implements AutoCloseable {
             .build();
     path.addRangeDevice(bumpers, ArPathPlanningTask.RangeType.CURRENT);
     path.addRangeDevice(forbidden, ArPathPlanningTask.RangeType.CURRENT);
-    if (robot.getRobotParams().getNumIR() > 0) {
-      ArIRs irs = new ArIRs();
-      robot.addRangeDevice(irs);
+    if (irs != null) {
       path.addRangeDevice(irs, ArPathPlanningTask.RangeType.CURRENT);
     }
     path.getPathPlanActionGroup().addAction(new ArActionSlowDownWhenNotCertain(loc), 140);
     path.getPathPlanActionGroup().addAction(new ArActionLost(loc, path), 150);
     // Until a goal is given the robot stands still under the server's stop mode.
     path.getPathPlanActionGroup().deactivate();
-    return new ArnlNavigation(robot, config, loc, path);
+    if (previous != null) {
+      // What monitors set on the old map still holds on the new one.
+      for (ArConfigSection s : previous.getSections()) {
+        for (ArConfigArg a : s.getParams()) {
+          config
+              .findParam(s.getName(), a.getName())
+              .ifPresent(n -> n.setValueFromText(a.getValueText()));
+        }
+      }
+      config.callProcessFileCallBacks();
+    }
+    return new Tasks(config, loc, path, forbidden);
+  }
+
+  /**
+   * Navigates on another map (ARIA's {@code Files/Map} parameter, set by a client): the plan in
+   * progress is cancelled, localization and path planning start again on {@code map} with the
+   * parameters as they were, and the robot is localized at the new map's home. Stop the robot first
+   * (the guiServer does).
+   *
+   * @return whether the sonar confirmed the pose at the new map's home
+   */
+  public synchronized boolean setMap(ArMap map) {
+    Objects.requireNonNull(map, "map");
+    Tasks old = tasks;
+    old.path().close();
+    old.loc().close();
+    robot.lock();
+    try {
+      robot.remRangeDevice(old.forbidden());
+    } finally {
+      robot.unlock();
+    }
+    tasks = build(map, old.config());
+    return localizeAtHome();
+  }
+
+  /** The map navigated on. */
+  public ArMap getMap() {
+    return tasks.path().getAriaMap();
   }
 
   /**
@@ -121,7 +202,7 @@ public final class ArnlNavigation implements AutoCloseable {
    * @return whether the sonar confirmed the pose
    */
   public boolean localizeAtHome() {
-    return loc.localizeRobotAtHomeBlocking();
+    return tasks.loc().localizeRobotAtHomeBlocking();
   }
 
   /**
@@ -150,24 +231,27 @@ public final class ArnlNavigation implements AutoCloseable {
     return pathInfo;
   }
 
-  /** The parameters of localization and path planning, for the server's configuration editor. */
-  public ArConfigRegistry configRegistry() {
+  /**
+   * The parameters of localization and path planning, for the server's configuration editor (those
+   * of the current map's tasks).
+   */
+  public ConfigRegistry configRegistry() {
     return registry;
   }
 
-  /** The parameters. */
+  /** The parameters (of the current map's tasks). */
   public ArConfig getConfig() {
-    return config;
+    return tasks.config();
   }
 
-  /** The localization task. */
+  /** The localization task (a new one after {@link #setMap}). */
   public ArSonarLocalizationTask getLocalizationTask() {
-    return loc;
+    return tasks.loc();
   }
 
-  /** The path planning task. */
+  /** The path planning task (a new one after {@link #setMap}). */
   public ArPathPlanningTask getPathPlanningTask() {
-    return path;
+    return tasks.path();
   }
 
   /** The robot. */
@@ -177,8 +261,9 @@ public final class ArnlNavigation implements AutoCloseable {
 
   /** Stops path planning and localization (the robot stays connected). */
   @Override
-  public void close() {
-    path.close();
-    loc.close();
+  public synchronized void close() {
+    Tasks t = tasks;
+    t.path().close();
+    t.loc().close();
   }
 }

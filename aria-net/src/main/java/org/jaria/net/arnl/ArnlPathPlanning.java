@@ -1,6 +1,7 @@
 package org.jaria.net.arnl;
 
 import java.util.Objects;
+import java.util.function.Supplier;
 import org.jaria.action.ArActionGroup;
 import org.jaria.arnl.ArPathPlanningTask;
 import org.jaria.geom.ArPose;
@@ -14,15 +15,22 @@ import org.jaria.net.provider.PathPlanningInfo;
  */
 public final class ArnlPathPlanning implements PathPlanningInfo {
 
-  private final ArPathPlanningTask path;
+  private final Supplier<ArPathPlanningTask> current;
 
   /** Serves {@code path}. */
   public ArnlPathPlanning(ArPathPlanningTask path) {
-    this.path = Objects.requireNonNull(path, "path");
+    Objects.requireNonNull(path, "path");
+    this.current = () -> path;
+  }
+
+  /** Serves whichever task {@code current} gives (a new one after a map change). */
+  ArnlPathPlanning(Supplier<ArPathPlanningTask> current) {
+    this.current = current;
   }
 
   @Override
   public PathSnapshot getPathState() {
+    ArPathPlanningTask path = current.get();
     ArPathPlanningTask.PathPlanningState s = path.getState();
     return new PathSnapshot(
         s.name(),
@@ -34,31 +42,31 @@ public final class ArnlPathPlanning implements PathPlanningInfo {
 
   @Override
   public String getStatusString() {
-    return path.getStatusString();
+    return current.get().getStatusString();
   }
 
   @Override
   public boolean pathPlanToPose(ArPose goal, boolean useHeading) {
-    return path.pathPlanToPose(goal, useHeading);
+    return current.get().pathPlanToPose(goal, useHeading);
   }
 
   @Override
   public boolean pathPlanToGoal(String goalName) {
-    return path.pathPlanToGoal(goalName);
+    return current.get().pathPlanToGoal(goalName);
   }
 
   @Override
   public void cancelPathPlan() {
-    path.cancelPathPlan();
+    current.get().cancelPathPlan();
   }
 
   @Override
   public ArActionGroup getActionGroup() {
-    return path.getPathPlanActionGroup();
+    return current.get().getPathPlanActionGroup();
   }
 
   /** The task served. */
   public ArPathPlanningTask getTask() {
-    return path;
+    return current.get();
   }
 }

@@ -68,7 +68,7 @@ public class ArServerBase implements AutoCloseable {
   private final List<ServerListener> listeners = new CopyOnWriteArrayList<>();
   private final List<CallRunner.CycleTask> cycleTasks = new CopyOnWriteArrayList<>();
   private final Map<Class<?>, Object> services = new ConcurrentHashMap<>();
-  private final ArrayBlockingQueue<Runnable> cycleQueue;
+  private final CycleQueue cycleQueue;
   private final CallRunner calls;
   private final Dispatcher dispatcher;
   private final Publisher publisher;
@@ -91,7 +91,8 @@ public class ArServerBase implements AutoCloseable {
   public ArServerBase(ServerOptions options, ArRobot robot) {
     this.options = Objects.requireNonNull(options, "options");
     this.robot = robot;
-    this.cycleQueue = new ArrayBlockingQueue<>(options.cycleQueue());
+    this.cycleQueue =
+        new CycleQueue(options.cycleQueue(), stats.superseded, stats.safetyReasserted);
     this.calls = new CallRunner(this, cycleQueue, cycleTasks);
     this.dispatcher = new Dispatcher(this, options);
     this.publisher = new Publisher(this);
@@ -99,7 +100,8 @@ public class ArServerBase implements AutoCloseable {
         new LoginLimiter(
             options.timeoutClock(),
             options.maxLoginFailures(),
-            options.loginFailureWindow().toNanos());
+            options.loginFailureWindow().toNanos(),
+            options.maxLoginChecksPerSecond());
     register(
         REQUEST_FAILED,
         "JAria: sent to a client whose request could not be carried out (bad arguments, busy,"
@@ -132,6 +134,7 @@ public class ArServerBase implements AutoCloseable {
     if (open || closed) {
       throw new IllegalStateException("a server can be opened once; make a new one");
     }
+    refuseOpenBeyondLoopback();
     io = new IoLoop(this, options, dispatcher);
     int port = io.port();
     AtomicInteger n = new AtomicInteger();
@@ -145,6 +148,10 @@ public class ArServerBase implements AutoCloseable {
             r -> {
               Thread t = new Thread(r, "jaria-net-worker-" + port + "-" + n.incrementAndGet());
               t.setDaemon(true);
+              // Handlers' failures are answered to their client (CallRunner); this only says so
+              // should something else ever end a worker.
+              t.setUncaughtExceptionHandler(
+                  (th, ex) -> log.error("{} ended by {}", th.getName(), ex.toString(), ex));
               return t;
             });
     ioThread = new Thread(io, "jaria-net-io-" + port);
@@ -164,12 +171,51 @@ public class ArServerBase implements AutoCloseable {
         port,
         io.udpPort() > 0 ? ", udp " + io.udpPort() : " only",
         options.authenticator().isOpen() ? "no login needed" : "login required");
+    if (options.authenticator().isOpen() && !io.isLoopbackOnly()) {
+      log.warn(
+          "no login needed and listening on {}: anybody who can reach port {} may use every"
+              + " service of this server",
+          io.address(),
+          port);
+    }
     if (!options.authenticator().isOpen() && !io.isLoopbackOnly()) {
       log.warn(
           "ArNetworking's login sends an MD5 digest of the password over a plain connection,"
               + " which anyone on the network can capture and attack offline: listen on the"
               + " loopback address (reach it through an SSH tunnel) or trust the network");
     }
+  }
+
+  /**
+   * A server that drives a robot and asks for no login must not listen beyond the loopback address
+   * unless told so: anybody who can reach the port could drive the robot.
+   */
+  private void refuseOpenBeyondLoopback() throws IOException {
+    String bind = options.bindAddress();
+    if (robot == null
+        || !options.authenticator().isOpen()
+        || options.openBeyondLoopback()
+        || bind == null) {
+      return;
+    }
+    if (!java.net.InetAddress.getByName(bind).isLoopbackAddress()) {
+      throw new IllegalStateException(
+          "a server without a login listening on "
+              + bind
+              + " would let anybody who can reach port "
+              + options.port()
+              + " drive the robot: give users and passwords (an Authenticator), listen on"
+              + " 127.0.0.1, or set openBeyondLoopback if that is really meant");
+    }
+  }
+
+  /** The address the server listens on ("127.0.0.1", "0.0.0.0" for every interface ...). */
+  public String getAddress() {
+    IoLoop l = io;
+    if (l == null) {
+      throw new IllegalStateException("the server is not open yet; call open() first");
+    }
+    return l.address();
   }
 
   /** Whether the server is open. */
@@ -354,6 +400,31 @@ public class ArServerBase implements AutoCloseable {
     return data.entry(command);
   }
 
+  /**
+   * Sets how requests of data {@code name} wait for the robot's cycle (JAria's addition; see {@link
+   * CallPolicy}): {@code "stop"} is {@link CallPolicy#SAFETY}, {@code "ratioDrive"} {@link
+   * CallPolicy#LATEST_WINS}. It matters for data whose handler runs on the cycle; for data run on a
+   * worker, SAFETY only lifts the limit of waiting requests.
+   *
+   * @throws IllegalArgumentException if there is no data of that name
+   */
+  public void setCallPolicy(String name, CallPolicy policy) {
+    DataEntry e = data.byName(name);
+    if (e == null) {
+      throw new IllegalArgumentException(
+          "no data '" + name + "' to set a call policy for: register it first");
+    }
+    e.policy = Objects.requireNonNull(policy, "policy");
+  }
+
+  /**
+   * How requests of data {@code name} wait ({@link CallPolicy#QUEUED} if there is no such data).
+   */
+  public CallPolicy getCallPolicy(String name) {
+    DataEntry e = data.byName(name);
+    return e == null ? CallPolicy.QUEUED : e.policy;
+  }
+
   /** The command number of data {@code name}, or 0 if there is none. */
   public int findCommandFromName(String name) {
     DataEntry e = data.byName(name);
@@ -378,7 +449,8 @@ public class ArServerBase implements AutoCloseable {
       task.run();
       return true;
     }
-    return cycleQueue.offer(task);
+    // Work a request's handler queues carries that request's place in line (see CallPolicy).
+    return cycleQueue.offer(CycleQueue.Work.of(task), calls.currentRequestSeq());
   }
 
   /**
@@ -506,9 +578,11 @@ public class ArServerBase implements AutoCloseable {
   /** Tells {@code c} that its request of {@code e} failed (JAria's requestFailed packet). */
   void requestFailed(ArServerClient c, DataEntry e, NetError code, String message) {
     stats.requestErrors.increment();
-    log.debug("{}: {} failed ({}): {}", c, e.name(), code, message);
+    // The message may quote what the client sent: cut it, so the packet always fits.
+    String why = TextLimits.clip(message, TextLimits.MAX_MESSAGE);
+    log.debug("{}: {} failed ({}): {}", c, e.name(), code, why);
     ArNetPacket p = new ArNetPacket(Protocol.FIRST_DATA_COMMAND);
-    p.strToBuf(e.name()).strToBuf(message).byte2ToBuf(code.code());
+    p.strToBuf(e.name()).strToBuf(why).byte2ToBuf(code.code());
     sendPacket(c, p);
   }
 
@@ -583,6 +657,16 @@ public class ArServerBase implements AutoCloseable {
    */
   void execute(ArServerClient c, DataEntry e, byte[] args, ArServerClient.Request r) {
     calls.execute(c, e, args, r);
+  }
+
+  /** Runs a latest-wins or safety request of cycle data (not counted in pending calls). */
+  void executeCoalesced(ArServerClient c, DataEntry e, byte[] args, CallPolicy policy) {
+    calls.executeCoalesced(c, e, args, policy);
+  }
+
+  /** Whether requests of {@code e} are applied on the robot's cycle. */
+  boolean onCycle(DataEntry e) {
+    return calls.onCycle(e);
   }
 
   /** The UDP port (0 if none is open). */

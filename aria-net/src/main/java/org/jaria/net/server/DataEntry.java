@@ -16,6 +16,9 @@ final class DataEntry {
   final RequestHandler handler;
   final Publication publication;
 
+  /** How requests of this data wait for the robot's cycle. */
+  volatile CallPolicy policy = CallPolicy.QUEUED;
+
   private long encodedVersion = Long.MIN_VALUE;
   private ByteBuffer encoded;
 

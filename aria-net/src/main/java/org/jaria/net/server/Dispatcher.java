@@ -137,11 +137,28 @@ final class Dispatcher {
     if (auth.isOpen()) {
       creds = auth.find(user).orElseThrow();
     } else {
-      if (server.loginLimiter().isThrottled(c.getIpString())) {
-        server.stats.loginThrottled.increment();
-        log.info("{}: too many failed logins from this address; refused without checking", c);
-        reject(c, Protocol.REJECTED_BAD_LOGIN, "");
-        return;
+      switch (server.loginLimiter().tryCheck(c.getIpString())) {
+        case ADDRESS_THROTTLED -> {
+          server.stats.loginThrottled.increment();
+          log.info("{}: too many failed logins from this address; refused without checking", c);
+          reject(
+              c,
+              Protocol.REJECTED_BAD_LOGIN,
+              "too many failed logins from this address; wait a minute before trying again");
+          return;
+        }
+        case BUSY -> {
+          server.stats.loginBusy.increment();
+          log.info("{}: too many password checks over all addresses; refused without checking", c);
+          reject(
+              c,
+              Protocol.REJECTED_BAD_LOGIN,
+              "the server is checking too many passwords; try again in a few seconds");
+          return;
+        }
+        case CHECK -> {
+          // Checked below.
+        }
       }
       Optional<Credentials> found = auth.find(user);
       byte[] want =
@@ -159,6 +176,7 @@ final class Dispatcher {
       creds = found.get();
     }
     c.wantsAcks = Protocol.JARIA_ACK_VERSION.equals(protocolVersion);
+    server.loginLimiter().succeeded(c.getIpString());
     c.loggedIn(creds);
     c.tcpOnly = clientUdpPort == 0 || server.udpPort() == 0 || c.tcpOnly;
     server.sendPacket(c, new ArNetPacket(Protocol.SERVER_CONNECTED));
@@ -243,7 +261,14 @@ final class Dispatcher {
     int command = p.bufToUByte2();
     long ms = p.bufToByte4();
     byte[] args = p.remainingBytes();
-    server.stats.requests.increment();
+    try {
+      dispatchRequest(c, command, ms, args);
+    } finally {
+      server.stats.requests.increment();
+    }
+  }
+
+  private void dispatchRequest(ArServerClient c, int command, long ms, byte[] args) {
     DataEntry e = server.entry(command);
     if (e == null) {
       server.stats.requestErrors.increment();
@@ -290,8 +315,17 @@ final class Dispatcher {
   }
 
   private void requestOnce(ArServerClient c, ArNetPacket p) {
+    try {
+      dispatchOnce(c, p);
+    } finally {
+      // Counted once handed on (queued, refused or failed), so a count that includes a request
+      // means its work is already where it will run.
+      server.stats.requests.increment();
+    }
+  }
+
+  private void dispatchOnce(ArServerClient c, ArNetPacket p) {
     int command = p.getCommand();
-    server.stats.requests.increment();
     DataEntry e = server.entry(command);
     if (e == null) {
       server.stats.requestErrors.increment();
@@ -303,7 +337,16 @@ final class Dispatcher {
       log.info("{}: may not use '{}' ({} group)", c, e.name(), e.info.commandGroup());
       return;
     }
-    if (c.pendingCalls.incrementAndGet() > options.maxPendingCalls()) {
+    CallPolicy policy = e.policy;
+    if (policy != CallPolicy.QUEUED && server.onCycle(e)) {
+      // A stop is never refused, and a joystick's flood collapses to its newest position.
+      server.executeCoalesced(c, e, p.remainingBytes(), policy);
+      return;
+    }
+    if (policy == CallPolicy.SAFETY) {
+      // Off the cycle a stop still waits for a worker, but never for this client's other requests.
+      c.pendingCalls.incrementAndGet();
+    } else if (c.pendingCalls.incrementAndGet() > options.maxPendingCalls()) {
       c.pendingCalls.decrementAndGet();
       server.stats.busy.increment();
       server.requestFailed(

@@ -125,8 +125,10 @@ final class IoLoop implements Runnable {
     return serverChannel.socket().getLocalPort();
   }
 
+  /** The address listened on; "0.0.0.0" for every interface (IPv4 and IPv6 alike). */
   String address() {
-    return serverChannel.socket().getInetAddress().getHostAddress();
+    InetAddress a = serverChannel.socket().getInetAddress();
+    return a.isAnyLocalAddress() ? "0.0.0.0" : a.getHostAddress();
   }
 
   /** Asks the loop to stop; it closes every client and returns. */
@@ -251,23 +253,9 @@ final class IoLoop implements Runnable {
         closeQuietly(ch);
         return;
       }
-      int pending = 0;
-      ArServerClient stalest = null;
-      for (ArServerClient o : clients) {
-        if (!o.isLoggedIn() && !o.closeAfterFlush) {
-          pending++;
-          if (stalest == null || o.connectedNanos - stalest.connectedNanos < 0) {
-            stalest = o;
-          }
-        }
-      }
-      if (pending >= options.maxPendingLogins() && stalest != null) {
-        // Sockets that never log in must not lock real users out, nor keep a newcomer out: the one
-        // that has waited longest without logging in makes room (a real client logs in within a
-        // round trip, so it is never the stalest for long).
-        server.stats.replacedPending.increment();
-        log.debug("{} made room for a connection from {}: not logged in yet", stalest, ip);
-        close(stalest, null, "made room for a newer connection while not logged in", false);
+      if (!admit(ip)) {
+        closeQuietly(ch);
+        continue;
       }
       long authKey;
       do {
@@ -300,6 +288,55 @@ final class IoLoop implements Runnable {
       // ArNetworking's server speaks first: its introduction carries the keys for the login.
       c.out.offer(Outgoing.frame(dispatcher.introduction(c, udpPort()).toWire()));
       flush(c);
+    }
+  }
+
+  /**
+   * Whether a connection from {@code ip} may wait to log in (see {@link PendingAdmission}); closes
+   * the waiting connection it replaces.
+   */
+  private boolean admit(String ip) {
+    List<ArServerClient> waiting = new ArrayList<>();
+    List<PendingAdmission.Waiting> values = new ArrayList<>();
+    for (ArServerClient o : clients) {
+      if (!o.isLoggedIn() && !o.isClosed() && !o.closeAfterFlush) {
+        waiting.add(o);
+        values.add(
+            new PendingAdmission.Waiting(
+                o.getIpString(), o.connectedNanos, privileged(o.getIpString())));
+      }
+    }
+    PendingAdmission.Decision d =
+        PendingAdmission.admit(
+            values,
+            ip,
+            privileged(ip),
+            options.maxPendingLoginsPerAddress(),
+            options.maxPendingLogins());
+    if (!d.accept()) {
+      // Sockets that never log in must not lock real users out: refuse the newcomer at once.
+      server.stats.refusedPending.increment();
+      log.info(
+          "refused a connection from {}: already {} connections waiting to log in",
+          ip,
+          values.size());
+      return false;
+    }
+    if (d.replaced() >= 0) {
+      ArServerClient old = waiting.get(d.replaced());
+      server.stats.replacedPending.increment();
+      log.debug("{} replaced by a newer connection from {} before it logged in", old, ip);
+      close(old, NetError.LOGIN_TIMEOUT, "replaced by a newer connection before logging in", false);
+    }
+    return true;
+  }
+
+  /** The loopback address, or an address somebody has logged in from. */
+  private boolean privileged(String ip) {
+    try {
+      return InetAddress.getByName(ip).isLoopbackAddress() || server.loginLimiter().isKnown(ip);
+    } catch (java.net.UnknownHostException e) {
+      return false; // a literal address always parses; nothing else is privileged
     }
   }
 

@@ -12,7 +12,8 @@ import org.jaria.net.protocol.Protocol;
  * @param serverName sent to clients at login
  * @param port TCP port (0: the system picks a free one; see {@link ArServerBase#getPort()})
  * @param bindAddress address to listen on; null: every interface, or loopback only when the
- *     authenticator is open (anybody could otherwise drive the robot from the network)
+ *     authenticator is open (anybody could otherwise drive the robot from the network; see
+ *     openBeyondLoopback)
  * @param authenticator who may log in
  * @param maxClients most clients logged in at once
  * @param loginTimeout time a new connection has to log in
@@ -24,9 +25,16 @@ import org.jaria.net.protocol.Protocol;
  *     client (subscription updates never count: they are coalesced, newest wins)
  * @param serverKey ArNetworking's server key, mixed into login digests ("" as in ARIA)
  * @param protocolVersion version text clients must announce ("" accepts any)
- * @param maxPendingLogins most connections not logged in yet
+ * @param maxPendingLogins most connections not logged in yet, over all addresses: beyond it only
+ *     the loopback and addresses that have logged in before get in (replacing a waiting one)
+ * @param maxPendingLoginsPerAddress most connections not logged in yet from one address; a newer
+ *     one from that address replaces its oldest
  * @param maxLoginFailures failed logins per address within the window before it is throttled
  * @param loginFailureWindow the window of maxLoginFailures
+ * @param maxLoginChecksPerSecond password checks per second over all addresses (addresses that
+ *     logged in before are not counted; addresses that failed get half)
+ * @param openBeyondLoopback whether an open server (no login) may listen beyond the loopback
+ *     address: anybody who reaches the port may then drive the robot
  * @param udp whether to open the UDP port for ArNetworking's UDP handshake
  * @param minInterval shortest subscription interval granted (caps the rate)
  * @param maxSubscriptions most subscriptions per client
@@ -51,8 +59,11 @@ public record ServerOptions(
     String serverKey,
     String protocolVersion,
     int maxPendingLogins,
+    int maxPendingLoginsPerAddress,
     int maxLoginFailures,
     Duration loginFailureWindow,
+    int maxLoginChecksPerSecond,
+    boolean openBeyondLoopback,
     boolean udp,
     Duration minInterval,
     int maxSubscriptions,
@@ -87,7 +98,9 @@ public record ServerOptions(
           "server key and protocol version must be set (\"\" for none)");
     }
     positive(maxPendingLogins, "maxPendingLogins");
+    positive(maxPendingLoginsPerAddress, "maxPendingLoginsPerAddress");
     positive(maxLoginFailures, "maxLoginFailures");
+    positive(maxLoginChecksPerSecond, "maxLoginChecksPerSecond");
     if (loginFailureWindow == null || loginFailureWindow.isNegative()) {
       throw new IllegalArgumentException("the login failure window must be zero or positive");
     }
@@ -132,8 +145,11 @@ public record ServerOptions(
     b.serverKey = serverKey;
     b.protocolVersion = protocolVersion;
     b.maxPendingLogins = maxPendingLogins;
+    b.maxPendingLoginsPerAddress = maxPendingLoginsPerAddress;
     b.maxLoginFailures = maxLoginFailures;
     b.loginFailureWindow = loginFailureWindow;
+    b.maxLoginChecksPerSecond = maxLoginChecksPerSecond;
+    b.openBeyondLoopback = openBeyondLoopback;
     b.udp = udp;
     b.minInterval = minInterval;
     b.maxSubscriptions = maxSubscriptions;
@@ -148,11 +164,12 @@ public record ServerOptions(
   }
 
   /**
-   * Builds {@link ServerOptions}. Defaults: name "jaria", port 7272, open authenticator, 32
-   * logged-in clients, 8 not yet logged in, 5 s login, no idle timeout, 10 s stall, 1 MiB queued
-   * replies, 5 failed logins per address per minute, UDP on, 50 ms minimum interval (20 Hz), 64
-   * subscriptions and 16 pending requests per client, 2 workers with 256 queued requests, 256
-   * queued cycle commands with 64 applied per cycle.
+   * Builds {@link ServerOptions}. Defaults: name "jaria", port 7272, open authenticator (on the
+   * loopback address only), 32 logged-in clients, 64 not yet logged in (4 per address), 5 s login,
+   * no idle timeout, 10 s stall, 1 MiB queued replies, 5 failed logins per address per minute, 20
+   * password checks a second, UDP on, 50 ms minimum interval (20 Hz), 64 subscriptions and 16
+   * pending requests per client, 2 workers with 256 queued requests, 256 queued cycle commands with
+   * 64 applied per cycle.
    */
   public static final class Builder {
     private String serverName = "jaria";
@@ -166,9 +183,12 @@ public record ServerOptions(
     private long maxQueuedBytes = 1 << 20;
     private String serverKey = "";
     private String protocolVersion = "";
-    private int maxPendingLogins = 8;
+    private int maxPendingLogins = 64;
+    private int maxPendingLoginsPerAddress = 4;
     private int maxLoginFailures = 5;
     private Duration loginFailureWindow = Duration.ofMinutes(1);
+    private int maxLoginChecksPerSecond = 20;
+    private boolean openBeyondLoopback;
     private boolean udp = true;
     private Duration minInterval = Duration.ofMillis(50);
     private int maxSubscriptions = 64;
@@ -252,11 +272,41 @@ public record ServerOptions(
     }
 
     /**
-     * Most connections that have not logged in yet; one more is closed at once, so idle sockets
-     * cannot take every slot.
+     * Most connections that have not logged in yet, over all addresses. Beyond it a connection from
+     * the loopback address or from an address that has logged in before replaces the oldest one
+     * waiting (preferably one from elsewhere); any other is closed at once.
      */
     public Builder maxPendingLogins(int v) {
       maxPendingLogins = v;
+      return this;
+    }
+
+    /**
+     * Most connections that have not logged in yet from one address: a newer one from that address
+     * replaces its oldest, so sockets that never log in cannot keep the address's users out.
+     */
+    public Builder maxPendingLoginsPerAddress(int v) {
+      maxPendingLoginsPerAddress = v;
+      return this;
+    }
+
+    /**
+     * Password checks per second over all addresses, so guesses from many addresses are as slow as
+     * from one. Addresses that have logged in before are not counted; addresses with failed logins
+     * may use only half of the budget, leaving the rest to the others.
+     */
+    public Builder maxLoginChecksPerSecond(int v) {
+      maxLoginChecksPerSecond = v;
+      return this;
+    }
+
+    /**
+     * Lets a server without a login listen beyond the loopback address. Off by default: {@link
+     * ArServerBase#open()} refuses, since anybody who can reach the port could then drive the
+     * robot.
+     */
+    public Builder openBeyondLoopback(boolean v) {
+      openBeyondLoopback = v;
       return this;
     }
 
@@ -352,8 +402,11 @@ public record ServerOptions(
           serverKey,
           protocolVersion,
           maxPendingLogins,
+          maxPendingLoginsPerAddress,
           maxLoginFailures,
           loginFailureWindow,
+          maxLoginChecksPerSecond,
+          openBeyondLoopback,
           udp,
           minInterval,
           maxSubscriptions,

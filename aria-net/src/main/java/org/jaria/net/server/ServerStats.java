@@ -18,8 +18,11 @@ public final class ServerStats {
   final LongAdder loginThrottled = new LongAdder();
   final LongAdder refusedPending = new LongAdder();
   final LongAdder replacedPending = new LongAdder();
+  final LongAdder loginBusy = new LongAdder();
   final LongAdder requestErrors = new LongAdder();
   final LongAdder udpDropped = new LongAdder();
+  final LongAdder superseded = new LongAdder();
+  final LongAdder safetyReasserted = new LongAdder();
 
   ServerStats() {}
 
@@ -79,11 +82,16 @@ public final class ServerStats {
   }
 
   /**
-   * Connections not logged in that were closed to make room for a newer one when {@code
-   * maxPendingLogins} had not logged in yet.
+   * Connections waiting to log in that were closed to make room for a newer one (from the same
+   * address, or from the loopback or a known address when the server had its most waiting).
    */
   public long getReplacedPending() {
     return replacedPending.sum();
+  }
+
+  /** Logins refused without checking because too many passwords were being checked. */
+  public long getLoginBusy() {
+    return loginBusy.sum();
   }
 
   /** Requests that failed (bad arguments, handler errors, busy). */
@@ -94,6 +102,19 @@ public final class ServerStats {
   /** UDP datagrams ignored (not a packet, or from an unknown sender). */
   public long getUdpDropped() {
     return udpDropped.sum();
+  }
+
+  /**
+   * Requests replaced by a newer one of the same data from the same client before the robot's cycle
+   * applied them (latest-wins data such as ratioDrive), or made moot by a stop.
+   */
+  public long getSuperseded() {
+    return superseded.sum();
+  }
+
+  /** Times a stop was applied again because work asked for before it reached the cycle after it. */
+  public long getSafetyReasserted() {
+    return safetyReasserted.sum();
   }
 
   /** Updates queued for requests at an interval. */

@@ -17,7 +17,7 @@ import org.jaria.net.provider.VideoSource;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ServerOptions;
 import org.jaria.net.server.Where;
-import org.jaria.net.server.info.ArServerHandlerCamera;
+import org.jaria.net.server.info.ArServerHandlerVideo;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -44,7 +44,7 @@ class ArHybridForwarderVideoTest {
   @BeforeEach
   void start() throws Exception {
     videoServer = new ArServerBase(ServerOptions.builder().port(0).serverName("SAV").build());
-    new ArServerHandlerCamera(videoServer, camera());
+    new ArServerHandlerVideo(videoServer, camera());
     videoServer.open();
     gate = new VideoGate(videoServer.getPort());
     server = new ArServerBase(ServerOptions.builder().port(0).serverName("robot").build());

@@ -17,7 +17,7 @@ import org.jaria.net.data.VideoFrame;
 import org.jaria.net.forward.ArHybridForwarderVideo;
 import org.jaria.net.protocol.Protocol;
 import org.jaria.net.provider.VideoSource;
-import org.jaria.net.server.info.ArServerHandlerCamera;
+import org.jaria.net.server.info.ArServerHandlerVideo;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -86,7 +86,7 @@ class ForwardedVideoReplayTest {
           }
         };
     ArServerBase sav = new ArServerBase(ServerOptions.builder().port(0).build());
-    new ArServerHandlerCamera(sav, camera);
+    new ArServerHandlerVideo(sav, camera);
     sav.open();
     try (GuiRig rig = GuiRig.plain(b -> b);
         ArHybridForwarderVideo video =

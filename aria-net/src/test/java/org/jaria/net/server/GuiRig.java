@@ -48,7 +48,8 @@ final class GuiRig implements AutoCloseable {
       nav.localizeAtHome();
       b.localization(nav.localization())
           .pathPlanning(nav.pathPlanning())
-          .config(nav.configRegistry());
+          .config(nav.configRegistry())
+          .mapChange(null, nav::setMap);
     } else {
       nav = null;
       robot.lock();

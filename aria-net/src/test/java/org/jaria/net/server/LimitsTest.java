@@ -144,7 +144,7 @@ class LimitsTest {
 
   @Test
   void socketsThatNeverLogInCannotTakeEverySlot() throws Exception {
-    try (Rig rig = new Rig(options().maxPendingLogins(3).build())) {
+    try (Rig rig = new Rig(options().maxPendingLogins(3).maxPendingLoginsPerAddress(3).build())) {
       java.util.List<RawClient> idle = new java.util.ArrayList<>();
       try {
         for (int i = 0; i < 3; i++) {
@@ -152,13 +152,17 @@ class LimitsTest {
           r.readIntroduction();
           idle.add(r);
         }
-        // A real user gets in at once: the socket that has waited longest makes room.
-        try (ArClientBase real = new ArClientBase("real")) {
-          real.connect("127.0.0.1", rig.server.getPort(), "", "");
-          assertTrue(real.isConnected());
+        // A fourth from the same address takes the place of the oldest, which is closed.
+        try (RawClient fourth = new RawClient(rig.server.getPort())) {
+          fourth.readIntroduction();
+          assertEquals(-1, idle.remove(0).readUntilClosed(), "the oldest idle socket is closed");
+          assertEquals(1, rig.server.getStats().getReplacedPending());
+          // And a real user gets in with every slot taken by sockets that never log in.
+          try (ArClientBase real = new ArClientBase("real")) {
+            real.connect("127.0.0.1", rig.server.getPort(), "", "");
+            assertTrue(real.isConnected());
+          }
         }
-        assertEquals(1, rig.server.getStats().getReplacedPending());
-        assertEquals(-1, idle.get(0).readUntilClosed(), "the oldest idle socket made room");
       } finally {
         for (RawClient r : idle) {
           r.close();

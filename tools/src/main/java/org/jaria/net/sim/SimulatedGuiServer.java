@@ -3,9 +3,11 @@ package org.jaria.net.sim;
 import java.io.IOException;
 import java.util.Locale;
 import java.util.Objects;
+import org.jaria.acts.ptz.ArVCC4;
 import org.jaria.map.ArMap;
 import org.jaria.net.arnl.ArnlNavigation;
 import org.jaria.net.server.GuiServer;
+import org.jaria.net.server.MapFolder;
 import org.jaria.net.server.ServerOptions;
 import org.jaria.robot.ArRobot;
 import org.jaria.sim.OdometryError;
@@ -18,8 +20,8 @@ import org.jaria.sim.client.SimulatedRobot;
 /**
  * The thesis's guiServer on an embedded simulator: a world on a map with one robot (odometry that
  * drifts, as a real robot's does), SonARNL localization and path planning, the simulated camera as
- * video, and a {@link GuiServer} serving all of it. For {@code jaria demo guiserver} without a
- * robot, the monitor's tests and the network benchmark.
+ * video with the robot's VC-C4 pointing it, and a {@link GuiServer} serving all of it. For {@code
+ * jaria demo guiserver} without a robot, the monitor's tests and the network benchmark.
  *
  * <p>With a speed-up above zero the world runs on its own thread at that multiple of real time;
  * with zero it runs in lockstep, only when the caller advances it ({@link #sim()}).
@@ -37,7 +39,8 @@ public final class SimulatedGuiServer implements AutoCloseable {
    * @param mode where localization and planning run (threaded for real time, synchronous for
    *     lockstep)
    * @param speedUp simulated seconds per real second; 0: lockstep, advanced by the caller
-   * @param camera whether to serve the simulated camera as video
+   * @param camera whether to serve the simulated camera as video, and its VC-C4 for clients to
+   *     point
    */
   public record Options(
       ArMap map,
@@ -94,6 +97,14 @@ public final class SimulatedGuiServer implements AutoCloseable {
    * @throws IOException if the server's port cannot be opened
    */
   public static SimulatedGuiServer start(Options o) throws IOException {
+    return start(o, new MapFolder(null));
+  }
+
+  /**
+   * As {@link #start(Options)}, letting clients switch the server to a map of {@code maps} (ARIA's
+   * {@code Files/Map} parameter; the simulated world keeps its own map, as a real building would).
+   */
+  public static SimulatedGuiServer start(Options o, MapFolder maps) throws IOException {
     SimWorld world =
         SimWorld.create(
             o.map(),
@@ -112,8 +123,16 @@ public final class SimulatedGuiServer implements AutoCloseable {
       robot.enableMotors();
       sim.runMillis(1500);
       boolean localized = nav.localizeAtHome();
+      ActsPtz ptz = null;
       if (o.camera()) {
-        video = new SimCameraVideo(SimCamera.onTop(world, r), "Simulated camera", 5);
+        // The simulated robot's VC-C4 on AUX1, which its camera follows: clients that pan and
+        // tilt it (ptzCameraClientExample, the monitor) see the picture turn.
+        SimCamera cam = SimCamera.onTop(world, r);
+        cam.setFollowAuxPtz(true);
+        video = new SimCameraVideo(cam, "Simulated camera", 5);
+        ArVCC4 vcc4 = new ArVCC4(robot);
+        vcc4.init();
+        ptz = new ActsPtz(vcc4);
       }
       GuiServer gui =
           GuiServer.builder(robot)
@@ -123,6 +142,8 @@ public final class SimulatedGuiServer implements AutoCloseable {
               .pathPlanning(nav.pathPlanning())
               .config(nav.configRegistry())
               .video(video)
+              .ptz(ptz)
+              .mapChange(maps, nav::setMap)
               .build();
       nav.addCommands(gui.getCommands());
       gui.open();

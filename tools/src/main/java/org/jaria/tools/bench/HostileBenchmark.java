@@ -61,6 +61,7 @@ public final class HostileBenchmark {
     actsFlood(out, flood);
     reconnects(out, quick ? 5 : 25);
     SquatterBenchmark.rows(out, quick);
+    out.append(GuiServerHostileBenchmark.run(quick));
     return out.toString();
   }
 

@@ -13,6 +13,7 @@ import org.jaria.acts.image.CameraSource;
 import org.jaria.acts.image.ImageSequenceSource;
 import org.jaria.acts.image.ImageSource;
 import org.jaria.acts.image.StillImageSource;
+import org.jaria.acts.ptz.ArVCC4;
 import org.jaria.clock.Clock;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.connection.RobotAddress;
@@ -25,8 +26,10 @@ import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ArServerUserInfo;
 import org.jaria.net.server.Authenticator;
 import org.jaria.net.server.GuiServer;
+import org.jaria.net.server.MapFolder;
 import org.jaria.net.server.ServerOptions;
 import org.jaria.net.server.modes.ArServerModes;
+import org.jaria.net.sim.ActsPtz;
 import org.jaria.net.sim.SimulatedGuiServer;
 import org.jaria.net.video.JpegVideo;
 import org.jaria.robot.ArRobot;
@@ -59,6 +62,15 @@ public final class GuiServerCommand implements Callable<Integer> {
       paramLabel = "FILE",
       description = "The map: a .map file or a bundled map (office, hall). Default: office.")
   String map = "office";
+
+  @Option(
+      names = "--map-dir",
+      paramLabel = "DIR",
+      description =
+          "Clients may switch the server to a map of this folder (ARIA's Files/Map parameter, as"
+              + " changeMapOnServer sets it), or to a bundled map. Default: the --map file's"
+              + " folder (the bundled maps only for a bundled --map).")
+  Path mapDir;
 
   @Option(
       names = "--remote",
@@ -96,6 +108,15 @@ public final class GuiServerCommand implements Callable<Integer> {
           "With --remote or --serial: serve this picture, or the pictures of this folder in turn,"
               + " as the video (a camera stand-in for tests and demonstrations).")
   Path video;
+
+  @Option(
+      names = "--ptz",
+      paramLabel = "TYPE",
+      description =
+          "With --remote or --serial: the robot's pan-tilt-zoom camera on its AUX port (vcc4: a"
+              + " Canon VC-C4), which clients may then point (ARIA's camera requests, camera"
+              + " Cam1). The embedded simulator's VC-C4 is served unless --no-camera.")
+  String ptz;
 
   @Option(
       names = "--forward-video",
@@ -137,8 +158,15 @@ public final class GuiServerCommand implements Callable<Integer> {
       paramLabel = "ADDRESS",
       description =
           "Interface to listen on (default: all interfaces with a login, this computer only"
-              + " without one).")
+              + " without one; beyond this computer without a login only with --no-login).")
   String bind;
+
+  @Option(
+      names = "--no-login",
+      description =
+          "Serve without a login beyond this computer (with --bind): anybody who can reach the"
+              + " port may then drive the robot. Only on a network you trust completely.")
+  boolean noLogin;
 
   @Option(
       names = "--speed",
@@ -181,13 +209,17 @@ public final class GuiServerCommand implements Callable<Integer> {
       if (forwardVideo != null) {
         forwardPort(); // a wrong address is said before anything starts
       }
+      if (ptz != null && !ptz.equalsIgnoreCase("vcc4")) {
+        throw new IllegalArgumentException("--ptz knows vcc4 (a Canon VC-C4), not '" + ptz + "'");
+      }
       if (remote != null || serial != null) {
         return runOnRobot(m, mapName, options, out);
       }
-      if (camera != null || video != null) {
+      if (camera != null || video != null || ptz != null) {
         throw new IllegalArgumentException(
-            "--camera and --video are for a real robot (--remote or --serial); the embedded"
-                + " simulator serves its own camera (or none with --no-camera)");
+            "--camera, --video and --ptz are for a real robot (--remote or --serial); the"
+                + " embedded simulator serves its own camera and VC-C4 (or none with"
+                + " --no-camera)");
       }
       try (SimulatedGuiServer s =
               SimulatedGuiServer.start(
@@ -199,7 +231,8 @@ public final class GuiServerCommand implements Callable<Integer> {
                       options,
                       ArnlNavigation.Mode.THREADED,
                       speed,
-                      !noCamera && forwardVideo == null));
+                      !noCamera && forwardVideo == null),
+                  mapFolder());
           ArHybridForwarderVideo forwarder = forwarder(s.gui().getServer(), out)) {
         out.printf(
             Locale.ROOT,
@@ -228,12 +261,68 @@ public final class GuiServerCommand implements Callable<Integer> {
         userFile != null
             ? ArServerUserInfo.readFile(userFile)
             : secret != null ? Authenticator.sharedSecret(secret) : Authenticator.open();
+    if (noLogin && !auth.isOpen()) {
+      throw new IllegalArgumentException(
+          "give --no-login or a password (or --user-file), not both");
+    }
+    if (auth.isOpen() && !noLogin && bind != null && !isLoopback(bind)) {
+      throw new IllegalArgumentException(
+          "--bind "
+              + bind
+              + " without a password would let anybody who can reach port "
+              + port
+              + " drive the robot: give --password-file FILE or --user-file FILE (see"
+              + " docs/networking.md), or add --no-login if that is really meant");
+    }
     return ServerOptions.builder()
         .serverName("guiServer")
         .port(port)
         .bindAddress(bind)
         .authenticator(auth)
+        .openBeyondLoopback(noLogin)
         .build();
+  }
+
+  private static boolean isLoopback(String address) throws IOException {
+    return java.net.InetAddress.getByName(address).isLoopbackAddress();
+  }
+
+  /**
+   * What the server's address and login mean, said plainly: "Listening on 0.0.0.0:7272 (NO LOGIN:
+   * anybody who can reach this port may drive the robot)".
+   */
+  static String listeningLine(String address, int port, boolean open) {
+    boolean local;
+    try {
+      local = java.net.InetAddress.getByName(address).isLoopbackAddress();
+    } catch (java.net.UnknownHostException e) {
+      local = false;
+    }
+    String what;
+    if (open) {
+      what =
+          local
+              ? "no login needed; this computer only: give --password-file or --user-file to"
+                  + " serve others"
+              : "NO LOGIN: anybody who can reach this port may drive the robot";
+    } else {
+      what =
+          local
+              ? "login required; this computer only"
+              : "login required; the login is weak and nothing is encrypted: across a network you"
+                  + " do not trust, see docs/networking.md";
+    }
+    return String.format(Locale.ROOT, "Listening on %s:%d (%s)", address, port, what);
+  }
+
+  /** The folder of --map-dir, else of the --map file (none for a bundled map). */
+  private MapFolder mapFolder() throws IOException {
+    if (mapDir != null) {
+      return new MapFolder(mapDir);
+    }
+    Path file = Path.of(map);
+    Path parent = file.toAbsolutePath().getParent();
+    return new MapFolder(Files.isRegularFile(file) && parent != null ? parent : null);
   }
 
   static ArMap loadMap(String map) throws IOException {
@@ -296,6 +385,13 @@ public final class GuiServerCommand implements Callable<Integer> {
         out.printf(Locale.ROOT, "Serving video: %s%n", cam.getName());
       }
       report(out, localized, robot, nav);
+      ActsPtz unit = null;
+      if (ptz != null) {
+        ArVCC4 vcc4 = new ArVCC4(robot);
+        vcc4.init();
+        unit = new ActsPtz(vcc4);
+        out.println("Serving the VC-C4 on the robot's AUX port as camera Cam1");
+      }
       try (GuiServer gui =
           GuiServer.builder(robot)
               .options(options)
@@ -304,6 +400,8 @@ public final class GuiServerCommand implements Callable<Integer> {
               .pathPlanning(nav.pathPlanning())
               .config(nav.configRegistry())
               .video(cam)
+              .ptz(unit)
+              .mapChange(mapFolder(), nav::setMap)
               .build()) {
         nav.addCommands(gui.getCommands());
         try (ArHybridForwarderVideo forwarder = forwarder(gui.getServer(), out)) {
@@ -369,16 +467,9 @@ public final class GuiServerCommand implements Callable<Integer> {
       GuiServer gui, ArRobot robot, ArHybridForwarderVideo forwarder, PrintWriter out) {
     var server = gui.getServer();
     boolean open = server.getOptions().authenticator().isOpen();
-    String host = server.getOptions().bindAddress();
-    String shown = host == null ? (open ? "127.0.0.1" : "0.0.0.0") : host;
-    out.printf(
-        Locale.ROOT,
-        "Listening on %s:%d (%s)%n",
-        shown,
-        server.getPort(),
-        open
-            ? "no login needed; this computer only: give --password or --user-file to serve others"
-            : "login required");
+    // Where it really listens, not what was asked for.
+    String shown = server.getAddress();
+    out.println(listeningLine(shown, server.getPort(), open));
     out.printf(
         Locale.ROOT,
         "Watch it with: ./jaria monitor %s:%d%s%n",

@@ -124,14 +124,19 @@ class GuiServerCommandTest {
       {"--remote", "127.0.0.1:1", "--serial", "/dev/ttyS0"},
       {"--remote", "127.0.0.1:1", "--camera", "0", "--video", "x.png"},
       {"--remote", "127.0.0.1:1", "--video", "x.png", "--forward-video", "localhost"},
-      {"--forward-video", "localhost:seventy"}
+      {"--forward-video", "localhost:seventy"},
+      {"--bind", "0.0.0.0"},
+      {"--no-login", "--password", "secret"}
     };
     String[] reasons = {
-      "--camera and --video are for a real robot",
+      "--camera, --video and --ptz are for a real robot",
       "--remote or --serial, not both",
       "--camera or --video, not both",
       "--forward-video or --camera/--video, not both",
-      "--forward-video wants HOST or HOST:PORT, got 'localhost:seventy'"
+      "--forward-video wants HOST or HOST:PORT, got 'localhost:seventy'",
+      "--bind 0.0.0.0 without a password would let anybody who can reach port 7272 drive the"
+          + " robot",
+      "--no-login or a password"
     };
     for (int i = 0; i < cases.length; i++) {
       CommandLine cli = JariaCli.commandLine();
@@ -145,6 +150,23 @@ class GuiServerCommandTest {
       assertEquals(2, cli.execute(args), String.join(" ", args));
       assertTrue(err.toString().contains(reasons[i]), err.toString());
     }
+  }
+
+  @Test
+  void theListeningLineSaysWhoMayConnect() {
+    assertEquals(
+        "Listening on 0.0.0.0:7272 (NO LOGIN: anybody who can reach this port may drive the"
+            + " robot)",
+        GuiServerCommand.listeningLine("0.0.0.0", 7272, true));
+    assertTrue(
+        GuiServerCommand.listeningLine("127.0.0.1", 7272, true)
+            .contains("no login needed; this computer only"));
+    assertTrue(
+        GuiServerCommand.listeningLine("0.0.0.0", 7272, false)
+            .contains("login required; the login is weak"));
+    assertEquals(
+        "Listening on 127.0.0.1:7272 (login required; this computer only)",
+        GuiServerCommand.listeningLine("127.0.0.1", 7272, false));
   }
 
   /**

@@ -6,7 +6,10 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.data.CommandInfo;
+import org.jaria.net.protocol.NetError;
 import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.NetRequestException;
+import org.jaria.net.server.TextLimits;
 import org.jaria.net.server.Where;
 
 /**
@@ -131,17 +134,23 @@ public final class ArServerHandlerCommands {
         where,
         (client, request, reply) -> {
           String said = handler.run(argsAsText(request));
-          if (!said.isEmpty()) {
-            reply.strToBuf(said);
+          if (said != null && !said.isEmpty()) {
+            reply.strToBuf(TextLimits.clip(said, TextLimits.MAX_MESSAGE));
           }
         });
     commands.add(new CommandInfo(name, description, argumentDescription));
   }
 
-  private static List<String> argsAsText(ArNetPacket p) {
+  private static List<String> argsAsText(ArNetPacket p) throws NetRequestException {
     List<String> l = new ArrayList<>();
     while (p.hasMore()) {
-      l.add(p.bufToStr());
+      String a = p.bufToStr();
+      if (a.length() > TextLimits.MAX_VALUE) {
+        throw new NetRequestException(
+            NetError.BAD_ARGUMENTS,
+            "a command's argument has at most " + TextLimits.MAX_VALUE + " characters");
+      }
+      l.add(a);
     }
     return l;
   }

@@ -6,6 +6,7 @@ import org.jaria.net.data.ConfigLayout;
 import org.jaria.net.data.ConfigSection;
 import org.jaria.net.provider.ConfigRegistry;
 import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.TextLimits;
 import org.jaria.net.server.Where;
 
 /**
@@ -60,16 +61,27 @@ public final class ArServerHandlerConfig {
           while (request.hasMore()) {
             String name = request.bufToStr();
             String value = request.bufToStr();
-            if (name.equalsIgnoreCase("Section")) {
+            String err;
+            if (name.length() > TextLimits.MAX_NAME || value.length() > TextLimits.MAX_VALUE) {
+              // Nothing this long is kept, nor sent to every client that reads the config.
+              err =
+                  TextLimits.clip(name, 40)
+                      + ": names have at most "
+                      + TextLimits.MAX_NAME
+                      + " characters and values at most "
+                      + TextLimits.MAX_VALUE;
+              section = name.equalsIgnoreCase("Section") ? "" : section;
+            } else if (name.equalsIgnoreCase("Section")) {
               section = value;
               continue;
+            } else {
+              err = config.setParam(section, name, value);
             }
-            String err = config.setParam(section, name, value);
             if (err != null && first.isEmpty()) {
               first = err;
             }
           }
-          reply.strToBuf(first);
+          reply.strToBuf(TextLimits.clip(first, TextLimits.MAX_MESSAGE));
           // As ArNetworking: every setConfig tells the other clients to read the config again.
           server.broadcastPacketTcpWithExclusion(new ArNetPacket(), "configUpdated", client);
         });

@@ -17,6 +17,8 @@ import org.jaria.robot.ArRobot;
  */
 public final class ArServerHandlerLocalization {
 
+  private volatile ArMap map;
+
   /**
    * Registers {@code "localizeToPose"} with {@code server}.
    *
@@ -31,6 +33,7 @@ public final class ArServerHandlerLocalization {
    */
   public ArServerHandlerLocalization(
       ArServerBase server, ArRobot robot, LocalizationInfo loc, ArMap map) {
+    this.map = map;
     server.addData(
         "localizeToPose",
         "Initialize localization at the given point in the map",
@@ -42,7 +45,7 @@ public final class ArServerHandlerLocalization {
           // ArNetworking's layout (RemoteRequestAPI): three 4-byte integers, mm and degrees.
           ArPose pose =
               NumericArgs.pose(
-                  request.bufToByte4(), request.bufToByte4(), request.bufToByte4(), map);
+                  request.bufToByte4(), request.bufToByte4(), request.bufToByte4(), this.map);
           if (loc != null) {
             if (!loc.localizeToPose(pose)) {
               throw new NetRequestException(
@@ -52,5 +55,10 @@ public final class ArServerHandlerLocalization {
             throw new NetRequestException(NetError.BUSY, "the robot's command queue is full");
           }
         });
+  }
+
+  /** Checks poses against another map from now on (after a map change). */
+  public void setMap(ArMap m) {
+    map = m;
   }
 }

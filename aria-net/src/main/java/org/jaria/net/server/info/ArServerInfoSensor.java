@@ -8,6 +8,7 @@ import org.jaria.net.data.Points;
 import org.jaria.net.data.RangeReadings;
 import org.jaria.net.data.SensorReadings;
 import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.TextLimits;
 import org.jaria.net.server.Where;
 import org.jaria.range.ArRangeDevice;
 import org.jaria.robot.ArRobot;
@@ -67,10 +68,10 @@ public final class ArServerInfoSensor {
   }
 
   private void readings(String name, boolean cumulative, ArNetPacket reply) {
-    ArRangeDevice d = robot.findRangeDevice(name);
+    ArRangeDevice d = name.length() > TextLimits.MAX_NAME ? null : robot.findRangeDevice(name);
     if (d == null) {
-      // ArNetworking's answer for a sensor it does not have.
-      reply.byte2ToBuf(-1).strToBuf(name);
+      // ArNetworking's answer for a sensor it does not have (the name echoed, cut).
+      reply.byte2ToBuf(-1).strToBuf(TextLimits.clip(name, TextLimits.MAX_NAME));
       return;
     }
     List<ArPose> l = cumulative ? d.getCumulativeReadings() : d.getCurrentReadings();

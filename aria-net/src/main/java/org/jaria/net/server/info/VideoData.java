@@ -7,7 +7,7 @@ import org.jaria.net.server.Where;
 /**
  * ArNetworking's two video data, {@code "videoSize"} and {@code "sendVideo"}, declared once with
  * the names, descriptions, group and flags ARIA's clients (getVideoExample, MobileEyes) look for,
- * whether the pictures come from a camera here ({@link ArServerHandlerCamera}) or from another
+ * whether the pictures come from a camera here ({@link ArServerHandlerVideo}) or from another
  * server ({@code ArHybridForwarderVideo}).
  */
 public final class VideoData {

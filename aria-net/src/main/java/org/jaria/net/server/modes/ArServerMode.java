@@ -2,6 +2,7 @@ package org.jaria.net.server.modes;
 
 import java.util.Objects;
 import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.TextLimits;
 import org.jaria.robot.ArRobot;
 
 /**
@@ -52,12 +53,17 @@ public abstract class ArServerMode {
     return status;
   }
 
+  /** Sets the mode string (cut to {@link TextLimits#MAX_MESSAGE}: every client receives it). */
   protected void setMode(String m) {
-    mode = m;
+    mode = TextLimits.clip(m, TextLimits.MAX_MESSAGE);
   }
 
+  /**
+   * Sets the status string (cut to {@link TextLimits#MAX_MESSAGE}: it goes to every client in each
+   * {@code update}, so a name a client gave cannot make it grow).
+   */
   protected void setStatus(String s) {
-    status = s;
+    status = TextLimits.clip(s, TextLimits.MAX_MESSAGE);
   }
 
   /** Whether this is the active mode. */

@@ -19,8 +19,11 @@ import org.jaria.net.server.Where;
  */
 public final class ArServerModeDock {
 
+  private volatile ArMap map;
+
   /** Registers {@code "dock"} with {@code server}; {@code map} may be null. */
   public ArServerModeDock(ArServerBase server, ArMap map) {
+    this.map = map;
     server.addData(
         "dock",
         "Enter dock mode and send the robot to the docking station (JAria: unsupported, no"
@@ -30,8 +33,13 @@ public final class ArServerModeDock {
         "Movement",
         Where.WORKER,
         (client, request, reply) -> {
-          throw new NetRequestException(NetError.UNAVAILABLE, refusal(map));
+          throw new NetRequestException(NetError.UNAVAILABLE, refusal(this.map));
         });
+  }
+
+  /** Names the dock of another map from now on (after a map change). */
+  public void setMap(ArMap m) {
+    map = m;
   }
 
   /** Why docking is refused, naming the map's dock if it has one. */

@@ -26,6 +26,7 @@ import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ArServerClient;
 import org.jaria.net.server.NetRequestException;
 import org.jaria.net.server.NumericArgs;
+import org.jaria.net.server.TextLimits;
 import org.jaria.net.server.Where;
 import org.jaria.robot.ArRobot;
 
@@ -45,7 +46,7 @@ public class ArServerModeGoto extends ArServerMode {
   private static final long ACTIVATION_TIMEOUT_SECONDS = 5;
 
   private final PathPlanningInfo planner;
-  private final ArMap map;
+  private volatile ArMap map;
   private final ArActionGroup group;
   private final ArActionGoto gotoAction = new ArActionGoto("goto");
   private final HoldAtGoal hold = new HoldAtGoal(gotoAction);
@@ -129,11 +130,12 @@ public class ArServerModeGoto extends ArServerMode {
         "Movement",
         planner == null ? Where.CYCLE : Where.WORKER,
         (client, request, reply) -> {
+          ArMap m = map;
           ArPose home =
-              map == null
+              m == null
                   ? null
-                  : map.findFirstMapObjectOfType("RobotHome")
-                      .or(() -> map.findFirstMapObjectOfType("Dock"))
+                  : m.findFirstMapObjectOfType("RobotHome")
+                      .or(() -> m.findFirstMapObjectOfType("Dock"))
                       .map(ArMapObject::pose)
                       .orElse(null);
           if (home == null) {
@@ -148,11 +150,20 @@ public class ArServerModeGoto extends ArServerMode {
         });
   }
 
+  /**
+   * Takes goals and bounds from another map from now on (after a map change; a goal being driven to
+   * is cancelled by stopping first).
+   */
+  public void setMap(ArMap m) {
+    map = m;
+  }
+
   /** The names of the map's goals, in map order. */
   public List<String> getGoals() {
     List<String> l = new ArrayList<>();
-    if (map != null) {
-      for (ArMapObject o : map.getGoals()) {
+    ArMap m = map;
+    if (m != null) {
+      for (ArMapObject o : m.getGoals()) {
         l.add(o.name());
       }
     }
@@ -184,14 +195,20 @@ public class ArServerModeGoto extends ArServerMode {
   private void serverGotoGoal(ArServerClient client, ArNetPacket request, ArNetPacket reply)
       throws NetRequestException, InterruptedException {
     String name = request.bufToStr();
+    if (name.length() > TextLimits.MAX_NAME) {
+      throw new NetRequestException(
+          NetError.BAD_ARGUMENTS,
+          "a goal name has at most " + TextLimits.MAX_NAME + " characters; see getGoals");
+    }
     if (planner != null) {
       startWithPlanner("goal " + name, () -> planner.pathPlanToGoal(name));
       return;
     }
+    ArMap m = map;
     Optional<ArMapObject> goal =
-        map == null
+        m == null
             ? Optional.empty()
-            : map.getGoals().stream().filter(o -> o.name().equalsIgnoreCase(name)).findFirst();
+            : m.getGoals().stream().filter(o -> o.name().equalsIgnoreCase(name)).findFirst();
     if (goal.isEmpty()) {
       throw new NetRequestException(
           NetError.BAD_ARGUMENTS, "no goal called '" + name + "' on the map; see getGoals");
@@ -232,6 +249,13 @@ public class ArServerModeGoto extends ArServerMode {
     if (!start.start()) {
       throw new NetRequestException(
           NetError.FAILED, "cannot go to " + name + ": " + planner.getStatusString());
+    }
+    if (!isActive()) {
+      // A stop (or another mode) took over while the plan was being started: deactivating this
+      // mode cancelled the plan before it existed, so cancel the one just started.
+      planner.cancelPathPlan();
+      throw new NetRequestException(
+          NetError.FAILED, "the goal to " + name + " was cancelled by a newer command");
     }
   }
 

@@ -6,6 +6,7 @@ import org.jaria.action.ArActionDeceleratingLimiter;
 import org.jaria.action.ArActionGroup;
 import org.jaria.action.ArActionRatioInput;
 import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.CallPolicy;
 import org.jaria.net.server.NumericArgs;
 import org.jaria.net.server.Where;
 import org.jaria.robot.ArRobot;
@@ -67,6 +68,9 @@ public class ArServerModeRatioDrive extends ArServerMode {
           }
           ratioDrive(trans, rot, throttle);
         });
+    // ARIA's clients send ratioDrive at every turn of their loop (clientDemo: about 900 a second):
+    // only the newest matters, so a newer one replaces one still waiting instead of piling up.
+    server.setCallPolicy("ratioDrive", CallPolicy.LATEST_WINS);
     server.addData(
         "setSafeDrive",
         "whether the limiters brake before obstacles (false is UNSAFE)",

@@ -2,13 +2,15 @@ package org.jaria.net.server.modes;
 
 import org.jaria.action.ArActionGroupStop;
 import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.CallPolicy;
 import org.jaria.net.server.Where;
 import org.jaria.robot.ArRobot;
 
 /**
  * Stops the robot and keeps it stopped (ArNetworking's {@code ArServerModeStop}): an {@link
  * ArActionGroupStop} activated exclusively. Usually the default mode. Client request: {@code
- * "stop"}.
+ * "stop"}, a {@link CallPolicy#SAFETY} request: however many commands wait for the robot's cycle,
+ * it is applied at the next cycle.
  */
 public class ArServerModeStop extends ArServerMode {
 
@@ -27,6 +29,8 @@ public class ArServerModeStop extends ArServerMode {
         "Movement",
         Where.CYCLE,
         (client, request, reply) -> activate());
+    // A stop jumps the queue of commands and is never refused (see CallPolicy).
+    server.setCallPolicy("stop", CallPolicy.SAFETY);
   }
 
   @Override
