@@ -152,7 +152,7 @@ public final class NavigateDemo {
     try {
       return ArMap.load(mapOrName);
     } catch (IOException e) {
-      throw new UncheckedIOException("cannot read the map " + mapOrName + ": " + e.getMessage(), e);
+      throw new UncheckedIOException(e.getMessage(), e); // says what is wrong and what to do
     } catch (MapFormatException e) {
       throw new IllegalArgumentException("not a valid map: " + e.getMessage(), e);
     }

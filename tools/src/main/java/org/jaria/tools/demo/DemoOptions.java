@@ -3,8 +3,10 @@ package org.jaria.tools.demo;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
+import java.util.concurrent.atomic.AtomicReference;
 import org.jaria.clock.Clock;
 import org.jaria.connection.RobotAddress;
+import org.jaria.tools.cli.SecondsOption;
 import picocli.CommandLine.Option;
 
 /** Options every demo shares. */
@@ -22,8 +24,8 @@ class DemoOptions {
 
   @Option(
       names = "--seconds",
-      description =
-          "Stop after this many seconds (default: ${DEFAULT-VALUE}; 0 runs until Ctrl-C).",
+      description = "Stop after this many seconds (default: ${DEFAULT-VALUE}; 0: until Ctrl-C).",
+      converter = SecondsOption.Whole.class,
       defaultValue = "30")
   int seconds = 30;
 
@@ -72,21 +74,44 @@ class DemoOptions {
   }
 
   /**
-   * What a demo's {@code --remote} run returns: {@code status}, unless it is 1 (no robot) for a TCP
-   * address, which is then explained in the user's own option names.
+   * Where a demo's program leaves its reason when no robot connects at {@code --remote}, for {@link
+   * #remoteFailed} to explain once (the program's own message would name ARIA's options).
+   */
+  final AtomicReference<String> noRobot = new AtomicReference<>();
+
+  /**
+   * What a demo's {@code --remote} run returns: {@code status}, unless it is 1 (no robot), which is
+   * then explained in the user's own option names.
    *
-   * @throws IOException saying that nothing answered at the address and what to do
+   * @throws IOException saying what did not answer at the address and what to do
    */
   int remoteFailed(int status) throws IOException {
-    RobotAddress a = RobotAddress.parse(remote);
-    if (status != 1 || a.isSerial()) {
+    String why = noRobot.get();
+    if (status != 1 || why == null) {
       return status;
     }
+    RobotAddress a = RobotAddress.parse(remote);
+    if (a.isSerial()) {
+      throw new IOException(
+          "no robot answered on "
+              + a
+              + " ("
+              + firstClause(why)
+              + "): check the cable, that the robot is on, and its speed (--remote "
+              + "DEVICE@BAUD)");
+    }
     throw new IOException(
-        "nothing accepts connections at "
-            + a
-            + ", or it did not answer as a robot: start a simulator there (./jaria sim --port "
+        (why.startsWith("nothing accepts connections")
+                ? "nothing accepts connections at " + a
+                : a + " did not answer as a robot (" + firstClause(why) + ")")
+            + ": start a simulator there (./jaria sim --port "
             + a.port()
             + ") or give --remote the robot's HOST:PORT");
+  }
+
+  /** A reason without the library's advice, which names ARIA's options rather than --remote. */
+  private static String firstClause(String why) {
+    int colon = why.indexOf(": ");
+    return colon < 0 ? why : why.substring(0, colon);
   }
 }

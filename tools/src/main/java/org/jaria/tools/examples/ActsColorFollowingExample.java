@@ -55,6 +55,26 @@ public final class ActsColorFollowingExample {
    */
   public static int run(
       String[] args, ArPTZ camera, ArKeyHandler keyHandler, Consumer<ArRobot> started) {
+    return run(args, camera, keyHandler, started, RUNNING);
+  }
+
+  /** What the program says once it runs, as ARIA's example does. */
+  public static final String RUNNING =
+      "Running. Train ACTS to detect a color to drive towards an object, or use 'a' key to"
+          + " switch to keyboard driving mode.";
+
+  /**
+   * The program, saying {@code running} once it runs instead of {@link #RUNNING} (a caller that has
+   * trained ACTS already, or reads no keys, says so).
+   *
+   * @return 0 normal, 1 no robot, 2 no ACTS
+   */
+  public static int run(
+      String[] args,
+      ArPTZ camera,
+      ArKeyHandler keyHandler,
+      Consumer<ArRobot> started,
+      String running) {
     // The robot
     ArRobot robot = new ArRobot();
     // Sonar, for basic obstacle avoidance
@@ -122,9 +142,7 @@ public final class ActsColorFollowingExample {
     // Start with keyboard driving off: 'a' turns it on
     keydriveAction.deactivate();
 
-    System.out.println(
-        "Running. Train ACTS to detect a color to drive towards an object, or use 'a' key to"
-            + " switch to keyboard driving mode.");
+    System.out.println(running);
     robot.runAsync(true);
     started.accept(robot);
     try {

@@ -36,15 +36,30 @@ public final class GotoActionExample {
    * @return the exit status: 0 normal, 1 bad arguments or no robot
    */
   public static int run(String[] args, Consumer<ArRobot> started) {
+    return run(
+        args,
+        started,
+        why -> {
+          System.err.println("Could not connect to the robot: " + why);
+          System.err.println(ArRobotConnector.optionsHelp());
+        });
+  }
+
+  /**
+   * The program, with what it says when no robot connects left to {@code noRobot} (given the
+   * reason): a caller with options of its own (the demo command) explains them in its own words.
+   *
+   * @return the exit status: 0 normal, 1 bad arguments or no robot
+   */
+  public static int run(String[] args, Consumer<ArRobot> started, Consumer<String> noRobot) {
     ArArgumentParser argParser = new ArArgumentParser(args);
     argParser.loadDefaultArguments();
     ArRobot robot = new ArRobot();
     ArRobotConnector robotConnector = new ArRobotConnector(argParser, robot);
 
     if (!robotConnector.connectRobot()) {
-      System.err.println("Could not connect to the robot: " + robot.getConnectFailure());
-      if (argParser.checkHelpAndWarnUnparsed()) {
-        System.err.println(ArRobotConnector.optionsHelp());
+      if (argParser.checkHelpAndWarnUnparsed()) { // else it has said which option is unknown
+        noRobot.accept(robot.getConnectFailure());
       }
       return 1;
     }

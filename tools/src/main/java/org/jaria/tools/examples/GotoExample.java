@@ -38,11 +38,27 @@ public final class GotoExample {
    */
   public static int run(
       String[] args, List<ArPose> goals, PrintStream out, Consumer<ArRobot> started) {
+    return run(
+        args, goals, out, started, why -> out.println("Could not connect to the robot: " + why));
+  }
+
+  /**
+   * The program, with what it says when no robot connects left to {@code noRobot} (given the
+   * reason).
+   *
+   * @return 0 when every goal was reached, 1 no robot, 2 stopped before the end
+   */
+  public static int run(
+      String[] args,
+      List<ArPose> goals,
+      PrintStream out,
+      Consumer<ArRobot> started,
+      Consumer<String> noRobot) {
     ArArgumentParser parser = new ArArgumentParser(args);
     ArRobot robot = new ArRobot();
     ArRobotConnector connector = new ArRobotConnector(parser, robot);
     if (!connector.connectRobot() || !parser.checkHelpAndWarnUnparsed()) {
-      out.println("Could not connect to the robot: " + robot.getConnectFailure());
+      noRobot.accept(robot.getConnectFailure());
       return 1;
     }
     robot.addRangeDevice(new ArSonarDevice());

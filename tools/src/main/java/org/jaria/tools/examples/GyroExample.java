@@ -115,6 +115,27 @@ public final class GyroExample {
       PrintStream out,
       int printEvery,
       Consumer<ArRobot> started) {
+    return run(args, keyHandler, out, printEvery, started, KEYS);
+  }
+
+  /** What the program says of its keys before it connects. */
+  public static final String KEYS =
+      "This program lets you drive the robot with the keyboard: arrows drive, space stops,\n"
+          + "1-0 and q-p turn, a/s/d/f turn to 0/90/180/270 degrees. ESC exits.";
+
+  /**
+   * The program, saying {@code intro} instead of {@link #KEYS} before it connects (a caller that
+   * presses the keys itself says so).
+   *
+   * @return 0 normal, 1 no robot
+   */
+  public static int run(
+      String[] args,
+      ArKeyHandler keyHandler,
+      PrintStream out,
+      int printEvery,
+      Consumer<ArRobot> started,
+      String intro) {
     ArRobot robot = new ArRobot();
     ArActionKeydrive keydriveAct = new ArActionKeydrive(keyHandler);
     new GyroTask(robot, keyHandler, out, printEvery);
@@ -124,9 +145,7 @@ public final class GyroExample {
       connector.logOptions();
       return 1;
     }
-    out.println(
-        "This program lets you drive the robot with the keyboard: arrows drive, space stops,\n"
-            + "1-0 and q-p turn, a/s/d/f turn to 0/90/180/270 degrees. ESC exits.");
+    out.println(intro);
     robot.addRangeDevice(sonar);
     if (!connector.connectRobot(robot)) {
       out.println("Could not connect to robot... exiting: " + robot.getConnectFailure());
