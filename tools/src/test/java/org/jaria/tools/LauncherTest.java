@@ -166,6 +166,21 @@ class LauncherTest {
     assertTrue(r.err.contains("jaria: built in"), r.err);
   }
 
+  /** What the launcher says the first build takes is what the README says. */
+  @Test
+  void theLauncherAndTheReadmeGiveTheSameFirstBuildTime() throws IOException {
+    String script = Files.readString(Path.of("..", "jaria"), StandardCharsets.UTF_8);
+    Matcher m = Pattern.compile("(?m)^build_time=\"([^\"]*)\"").matcher(script);
+    assertTrue(m.find(), "the launcher names the time");
+    String readme = Files.readString(Path.of("..", "README.md"), StandardCharsets.UTF_8);
+    String said = readme.replaceAll("\\s+", " ");
+    assertTrue(
+        said.contains(
+            "The first run builds the command line first, printing a line per module: "
+                + m.group(1)),
+        "the README says " + m.group(1));
+  }
+
   /** The script's module list is exactly what {@code ./mvnw -pl tools -am} builds. */
   @Test
   void theModulesWatchedAreWhatToolsIsBuiltFrom() throws Exception {
