@@ -42,6 +42,7 @@ public final class MapRenderer {
   static final Color GRID_AXIS = Color.web("#c9ced8");
 
   private static final int POINT_ARGB = 0xFF303030;
+  private static final Color LABEL_BACKING = Color.rgb(255, 255, 255, 0.8);
   private static final int SELECTED_ARGB = 0xFF1E78FF;
 
   private final Font font = Font.font("System", 11);
@@ -107,6 +108,9 @@ public final class MapRenderer {
             : List.of();
     for (LabelPlacer.Placed p : labels) {
       String name = p.label().text();
+      // A pale backing: names stay legible over dense laser points and walls.
+      gc.setFill(LABEL_BACKING);
+      gc.fillRect(p.left() - 1, p.top(), p.label().width() + 1, p.label().height());
       gc.setFill(Color.WHITE);
       gc.fillText(name, p.left() + 0.8, p.centerY() + 0.8);
       gc.setFill(selectedNames.contains(name) ? SELECTION : Color.web("#202020"));
