@@ -60,7 +60,8 @@ public final class NavigateDemo {
 
     /** Checks and copies. */
     public Options {
-      Objects.requireNonNull(map, "a map is needed: a .map file or a bundled name (office, hall)");
+      Objects.requireNonNull(
+          map, "a map is needed: a .map file or a bundled name (office, hall, columbia)");
       goals = List.copyOf(goals);
       if (goals.isEmpty()) {
         throw new IllegalArgumentException("give at least one goal (a goal name from the map)");

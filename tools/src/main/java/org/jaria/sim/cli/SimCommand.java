@@ -57,7 +57,8 @@ public final class SimCommand implements Callable<Integer> {
   @Option(
       names = {"-m", "--map", "-map"},
       paramLabel = "FILE",
-      description = "ArMap .map file, or a bundled map name (office, hall); default: office")
+      description =
+          "ArMap .map file, or a bundled map name (office, hall, columbia); default: office")
   String map;
 
   @Option(

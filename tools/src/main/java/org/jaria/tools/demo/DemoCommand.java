@@ -113,7 +113,7 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
           out.flush();
           return remoteFailed(
               GotoActionExample.run(
-                  remoteArgs(), robot -> watch(ticker, robot, null, l, out), noRobot::set));
+                  remoteArgs(), robot -> watch(ticker, robot, null, l, out), programErr()));
         }
       }
       try (EmbeddedSimulator sim = new EmbeddedSimulator(map, model, seed);

@@ -1,9 +1,11 @@
 package org.jaria.tools.demo;
 
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.io.PrintStream;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
-import java.util.concurrent.atomic.AtomicReference;
+import java.nio.charset.StandardCharsets;
 import org.jaria.clock.Clock;
 import org.jaria.connection.RobotAddress;
 import org.jaria.tools.cli.SecondsOption;
@@ -13,7 +15,8 @@ import picocli.CommandLine.Option;
 class DemoOptions {
   @Option(
       names = "--map",
-      description = "Bundled map (office, hall) or .map file (default: office; hall for chase).")
+      description =
+          "Bundled map (office, hall, columbia) or .map file (default: office; hall for chase).")
   String map = "office";
 
   @Option(
@@ -73,11 +76,19 @@ class DemoOptions {
     }
   }
 
+  /** How the thesis's programs begin the line that says no robot connected. */
+  private static final String NO_ROBOT = "Could not connect to the robot: ";
+
   /**
-   * Where a demo's program leaves its reason when no robot connects at {@code --remote}, for {@link
-   * #remoteFailed} to explain once (the program's own message would name ARIA's options).
+   * What a demo's program says went wrong with {@code --remote} (it names ARIA's options, which a
+   * demo does not take): kept here for {@link #remoteFailed} to explain once, in the demo's words.
    */
-  final AtomicReference<String> noRobot = new AtomicReference<>();
+  private final ByteArrayOutputStream programErrors = new ByteArrayOutputStream();
+
+  /** The stream to give a demo's program for what goes wrong. */
+  PrintStream programErr() {
+    return new PrintStream(programErrors, true, StandardCharsets.UTF_8);
+  }
 
   /**
    * What a demo's {@code --remote} run returns: {@code status}, unless it is 1 (no robot), which is
@@ -86,24 +97,28 @@ class DemoOptions {
    * @throws IOException saying what did not answer at the address and what to do
    */
   int remoteFailed(int status) throws IOException {
-    String why = noRobot.get();
-    if (status != 1 || why == null) {
+    if (status != 1) {
       return status;
     }
+    String said = programErrors.toString(StandardCharsets.UTF_8).strip();
+    String why =
+        said.startsWith(NO_ROBOT)
+            ? said.substring(NO_ROBOT.length()).lines().findFirst().orElse("")
+            : "";
     RobotAddress a = RobotAddress.parse(remote);
     if (a.isSerial()) {
       throw new IOException(
           "no robot answered on "
               + a
-              + " ("
-              + firstClause(why)
-              + "): check the cable, that the robot is on, and its speed (--remote "
-              + "DEVICE@BAUD)");
+              + (why.isEmpty() ? "" : " (" + firstClause(why) + ")")
+              + ": check the cable, that the robot is on, and its speed (--remote DEVICE@BAUD)");
     }
     throw new IOException(
         (why.startsWith("nothing accepts connections")
                 ? "nothing accepts connections at " + a
-                : a + " did not answer as a robot (" + firstClause(why) + ")")
+                : a
+                    + " did not answer as a robot"
+                    + (why.isEmpty() ? "" : " (" + firstClause(why) + ")"))
             + ": start a simulator there (./jaria sim --port "
             + a.port()
             + ") or give --remote the robot's HOST:PORT");

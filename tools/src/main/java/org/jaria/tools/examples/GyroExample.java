@@ -104,28 +104,15 @@ public final class GyroExample {
     }
   }
 
-  /**
-   * The program, with keys from {@code keyHandler} (a terminal, or keys fed by a caller).
-   *
-   * @return 0 normal, 1 no robot
-   */
-  public static int run(
-      String[] args,
-      ArKeyHandler keyHandler,
-      PrintStream out,
-      int printEvery,
-      Consumer<ArRobot> started) {
-    return run(args, keyHandler, out, printEvery, started, KEYS);
-  }
-
   /** What the program says of its keys before it connects. */
   public static final String KEYS =
       "This program lets you drive the robot with the keyboard: arrows drive, space stops,\n"
           + "1-0 and q-p turn, a/s/d/f turn to 0/90/180/270 degrees. ESC exits.";
 
   /**
-   * The program, saying {@code intro} instead of {@link #KEYS} before it connects (a caller that
-   * presses the keys itself says so).
+   * The program, with keys from {@code keyHandler} (a terminal, or keys fed by a caller), saying
+   * {@code intro} before it connects ({@link #KEYS}, or what a caller that presses the keys itself
+   * says).
    *
    * @return 0 normal, 1 no robot
    */
@@ -163,5 +150,15 @@ public final class GyroExample {
     }
     robot.close();
     return 0;
+  }
+
+  /** The program, saying what its keys do ({@link #KEYS}) before it connects. */
+  public static int run(
+      String[] args,
+      ArKeyHandler keyHandler,
+      PrintStream out,
+      int printEvery,
+      Consumer<ArRobot> started) {
+    return run(args, keyHandler, out, printEvery, started, KEYS);
   }
 }

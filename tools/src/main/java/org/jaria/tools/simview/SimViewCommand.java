@@ -46,7 +46,8 @@ public final class SimViewCommand implements Callable<Integer>, AppCommand {
   @Option(
       names = "--map",
       paramLabel = "FILE",
-      description = "ArMap .map file, or a bundled map name (office, hall); default: office")
+      description =
+          "ArMap .map file, or a bundled map name (office, hall, columbia); default: office")
   String map = "office";
 
   @Option(names = "--robot", paramLabel = "MODEL", description = "Robot model to add (repeatable).")
