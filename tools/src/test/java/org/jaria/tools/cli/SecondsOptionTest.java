@@ -58,7 +58,8 @@ class SecondsOptionTest {
   void zeroIsAcceptedAndSaidInTheHelp() {
     CommandLine cli = JariaCli.commandLine();
     CommandLine.ParseResult r = cli.parseArgs("sim", "--seconds", "0");
-    assertEquals(0.0, (Double) r.subcommand().matchedOptionValue("--seconds", -1.0));
+    Double seconds = r.subcommand().matchedOptionValue("--seconds", -1.0);
+    assertEquals(0.0, seconds);
     StringWriter help = new StringWriter();
     r.subcommand().commandSpec().commandLine().usage(new PrintWriter(help));
     assertTrue(help.toString().contains("0: run until"), help.toString());
