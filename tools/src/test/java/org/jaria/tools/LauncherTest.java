@@ -17,6 +17,7 @@ import java.util.Arrays;
 import java.util.Deque;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
 import java.util.concurrent.TimeUnit;
@@ -193,7 +194,7 @@ class LauncherTest {
   }
 
   /** Module folders that {@code -pl tools -am} builds: tools and its org.jaria dependencies. */
-  private static TreeSet<String> reactorOfTools(Path root) throws Exception {
+  private static Set<String> reactorOfTools(Path root) throws Exception {
     Map<String, String> folderOf = new TreeMap<>();
     for (Element module : elements(pom(root.resolve("pom.xml")), "module")) {
       String folder = module.getTextContent().strip();
