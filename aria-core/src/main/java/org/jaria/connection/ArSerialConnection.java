@@ -49,7 +49,12 @@ public final class ArSerialConnection implements ArDeviceConnection {
     try {
       p = SerialPort.getCommPort(portName);
     } catch (RuntimeException e) {
-      throw fail("no serial port called '" + portName + "': " + e.getMessage());
+      // jSerialComm's own message only repeats the name; say how to find the right one.
+      throw fail(
+          "could not open serial port "
+              + portName
+              + ": there is no such port (ls /dev/ttyUSB* /dev/ttyACM* /dev/ttyS* lists them;"
+              + " on Windows, the Device Manager)");
     }
     p.setComPortParameters(baud, 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
     p.setFlowControl(SerialPort.FLOW_CONTROL_DISABLED);

@@ -77,7 +77,15 @@ public final class ArTcpConnection implements ArDeviceConnection {
               + e.getMessage()
               + "): start the simulator (./jaria sim) or check -remoteHost/-remoteRobotTcpPort");
     } catch (IOException e) {
-      fail(s, "could not connect to " + host + ":" + port + ": " + e.getMessage());
+      fail(
+          s,
+          "could not connect to "
+              + host
+              + ":"
+              + port
+              + ": "
+              + e.getMessage()
+              + " (is the robot or simulator running there?)");
     }
   }
 

@@ -112,23 +112,19 @@ public record RobotAddress(String host, int port, String serialPort, int baud) {
   }
 
   /**
-   * Opens {@code c}; if that fails, the exception's message says what to try: for a serial port,
-   * power, the port name ({@code portOption}) and permission; for TCP, whether anything listens.
+   * Opens {@code c}; if that fails, the exception's message says what to try: the connection's own
+   * reason and advice (a serial port's existence and permission, whether anything listens at a TCP
+   * address) and, for a serial port, how to name another one ({@code portOption}).
    */
   public static void openExplained(ArDeviceConnection c, String portOption) throws IOException {
     try {
       c.open();
     } catch (IOException e) {
+      String why = e.getMessage() == null ? "could not open " + c.getPortName() : e.getMessage();
       throw new IOException(
-          "could not open "
-              + c.getPortName()
-              + ": "
-              + e.getMessage()
-              + (c instanceof ArSerialConnection
-                  ? " (is the robot plugged in and switched on? give its port with "
-                      + portOption
-                      + ", and check that you may use it: add yourself to the 'dialout' group)"
-                  : " (is the robot or simulator running there? start one with ./jaria sim)"),
+          c instanceof ArSerialConnection
+              ? why + "; is the robot plugged in and switched on? Another port: " + portOption
+              : why,
           e);
     }
   }

@@ -13,14 +13,30 @@ import org.jaria.protocol.DropReason;
  * one, sets the field of view and increment, enters installation mode to set the units and
  * reflector bits, then starts continuous output; each scan telegram becomes one scan.
  *
- * <p>Every set-up step is sent up to three times, so a telegram damaged on the line costs a retry,
- * not the connection. If the laser does not answer at 9600 baud it is tried at the chosen rate (it
- * still runs there when a program restarts without power-cycling it).
+ * <p>Every set-up step but one is sent up to three times, so a telegram damaged on the line costs a
+ * retry, not the connection. The exception is the configuration (0x77): the laser stores it in its
+ * EEPROM before it answers, which takes a slow unit many seconds, so it is sent once and its answer
+ * awaited as long as ARIA does (14 s): a retry would be a second EEPROM write. If the laser does
+ * not answer at 9600 baud it is tried at the chosen rate (it still runs there when a program
+ * restarts without power-cycling it). Disconnecting stops the output and, as ARIA does, puts the
+ * laser back to 9600 baud, so that the next program finds it at its power-up rate.
  */
 public class ArLMS2xx extends ArLaser {
 
   /** Set-up steps sent before giving up. */
   private static final int TRIES = 3;
+
+  /**
+   * How long the configuration's answer may take, ms: ARIA's wait. The laser writes the block to
+   * its EEPROM first; a slow unit needs more than ten seconds.
+   */
+  static final long CONFIGURE_WAIT_MS = 14_000;
+
+  /**
+   * How long a disconnect waits for each answer (to "stop" and to "9600 baud"), ms: ARIA pauses
+   * this long after the stop without waiting for an answer.
+   */
+  private static final long DISCONNECT_WAIT_MS = 1000;
 
   private final LmsSettings settings;
   private final LmsReceiver receiver;
@@ -89,7 +105,7 @@ public class ArLMS2xx extends ArLaser {
             LmsCommands.MODE_ANSWER,
             "installation mode");
     checkMode(install, "installation mode");
-    ask(c, settings.configuration(), LmsCommands.CONFIGURE_ANSWER, "units and reflector bits");
+    configure(c);
     LmsTelegram start =
         ask(
             c,
@@ -121,6 +137,47 @@ public class ArLMS2xx extends ArLaser {
                 + " baud: is the laser powered (it takes about 30 s to start) and on this port?");
       }
     }
+  }
+
+  /**
+   * Sends the configuration block once and waits up to {@link #CONFIGURE_WAIT_MS} for its answer.
+   * Only a refusal (the laser left installation mode) sends it again, after installation mode: the
+   * laser did not store that one.
+   */
+  private void configure(ArDeviceConnection c) throws IOException, InterruptedException {
+    byte[] bytes = settings.configuration().encode();
+    for (int i = 0; i < TRIES; i++) {
+      c.write(bytes, 0, bytes.length);
+      LmsTelegram got =
+          inbox.await(
+              c,
+              Math.max(answerTimeoutMs, CONFIGURE_WAIT_MS),
+              t ->
+                  t.command() == LmsCommands.CONFIGURE_ANSWER
+                      || t.command() == LmsCommands.NOT_ACKNOWLEDGED,
+              t -> false);
+      if (got != null && got.command() == LmsCommands.CONFIGURE_ANSWER) {
+        return;
+      }
+      if (got == null) {
+        throw new IOException(
+            "no answer to the units and reflector bits request in "
+                + Math.max(answerTimeoutMs, CONFIGURE_WAIT_MS)
+                + " ms (the laser stores them before it answers): check the laser's power and"
+                + " cable");
+      }
+      checkMode(
+          ask(
+              c,
+              LmsSettings.modeChange(
+                  LmsCommands.MODE_INSTALL,
+                  LmsCommands.PASSWORD.getBytes(StandardCharsets.US_ASCII)),
+              LmsCommands.MODE_ANSWER,
+              "installation mode"),
+          "installation mode");
+    }
+    throw new IOException(
+        "the laser refused the units and reflector bits " + TRIES + " times: power-cycle it");
   }
 
   private static void checkMode(LmsTelegram t, String what) throws IOException {
@@ -213,9 +270,31 @@ public class ArLMS2xx extends ArLaser {
     publish(angles, ranges);
   }
 
+  /**
+   * Stops the continuous output and, on a serial port at another rate, puts the laser back to its
+   * power-up 9600 baud as ARIA does (the next program, ARIA's included, then finds it there at
+   * once). Each step waits for the laser's answer, at most {@link #DISCONNECT_WAIT_MS}, where ARIA
+   * pauses for that long.
+   */
   @Override
   protected void stopMeasuring(ArDeviceConnection c) throws IOException {
-    byte[] stop = LmsSettings.modeChange(LmsCommands.MODE_STOP).encode();
-    c.write(stop, 0, stop.length);
+    try {
+      byte[] stop = LmsSettings.modeChange(LmsCommands.MODE_STOP).encode();
+      c.write(stop, 0, stop.length);
+      awaitQuietly(c, LmsCommands.MODE_ANSWER); // scans still on the way are dropped meanwhile
+      if (c instanceof ArSerialConnection serial && serial.getBaud() != LmsSettings.POWER_UP_BAUD) {
+        byte[] slow = LmsSettings.baudChange(LmsSettings.POWER_UP_BAUD).encode();
+        c.write(slow, 0, slow.length);
+        awaitQuietly(c, LmsCommands.MODE_ANSWER);
+        serial.setBaud(LmsSettings.POWER_UP_BAUD);
+      }
+    } catch (InterruptedException e) {
+      Thread.currentThread().interrupt();
+    }
+  }
+
+  private void awaitQuietly(ArDeviceConnection c, int answer)
+      throws IOException, InterruptedException {
+    inbox.await(c, DISCONNECT_WAIT_MS, t -> t.command() == answer, t -> false);
   }
 }

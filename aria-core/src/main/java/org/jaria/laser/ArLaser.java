@@ -234,6 +234,9 @@ public abstract class ArLaser extends ArRangeDevice implements LaserScanSource, 
       if (connected) {
         connected = false;
         failure = getName() + " on " + c.getPortName() + " lost: " + e.getMessage();
+        synchronized (this) {
+          notifyAll(); // whoever waits for scans learns it now, not at the end of its timeout
+        }
         log.warn("{}", failure);
         c.close();
         disconnectOnErrorCallbacks.forEach(Runnable::run);

@@ -144,16 +144,24 @@ public final class ArMap {
   }
 
   /**
-   * A map as a user names it on a command line: a bundled map's name ({@link #BUNDLED_MAPS}) or a
-   * {@code .map} file.
+   * A map as a user names it on a command line: a {@code .map} file, or a bundled map's name
+   * ({@link #BUNDLED_MAPS}, with or without {@code .map}; a file that exists wins). See {@link
+   * MapNames}.
    *
    * @throws MapFormatException if the file is not a well-formed map
-   * @throws IOException if the file cannot be read
+   * @throws IOException if there is no such file or bundled map, or it cannot be read: the message
+   *     says which, what to do, and which maps are bundled
    */
   public static ArMap load(String fileOrBundledName) throws MapFormatException, IOException {
-    return BUNDLED_MAPS.contains(fileOrBundledName)
-        ? loadBundled(fileOrBundledName)
-        : readFile(Path.of(fileOrBundledName));
+    String bundled = MapNames.bundledName(fileOrBundledName);
+    if (bundled != null) {
+      return loadBundled(bundled);
+    }
+    Optional<String> problem = MapNames.problem(fileOrBundledName);
+    if (problem.isPresent()) {
+      throw new IOException(problem.get());
+    }
+    return readFile(Path.of(fileOrBundledName));
   }
 
   /**

@@ -15,7 +15,54 @@ final class MapFormat {
       "'Cairn: <Type> <x> <y> <th> \"<description>\" <icon> \"<name>\" [<x1> <y1> <x2> <y2>]"
           + " [\"<description>\"]'";
 
+  /** The longest piece of a file quoted in a message. */
+  private static final int EXCERPT_CHARS = 60;
+
   private MapFormat() {}
+
+  /**
+   * A piece of a file fit to quote in a message shown on a terminal: at most {@value
+   * #EXCERPT_CHARS} characters, and {@link #printable} (a binary file's bytes would otherwise reach
+   * the terminal raw, and some of them are commands to it).
+   */
+  static String excerpt(String s) {
+    String cut = s.length() <= EXCERPT_CHARS ? s : s.substring(0, EXCERPT_CHARS - 3) + "...";
+    return printable(cut);
+  }
+
+  /**
+   * {@code s} with every character that is not printable text (control characters such as ESC, the
+   * C1 controls a terminal also obeys, unassigned and private-use code points, the replacement
+   * character of undecodable bytes) written as an escape: backslash, x and two hex digits, or
+   * backslash, u and four.
+   */
+  static String printable(String s) {
+    StringBuilder sb = null;
+    for (int i = 0; i < s.length(); i++) {
+      char c = s.charAt(i);
+      int type = Character.getType(c);
+      boolean bad =
+          Character.isISOControl(c)
+              || c == '\uFFFD'
+              || type == Character.FORMAT
+              || type == Character.UNASSIGNED
+              || type == Character.PRIVATE_USE
+              || type == Character.SURROGATE;
+      if (bad && sb == null) {
+        sb = new StringBuilder(s.length() + 16).append(s, 0, i);
+      }
+      if (sb != null) {
+        if (!bad) {
+          sb.append(c);
+        } else if (c < 0x100) {
+          sb.append(String.format(Locale.ROOT, "\\x%02X", (int) c));
+        } else {
+          sb.append(String.format(Locale.ROOT, "\\u%04X", (int) c));
+        }
+      }
+    }
+    return sb == null ? s : sb.toString();
+  }
 
   /**
    * Splits {@code text} into words separated by blanks; a double quote starts or ends a quoted
@@ -105,7 +152,7 @@ final class MapFormat {
       // reported below
     }
     throw new MapFormatException(
-        source, line, what + " '" + token + "' is not a number; expected " + form);
+        source, line, what + " '" + excerpt(token) + "' is not a number; expected " + form);
   }
 
   /** Digits, one optional sign, one optional point and exponent: no "NaN", "1f", "0x10". */

@@ -2,7 +2,8 @@ package org.jaria.map;
 
 /**
  * A map file ({@code .map}) could not be understood. The message always starts with {@code
- * source:line:} so an editor can jump to the problem, then says what is wrong and how to fix it.
+ * source:line:} so an editor can jump to the problem, then says what is wrong and how to fix it;
+ * what it quotes of the file is printable text, never raw bytes.
  */
 public class MapFormatException extends Exception {
 
@@ -19,7 +20,7 @@ public class MapFormatException extends Exception {
    * @param what what is wrong and what to do about it
    */
   public MapFormatException(String sourceName, int line, String what) {
-    super(sourceName + ":" + line + ": " + what);
+    super(MapFormat.printable(sourceName + ":" + line + ": " + what));
     this.sourceName = sourceName;
     this.line = line;
   }

@@ -161,6 +161,13 @@ final class MapReader {
     map.lineSeparator = lineHadBreak && lineHadCr ? "\r\n" : "\n";
     String first = lineText();
     String type = first.strip().split("[ \t]", 2)[0];
+    if (!type.startsWith("2D-Map") && !MapFormat.printable(first).equals(first)) {
+      throw error(
+          "not an ArMap file: it is not text (a map file is text whose first line is '2D-Map');"
+              + " it starts with '"
+              + abbreviate(first)
+              + "'");
+    }
     if (!type.startsWith("2D-Map")) {
       throw error(
           "not an ArMap file: the first line must be '2D-Map' (or 2D-Map-Ex ... 2D-Map-Ex4), not '"
@@ -308,7 +315,7 @@ final class MapReader {
               "Resolution must be 1.."
                   + MAX_RESOLUTION
                   + " mm (the size of a grid cell; 100 is usual), not '"
-                  + rest.strip()
+                  + MapFormat.excerpt(rest.strip())
                   + "'");
         }
         map.resolution = (int) Math.round(r);
@@ -317,13 +324,14 @@ final class MapReader {
       case "NumPoints", "NumLines" -> {
         double n = numbers(key, rest, 1)[0];
         if (n < 0 || n != Math.rint(n)) {
-          throw error(key + " must be a whole number >= 0, not '" + rest.strip() + "'");
+          throw error(
+              key + " must be a whole number >= 0, not '" + MapFormat.excerpt(rest.strip()) + "'");
         }
         if (n > MAX_COUNT) {
           throw error(
               key
                   + " "
-                  + rest.strip()
+                  + MapFormat.excerpt(rest.strip())
                   + " is more than any map holds (at most "
                   + MAX_COUNT
                   + "): the header is corrupt");
@@ -341,7 +349,7 @@ final class MapReader {
       case "PointsAreSorted", "LinesAreSorted" -> {
         String v = rest.strip();
         if (!v.equalsIgnoreCase("true") && !v.equalsIgnoreCase("false")) {
-          throw error(key + " must be true or false, not '" + v + "'");
+          throw error(key + " must be true or false, not '" + MapFormat.excerpt(v) + "'");
         }
       }
       default -> {
@@ -581,6 +589,6 @@ final class MapReader {
   }
 
   private static String abbreviate(String s) {
-    return s.length() <= 60 ? s : s.substring(0, 57) + "...";
+    return MapFormat.excerpt(s);
   }
 }

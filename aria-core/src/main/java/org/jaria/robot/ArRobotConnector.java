@@ -33,6 +33,10 @@ public class ArRobotConnector {
   private int remotePort = ArTcpConnection.DEFAULT_PORT;
   private boolean parsed;
   private String lastOpenFailure = "no connection could be opened";
+  private boolean lookedForSimulator;
+
+  /** The serial port tried when no option names one (tests give one that is known to fail). */
+  String fallbackSerialPort = defaultSerialPort();
 
   /** A connector for {@code robot} that takes its options from {@code parser}. */
   public ArRobotConnector(ArArgumentParser parser, ArRobot robot) {
@@ -98,6 +102,7 @@ public class ArRobotConnector {
    * answers; else the serial port), sets it on the robot, and connects with the handshake.
    *
    * @return whether the robot is connected; if not, {@link ArRobot#getConnectFailure()} says why
+   *     (once: the connector leaves it to the program to say)
    */
   public boolean connectRobot() {
     if (robot == null) {
@@ -106,13 +111,20 @@ public class ArRobotConnector {
     if (!parsed && !parseArgs()) {
       return false;
     }
-    ArDeviceConnection conn = chooseConnection();
+    ArDeviceConnection conn = choose();
     if (conn == null) {
       robot.link.openFailed(lastOpenFailure);
       return false;
     }
     robot.setDeviceConnection(conn);
-    return robot.blockingConnect();
+    if (robot.blockingConnect()) {
+      return true;
+    }
+    if (lookedForSimulator) {
+      // Say where the simulator was looked for, not only what the serial port answered.
+      robot.link.explainFailure(noSimulator(fallbackSerialPort) + robot.link.failure());
+    }
+    return false;
   }
 
   /** Connects {@code r} (ARIA's {@code ArSimpleConnector::connectRobot(ArRobot*)}). */
@@ -123,6 +135,15 @@ public class ArRobotConnector {
 
   /** The connection {@link #connectRobot()} would use, opened; null (logged) if none opens. */
   public ArDeviceConnection chooseConnection() {
+    ArDeviceConnection c = choose();
+    if (c == null) {
+      log.warn("{}", lastOpenFailure);
+    }
+    return c;
+  }
+
+  private ArDeviceConnection choose() {
+    lookedForSimulator = false;
     if (remoteHost != null) {
       return open(new ArTcpConnection(remoteHost, remotePort, clock()));
     }
@@ -134,10 +155,24 @@ public class ArRobotConnector {
         return sim;
       } catch (IOException e) {
         log.info("no simulator on localhost:{}; trying the serial port", remotePort);
+        lookedForSimulator = true;
       }
     }
-    String port = robotPort != null ? robotPort : defaultSerialPort();
-    return open(new ArSerialConnection(port, robotBaud, clock()));
+    String port = robotPort != null ? robotPort : fallbackSerialPort;
+    ArDeviceConnection serial = open(new ArSerialConnection(port, robotBaud, clock()));
+    if (serial == null && lookedForSimulator) {
+      lastOpenFailure = noSimulator(port) + lastOpenFailure;
+    }
+    return serial;
+  }
+
+  /** The first half of a failure when no option was given: where the simulator was looked for. */
+  private String noSimulator(String serialPort) {
+    return "no simulator on localhost:"
+        + remotePort
+        + " (start one with ./jaria sim, or give its host with -rh), so tried the serial port "
+        + serialPort
+        + ": ";
   }
 
   private org.jaria.clock.Clock clock() {
@@ -150,7 +185,7 @@ public class ArRobotConnector {
       return c;
     } catch (IOException e) {
       lastOpenFailure = e.getMessage();
-      log.error("{}", lastOpenFailure);
+      log.debug("{}", lastOpenFailure);
       return null;
     }
   }

@@ -168,11 +168,19 @@ final class RobotLink {
 
   // ---------------------------------------------------------------- connecting
 
-  /** Records that no connection could even be opened (the connector's case) and says so. */
+  /**
+   * Records that no connection could even be opened (the connector's case). Like a failed handshake
+   * it is not logged: the program asks {@code getConnectFailure()} and says it once.
+   */
   void openFailed(String reason) {
     failure = reason;
-    log.warn("cannot connect: {}", reason);
+    log.debug("cannot connect: {}", reason);
     failedConnectCBs.invokeAll();
+  }
+
+  /** Replaces the failure's explanation with a fuller one (the connector adds what it tried). */
+  void explainFailure(String why) {
+    failure = why;
   }
 
   boolean asyncConnect() {

@@ -135,8 +135,69 @@ class ArRobotConnectorTest {
     assertFalse(connector.connectRobot());
     assertTrue(failedCb.get(), "the failed-connect callbacks ran");
     String why = robot.getConnectFailure();
-    assertTrue(why.contains("could not open serial " + port), why);
+    assertTrue(why.contains("could not open serial port " + port), why);
     assertTrue(why.contains("-rp"), "says how to pick another port: " + why);
+    assertTrue(count(why, "-rp") == 1 && count(why, "ls /dev") == 1, "advice once: " + why);
+  }
+
+  /**
+   * With no option at all the connector looks for a simulator on localhost first: when there is
+   * none and the serial port fails too, the reason says both, and how to start a simulator.
+   */
+  @Test
+  void withNoOptionsTheFailureSaysItLookedForASimulatorFirst() throws Exception {
+    int simPort = unusedPort();
+    ArRobot robot = new ArRobot("nowhere");
+    ArRobotConnector connector =
+        new ArRobotConnector(
+            new ArArgumentParser(new String[] {"-rrtp", String.valueOf(simPort)}), robot);
+    String tty = dir.resolve("no-such-tty").toString();
+    connector.fallbackSerialPort = tty;
+    assertFalse(connector.connectRobot());
+    String why = robot.getConnectFailure();
+    assertTrue(why.startsWith("no simulator on localhost:" + simPort), why);
+    assertTrue(why.contains("./jaria sim"), why);
+    assertTrue(why.contains("could not open serial port " + tty), why);
+  }
+
+  /** The same when the serial port opens but nothing answers on it (a PC's own /dev/ttyS0). */
+  @Test
+  void withNoOptionsASilentSerialPortStillSaysNoSimulatorFirst() throws Exception {
+    try (SocatPty pty = new SocatPty(dir)) {
+      int simPort = unusedPort();
+      ArRobot robot = new ArRobot("silent");
+      ArRobotConnector connector =
+          new ArRobotConnector(
+              new ArArgumentParser(new String[] {"-rrtp", String.valueOf(simPort)}), robot);
+      connector.fallbackSerialPort = pty.a.toString();
+      assertFalse(connector.connectRobot());
+      String why = robot.getConnectFailure();
+      assertTrue(why.startsWith("no simulator on localhost:" + simPort), why);
+      assertTrue(why.contains("./jaria sim"), why);
+      assertTrue(why.contains("tried the serial port " + pty.a + ": no robot is responding"), why);
+      robot.close();
+    }
+  }
+
+  @Test
+  void nothingListeningAtTheRemoteHostIsSaidWithOneHint() throws Exception {
+    ArRobot robot = new ArRobot("nowhere");
+    int port = unusedPort();
+    ArRobotConnector connector =
+        new ArRobotConnector(
+            new ArArgumentParser(new String[] {"-rh", "127.0.0.1", "-rrtp", "" + port}), robot);
+    assertFalse(connector.connectRobot());
+    String why = robot.getConnectFailure();
+    assertTrue(why.startsWith("nothing accepts connections at 127.0.0.1:" + port), why);
+    assertEquals(1, count(why, "jaria sim"), "the hint once: " + why);
+  }
+
+  private static int count(String s, String part) {
+    int n = 0;
+    for (int i = s.indexOf(part); i >= 0; i = s.indexOf(part, i + 1)) {
+      n++;
+    }
+    return n;
   }
 
   @Test

@@ -46,8 +46,8 @@ import org.slf4j.LoggerFactory;
  *       dropped as idle.
  * </ul>
  *
- * <p>The server listens on {@link ServerSettings#bindHost()}: every interface by default, as ACTS
- * does; {@code 127.0.0.1} keeps it to this machine.
+ * <p>The server listens on {@link ServerSettings#bindHost()}: this computer only by default ({@code
+ * 127.0.0.1}); {@code 0.0.0.0} opens it to every interface, as ACTS does.
  */
 public final class ActsServer implements AutoCloseable {
 

@@ -5,8 +5,9 @@ import org.jaria.acts.ActsProtocol;
 /**
  * How an {@link ActsServer} listens and paces itself.
  *
- * @param bindHost address to listen on; empty for every interface (ACTS's behaviour), {@code
- *     "127.0.0.1"} for this machine only
+ * @param bindHost address to listen on: {@code "127.0.0.1"} (the default) for this computer only,
+ *     as JAria's guiServer without a login (the ACTS protocol has none: whoever reaches the port
+ *     reads the blobs); {@code "0.0.0.0"} or empty for every interface, as ACTS itself
  * @param port TCP port, 0 for any free port (see {@link ActsServer#getPort()})
  * @param maxFps most frames processed per second (ACTS's {@code -R}); 0 for no limit
  * @param maxClients most clients connected at once; more are refused (closed at once)
@@ -28,11 +29,12 @@ public record ServerSettings(
   public static final int DEFAULT_IDLE_TIMEOUT_MILLIS = 30_000;
 
   /**
-   * Every interface, port 5001, 30 frames/s, 16 clients, quit requests end only the client, idle
-   * clients dropped after 30 s.
+   * This computer only (127.0.0.1), port 5001, 30 frames/s, 16 clients, quit requests end only the
+   * client, idle clients dropped after 30 s.
    */
   public static final ServerSettings DEFAULT =
-      new ServerSettings("", ActsProtocol.DEFAULT_PORT, 30, 16, false, DEFAULT_IDLE_TIMEOUT_MILLIS);
+      new ServerSettings(
+          "127.0.0.1", ActsProtocol.DEFAULT_PORT, 30, 16, false, DEFAULT_IDLE_TIMEOUT_MILLIS);
 
   /** Settings with the default idle timeout. */
   public ServerSettings(

@@ -5,6 +5,7 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import org.jaria.connection.ArDeviceConnection;
@@ -45,6 +46,9 @@ public final class Lms200Emulator extends EmulatedDevice {
   private long nextScanAt;
   private final AtomicLong scansSent = new AtomicLong();
   private boolean zeroResolutionNoted;
+  private final AtomicLong configurationsStored = new AtomicLong();
+  private final List<Integer> modeChanges = new CopyOnWriteArrayList<>();
+  private volatile long configureDelayMs;
 
   /**
    * An LMS-200 on {@code connection}.
@@ -97,6 +101,7 @@ public final class Lms200Emulator extends EmulatedDevice {
 
   private void changeMode(LmsTelegram t) throws IOException, InterruptedException {
     int mode = t.dataLength() > 0 ? t.u8(0) : -1;
+    modeChanges.add(mode); // before the answer: a driver that has the answer finds it here
     switch (mode) {
       case 0x40, 0x41, 0x42 -> {
         reply(LmsCommands.MODE_ANSWER, (byte) 0);
@@ -162,6 +167,11 @@ public final class Lms200Emulator extends EmulatedDevice {
       reply(LmsCommands.NOT_ACKNOWLEDGED);
       return;
     }
+    if (configureDelayMs > 0) {
+      // Storing the block in the EEPROM: the laser reads nothing meanwhile.
+      connection.clock().sleepNanos(TimeUnit.MILLISECONDS.toNanos(configureDelayMs));
+    }
+    configurationsStored.incrementAndGet();
     reflectorBits = LmsSettings.reflectorBitsOfMode(t.u8(5));
     units = LmsSettings.unitsOfByte(t.u8(6));
     byte[] d = new byte[1 + t.dataLength()];
@@ -230,5 +240,26 @@ public final class Lms200Emulator extends EmulatedDevice {
   /** Scans sent so far (read from the device's thread, or after it ended). */
   public long getScansSent() {
     return scansSent.get();
+  }
+
+  /**
+   * Makes the laser take {@code ms} (on the connection's clock) to store a configuration block
+   * before it answers, as a real LMS-200 writing its EEPROM does (a slow unit takes over 10 s).
+   */
+  public void setConfigureDelayMs(long ms) {
+    configureDelayMs = ms;
+  }
+
+  /** Configuration blocks stored so far: each one a write of the laser's EEPROM. */
+  public long getConfigurationsStored() {
+    return configurationsStored.get();
+  }
+
+  /**
+   * The mode bytes of every mode change received, in order (0x42 is 9600 baud, 0x25 stop, ...),
+   * each recorded before its answer is sent.
+   */
+  public List<Integer> getModeChanges() {
+    return List.copyOf(modeChanges);
   }
 }

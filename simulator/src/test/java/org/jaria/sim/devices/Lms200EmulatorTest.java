@@ -6,10 +6,16 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
 import org.jaria.clock.Clock;
+import org.jaria.clock.VirtualClock;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.connection.ArTcpConnection;
+import org.jaria.connection.PipeConnection;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
 import org.jaria.laser.ArLMS2xx;
@@ -198,6 +204,142 @@ class Lms200EmulatorTest {
       assertEquals(180, (body[2] & 0xFF) | (body[3] & 0xFF) << 8, "180°");
       assertEquals(100, (body[4] & 0xFF) | (body[5] & 0xFF) << 8, "at the 1° it had");
     }
+  }
+
+  /**
+   * A slow LMS-200 takes 12 s to store its configuration (EEPROM) before answering: the driver
+   * sends the block once and waits, as ARIA does (14 s), instead of giving up after three tries of
+   * 2 s, each of which would have been another EEPROM write. Virtual time: no real waiting.
+   */
+  @Test
+  void aSlowConfigurationIsAwaitedAsAriaDoesAndStoredOnce() throws Exception {
+    VirtualClock clock = new VirtualClock();
+    PipeConnection.Pair pipe = PipeConnection.pair(clock, "lms");
+    try (Lms200Emulator lms =
+            new Lms200Emulator(pipe.b(), LaserSensor.of(robot), DeviceFaults.NONE, 200);
+        ArLMS2xx laser = new ArLMS2xx()) {
+      lms.setConfigureDelayMs(12_000);
+      lms.start();
+      laser.setDeviceConnection(pipe.a());
+      assertTrue(onVirtualTime(clock, laser::blockingConnect), laser.getConnectFailure());
+      assertEquals(1, lms.getConfigurationsStored(), "one EEPROM write");
+      assertTrue(clock.nanoTime() >= TimeUnit.SECONDS.toNanos(12), clock.toString());
+      onVirtualTime(clock, () -> laser.waitForScans(2, PATIENCE_MS));
+      assertEquals(181, laser.getLaserScan().size());
+    }
+  }
+
+  /** One that takes longer than ARIA waits fails with a message, still after one write. */
+  @Test
+  void aConfigurationNeverAnsweredFailsAfterOneWrite() throws Exception {
+    VirtualClock clock = new VirtualClock();
+    PipeConnection.Pair pipe = PipeConnection.pair(clock, "lms");
+    try (Lms200Emulator lms =
+            new Lms200Emulator(pipe.b(), LaserSensor.of(robot), DeviceFaults.NONE, 200);
+        ArLMS2xx laser = new ArLMS2xx()) {
+      lms.setConfigureDelayMs(60_000);
+      lms.start();
+      laser.setDeviceConnection(pipe.a());
+      assertFalse(onVirtualTime(clock, laser::blockingConnect));
+      String why = laser.getConnectFailure();
+      assertTrue(why.contains("no answer to the units and reflector bits request"), why);
+      assertTrue(clock.nanoTime() < TimeUnit.SECONDS.toNanos(30), "gave up at 14 s: " + clock);
+      // Only the laser, still storing, waits on the clock now: let it finish.
+      onVirtualTime(clock, 1, () -> lms.join(PATIENCE_MS));
+      assertEquals(1, lms.getConfigurationsStored(), "one EEPROM write");
+    }
+  }
+
+  /**
+   * Disconnecting stops the output and puts the laser back to its power-up 9600 baud, as ARIA does:
+   * otherwise the next program (ARIA's with -laserAutoBaud among them) finds it at 38400.
+   */
+  @Test
+  void disconnectingPutsTheLaserBackTo9600Baud() throws Exception {
+    try (SocatPty pty = new SocatPty(dir);
+        ArSerialConnection device = new ArSerialConnection(pty.b.toString(), 9600, Clock.system());
+        Lms200Emulator lms =
+            Lms200Emulator.start(device, LaserSensor.of(robot), DeviceFaults.NONE, 20);
+        ArLMS2xx laser = new ArLMS2xx()) {
+      ArSerialConnection port = new ArSerialConnection(pty.a.toString(), 9600, Clock.system());
+      laser.setDeviceConnection(port);
+      assertTrue(laser.blockingConnect(), laser.getConnectFailure());
+      assertTrue(laser.waitForScans(2, PATIENCE_MS));
+      assertEquals(38400, port.getBaud());
+      laser.disconnect();
+      List<Integer> modes = lms.getModeChanges();
+      // 0x40 to 38400 when connecting, ..., then stop (0x25) and 9600 baud (0x42) when leaving.
+      assertEquals(0x40, modes.get(0), modes::toString);
+      assertEquals(List.of(0x25, 0x42), modes.subList(modes.size() - 2, modes.size()));
+      assertEquals(9600, port.getBaud(), "the port followed the laser back");
+    }
+  }
+
+  /**
+   * A laser lost while a program waits for scans wakes the program at once: the wait ends when the
+   * reader knows, not when the program's own timeout (here an hour) runs out.
+   */
+  @Test
+  void aLostLaserWakesWhoeverWaitsForScans() throws Exception {
+    try (DeviceTcpServer server =
+            new DeviceTcpServer(
+                0,
+                (c, i) ->
+                    new Lms200Emulator(
+                        c,
+                        LaserSensor.of(robot),
+                        DeviceFaults.NONE.withUnplugAfterScans(100),
+                        20));
+        ArLMS2xx laser = new ArLMS2xx()) {
+      laser.setDeviceConnection(new ArTcpConnection("127.0.0.1", server.getPort()));
+      assertTrue(laser.blockingConnect(), laser.getConnectFailure());
+      // Started while scans still arrive (the unplug comes after 100 of them, 2 s away).
+      CompletableFuture<Boolean> waiting =
+          CompletableFuture.supplyAsync(
+              () -> {
+                try {
+                  return laser.waitForScans(1_000_000, TimeUnit.HOURS.toMillis(1));
+                } catch (InterruptedException e) {
+                  Thread.currentThread().interrupt();
+                  return true;
+                }
+              });
+      assertFalse(waiting.get(PATIENCE_MS, TimeUnit.MILLISECONDS), "woken by the loss");
+      assertFalse(laser.isConnected());
+      assertTrue(laser.getConnectFailure().contains("lost"), laser.getConnectFailure());
+    }
+  }
+
+  /**
+   * Runs {@code task} on a thread of its own while this one moves the virtual clock on, 20 ms at a
+   * time, whenever two threads (the driver's and the emulator's) are waiting on it.
+   */
+  private static <T> T onVirtualTime(VirtualClock clock, Callable<T> task) throws Exception {
+    return onVirtualTime(clock, 2, task);
+  }
+
+  /** As above, moving the clock on whenever {@code waiters} threads wait on it. */
+  private static <T> T onVirtualTime(VirtualClock clock, int waiters, Callable<T> task)
+      throws Exception {
+    CompletableFuture<T> result = new CompletableFuture<>();
+    Thread t =
+        new Thread(
+            () -> {
+              try {
+                result.complete(task.call());
+              } catch (Exception | AssertionError e) {
+                result.completeExceptionally(e);
+              }
+              clock.wakeWatchers();
+            },
+            "virtual-time-task");
+    t.start();
+    while (!result.isDone()) {
+      clock.awaitWaiters(waiters, Duration.ofMillis(PATIENCE_MS), result::isDone);
+      clock.advanceMillis(20);
+    }
+    t.join();
+    return result.get();
   }
 
   @Test

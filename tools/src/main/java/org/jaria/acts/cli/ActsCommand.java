@@ -147,9 +147,11 @@ public final class ActsCommand implements Callable<Integer> {
 
   @Option(
       names = "--bind",
-      paramLabel = "HOST",
-      description = "Listen on this address only (default: every interface).")
-  String bindHost = "";
+      paramLabel = "ADDRESS",
+      description =
+          "Listen on this address (default 127.0.0.1: this computer only, as the guiServer"
+              + " without a login; 0.0.0.0: every interface, as ACTS).")
+  String bindHost = ServerSettings.DEFAULT.bindHost();
 
   @Option(
       names = "--allow-quit",

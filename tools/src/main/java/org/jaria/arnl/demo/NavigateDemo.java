@@ -60,7 +60,8 @@ public final class NavigateDemo {
 
     /** Checks and copies. */
     public Options {
-      Objects.requireNonNull(map, "a map is needed: a .map file or a bundled name (office, hall)");
+      Objects.requireNonNull(
+          map, "a map is needed: a .map file or a bundled name (office, hall, columbia)");
       goals = List.copyOf(goals);
       if (goals.isEmpty()) {
         throw new IllegalArgumentException("give at least one goal (a goal name from the map)");
@@ -152,7 +153,7 @@ public final class NavigateDemo {
     try {
       return ArMap.load(mapOrName);
     } catch (IOException e) {
-      throw new UncheckedIOException("cannot read the map " + mapOrName + ": " + e.getMessage(), e);
+      throw new UncheckedIOException(e.getMessage(), e); // says what is wrong and what to do
     } catch (MapFormatException e) {
       throw new IllegalArgumentException("not a valid map: " + e.getMessage(), e);
     }

@@ -7,12 +7,14 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Optional;
 import java.util.Set;
 import java.util.SplittableRandom;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.jaria.geom.ArPose;
+import org.jaria.map.MapNames;
 import org.jaria.sim.OdometryError;
 import org.jaria.sim.RobotFactory;
 import org.jaria.sim.RobotOptions;
@@ -23,6 +25,7 @@ import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
 import org.jaria.sim.StartPlace;
 import org.jaria.sim.robot.SimProfile;
+import org.jaria.tools.cli.SecondsOption;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -70,7 +73,8 @@ public final class SimCommand implements Callable<Integer> {
   @Option(
       names = {"-m", "--map", "-map"},
       paramLabel = "FILE",
-      description = "ArMap .map file, or a bundled map name (office, hall); default: office")
+      description =
+          "ArMap .map file, or a bundled map name (office, hall, columbia); default: office")
   String map;
 
   @Option(
@@ -109,7 +113,8 @@ public final class SimCommand implements Callable<Integer> {
   @Option(
       names = "--seconds",
       paramLabel = "S",
-      description = "Stop after S seconds of simulated time (default: run until Ctrl-C)")
+      converter = SecondsOption.Fractional.class,
+      description = "Stop after S seconds of simulated time (default and 0: run until Ctrl-C)")
   Double seconds;
 
   @Option(names = "--seed", description = "Random seed (default ${DEFAULT-VALUE})")
@@ -257,19 +262,15 @@ public final class SimCommand implements Callable<Integer> {
       return SimWorld.empty(options);
     }
     String m = map == null ? "office" : map;
-    Path file = Path.of(m);
-    if (Files.exists(file)) {
-      return SimWorld.load(file, options);
-    } else if (!m.contains("/") && !m.contains("\\") && !m.endsWith(".map")) {
-      try {
-        return SimWorld.bundled(m, options);
-      } catch (RuntimeException e) {
-        throw new ParameterException(
-            spec.commandLine(),
-            "no map file '" + m + "' and no bundled map of that name: " + e.getMessage());
-      }
+    String bundled = MapNames.bundledName(m);
+    if (bundled != null) {
+      return SimWorld.bundled(bundled, options);
     }
-    throw new ParameterException(spec.commandLine(), "map file " + m + " does not exist");
+    Optional<String> problem = MapNames.problem(m);
+    if (problem.isPresent()) {
+      throw new IOException(problem.get());
+    }
+    return SimWorld.load(Path.of(m), options);
   }
 
   /**
@@ -362,9 +363,8 @@ public final class SimCommand implements Callable<Integer> {
       throw new ParameterException(
           spec.commandLine(), "--speedup must be positive, was " + speedup);
     }
-    if (seconds != null && !(seconds > 0)) {
-      throw new ParameterException(
-          spec.commandLine(), "--seconds must be positive, was " + seconds);
+    if (seconds != null && seconds == 0) {
+      seconds = null; // 0 is no limit, as in every command with --seconds
     }
     SimProfile profile = profile();
     OdometryError err;
@@ -489,13 +489,19 @@ public final class SimCommand implements Callable<Integer> {
               world.close();
             },
             "jaria-sim-shutdown");
+    world.setExitHandler(
+        code -> {
+          exitCode.set(code);
+          stop.countDown();
+        });
     try {
-      world.setExitHandler(
-          code -> {
-            exitCode.set(code);
-            stop.countDown();
-          });
       world.listen();
+    } catch (IOException | RuntimeException e) {
+      // Nothing ran: the error (a port in use) is all there is to say, no summary before it.
+      world.close();
+      throw e;
+    }
+    try {
       printListening(world, out);
       out.printf(
           "profile %s; map %s, %s; %s%n",

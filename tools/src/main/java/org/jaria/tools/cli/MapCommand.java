@@ -11,6 +11,7 @@ import java.util.concurrent.Callable;
 import org.jaria.map.ArMap;
 import org.jaria.map.ArMapObject;
 import org.jaria.map.MapFormatException;
+import org.jaria.map.MapNames;
 import org.jaria.sim.MapBudget;
 import org.jaria.sim.MapSupport;
 import org.jaria.sim.world.MapCost;
@@ -45,20 +46,16 @@ final class MapCommand implements Runnable {
 
     @Spec CommandSpec spec;
 
-    @Parameters(paramLabel = "MAP", description = "A .map file, or a bundled map: office, hall.")
+    @Parameters(
+        paramLabel = "MAP",
+        description = "A .map file, or a bundled map: office, hall, columbia.")
     String map;
 
     @Override
-    public Integer call() throws IOException {
+    public Integer call() throws IOException, MapFormatException {
       PrintWriter out = spec.commandLine().getOut();
-      ArMap m;
-      boolean bundled = ArMap.BUNDLED_MAPS.contains(map);
-      try {
-        m = ArMap.load(map);
-      } catch (MapFormatException e) {
-        spec.commandLine().getErr().println(e.getMessage());
-        return 1;
-      }
+      boolean bundled = MapNames.bundledName(map) != null;
+      ArMap m = ArMap.load(map); // what goes wrong is said once, by the command line
       MapCost cost = MapSupport.cost(m);
       String over = MapBudget.DEFAULT.overBy(cost);
       if (over != null) {

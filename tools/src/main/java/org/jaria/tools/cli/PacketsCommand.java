@@ -6,12 +6,14 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import org.jaria.protocol.ArRobotPacketReceiver;
 import org.jaria.protocol.DropCounters;
 import org.jaria.protocol.DropReason;
 import org.jaria.protocol.Hex;
 import org.jaria.protocol.PacketFormatter;
+import org.jaria.util.UserFiles;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -104,6 +106,12 @@ final class PacketsCommand implements Callable<Integer> {
   private byte[] readInput() throws IOException {
     if (file == null) {
       return Hex.parse(String.join(" ", hex));
+    }
+    if (!"-".equals(file)) {
+      Optional<String> problem = UserFiles.problem(file);
+      if (problem.isPresent()) {
+        throw new IOException(problem.get());
+      }
     }
     byte[] raw = "-".equals(file) ? System.in.readAllBytes() : Files.readAllBytes(Path.of(file));
     return binary ? raw : Hex.parse(new String(raw, StandardCharsets.ISO_8859_1));

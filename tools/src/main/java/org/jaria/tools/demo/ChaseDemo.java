@@ -88,9 +88,19 @@ final class ChaseDemo extends DemoOptions implements Callable<Integer> {
             args,
             new SimCameraPtz(scene.camera),
             keyHandler,
-            robot -> watch(ticker, robot, scene, out));
+            robot -> watch(ticker, robot, scene, out),
+            running(keys));
       }
     }
+  }
+
+  /** What the demo says once the program runs: channel 1 is trained, and whether keys are read. */
+  static String running(boolean keys) {
+    return "Running: the robot drives towards the red ball that ACTS sees on channel 1 (trained on"
+        + " it already)."
+        + (keys
+            ? " Press 'a' to switch to keyboard driving (the arrows drive), 'a' again to chase."
+            : " The keyboard is not read; with --keys, 'a' switches to keyboard driving.");
   }
 
   private static void watch(DemoTicker ticker, ArRobot robot, ChaseScene scene, PrintWriter out) {

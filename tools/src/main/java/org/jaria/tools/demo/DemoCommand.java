@@ -112,7 +112,8 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
           out.println(stopsAfter(seconds));
           out.flush();
           return remoteFailed(
-              GotoActionExample.run(remoteArgs(), robot -> watch(ticker, robot, null, l, out)));
+              GotoActionExample.run(
+                  remoteArgs(), robot -> watch(ticker, robot, null, l, out), programErr()));
         }
       }
       try (EmbeddedSimulator sim = new EmbeddedSimulator(map, model, seed);

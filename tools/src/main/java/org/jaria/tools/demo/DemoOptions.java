@@ -1,17 +1,22 @@
 package org.jaria.tools.demo;
 
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.io.PrintStream;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
+import java.nio.charset.StandardCharsets;
 import org.jaria.clock.Clock;
 import org.jaria.connection.RobotAddress;
+import org.jaria.tools.cli.SecondsOption;
 import picocli.CommandLine.Option;
 
 /** Options every demo shares. */
 class DemoOptions {
   @Option(
       names = "--map",
-      description = "Bundled map (office, hall) or .map file (default: office; hall for chase).")
+      description =
+          "Bundled map (office, hall, columbia) or .map file (default: office; hall for chase).")
   String map = "office";
 
   @Option(
@@ -22,8 +27,8 @@ class DemoOptions {
 
   @Option(
       names = "--seconds",
-      description =
-          "Stop after this many seconds (default: ${DEFAULT-VALUE}; 0 runs until Ctrl-C).",
+      description = "Stop after this many seconds (default: ${DEFAULT-VALUE}; 0: until Ctrl-C).",
+      converter = SecondsOption.Whole.class,
       defaultValue = "30")
   int seconds = 30;
 
@@ -71,22 +76,57 @@ class DemoOptions {
     }
   }
 
+  /** How the thesis's programs begin the line that says no robot connected. */
+  private static final String NO_ROBOT = "Could not connect to the robot: ";
+
   /**
-   * What a demo's {@code --remote} run returns: {@code status}, unless it is 1 (no robot) for a TCP
-   * address, which is then explained in the user's own option names.
+   * What a demo's program says went wrong with {@code --remote} (it names ARIA's options, which a
+   * demo does not take): kept here for {@link #remoteFailed} to explain once, in the demo's words.
+   */
+  private final ByteArrayOutputStream programErrors = new ByteArrayOutputStream();
+
+  /** The stream to give a demo's program for what goes wrong. */
+  PrintStream programErr() {
+    return new PrintStream(programErrors, true, StandardCharsets.UTF_8);
+  }
+
+  /**
+   * What a demo's {@code --remote} run returns: {@code status}, unless it is 1 (no robot), which is
+   * then explained in the user's own option names.
    *
-   * @throws IOException saying that nothing answered at the address and what to do
+   * @throws IOException saying what did not answer at the address and what to do
    */
   int remoteFailed(int status) throws IOException {
-    RobotAddress a = RobotAddress.parse(remote);
-    if (status != 1 || a.isSerial()) {
+    if (status != 1) {
       return status;
     }
+    String said = programErrors.toString(StandardCharsets.UTF_8).strip();
+    String why =
+        said.startsWith(NO_ROBOT)
+            ? said.substring(NO_ROBOT.length()).lines().findFirst().orElse("")
+            : "";
+    RobotAddress a = RobotAddress.parse(remote);
+    if (a.isSerial()) {
+      throw new IOException(
+          "no robot answered on "
+              + a
+              + (why.isEmpty() ? "" : " (" + firstClause(why) + ")")
+              + ": check the cable, that the robot is on, and its speed (--remote DEVICE@BAUD)");
+    }
     throw new IOException(
-        "nothing accepts connections at "
-            + a
-            + ", or it did not answer as a robot: start a simulator there (./jaria sim --port "
+        (why.startsWith("nothing accepts connections")
+                ? "nothing accepts connections at " + a
+                : a
+                    + " did not answer as a robot"
+                    + (why.isEmpty() ? "" : " (" + firstClause(why) + ")"))
+            + ": start a simulator there (./jaria sim --port "
             + a.port()
             + ") or give --remote the robot's HOST:PORT");
+  }
+
+  /** A reason without the library's advice, which names ARIA's options rather than --remote. */
+  private static String firstClause(String why) {
+    int colon = why.indexOf(": ");
+    return colon < 0 ? why : why.substring(0, colon);
   }
 }

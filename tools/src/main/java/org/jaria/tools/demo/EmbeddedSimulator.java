@@ -44,7 +44,7 @@ final class EmbeddedSimulator implements AutoCloseable {
     try {
       return ArMap.load(map);
     } catch (IOException e) {
-      throw new UncheckedIOException("cannot read the map " + map + ": " + e.getMessage(), e);
+      throw new UncheckedIOException(e.getMessage(), e); // says what is wrong and what to do
     } catch (MapFormatException e) {
       throw new IllegalArgumentException(e.getMessage(), e);
     }

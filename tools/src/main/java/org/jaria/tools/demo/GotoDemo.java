@@ -41,7 +41,7 @@ final class GotoDemo extends DemoOptions implements Callable<Integer> {
     List<ArPose> goals = poses.isEmpty() ? GotoExample.SQUARE : parse(poses);
     if (remote != null) {
       checkRemote();
-      return remoteFailed(GotoExample.run(remoteArgs(), goals, out, robot -> {}));
+      return remoteFailed(GotoExample.run(remoteArgs(), goals, out, robot -> {}, programErr()));
     }
     try (EmbeddedSimulator sim = new EmbeddedSimulator(map, model, seed)) {
       out.printf(Locale.ROOT, "Simulator: %s map, a %s on tcp port %d.%n", map, model, sim.port());

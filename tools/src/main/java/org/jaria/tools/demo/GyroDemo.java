@@ -28,6 +28,12 @@ final class GyroDemo extends DemoOptions implements Callable<Integer> {
   @Option(names = "--keys", description = "Read keys from this terminal instead of a script.")
   boolean keys;
 
+  /** What the demo says without --keys, where it presses the keys itself. */
+  static final String SCRIPTED =
+      "The demo presses the keys itself: s, d, f, a (turn to 90, 180, 270 and 0 degrees) at 4, 8,"
+          + " 12 and 16 s.\nWith --keys you press them: arrows drive, space stops, 1-0 and q-p"
+          + " turn, a/s/d/f turn to 0/90/180/270 degrees.";
+
   @Override
   public Integer call() throws IOException {
     PrintWriter writer = spec.commandLine().getOut();
@@ -39,7 +45,12 @@ final class GyroDemo extends DemoOptions implements Callable<Integer> {
         DemoTicker ticker = new DemoTicker("demo-keys", seconds)) {
       out.printf(Locale.ROOT, "Simulator: a %s with a gyro on tcp port %d.%n", model, sim.port());
       return GyroExample.run(
-          sim.connectArgs(), keyHandler, out, 10, r -> script(ticker, r, keyHandler));
+          sim.connectArgs(),
+          keyHandler,
+          out,
+          10,
+          r -> script(ticker, r, keyHandler),
+          keys ? GyroExample.KEYS : SCRIPTED);
     }
   }
 

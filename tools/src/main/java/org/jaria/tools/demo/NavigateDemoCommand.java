@@ -23,7 +23,8 @@ final class NavigateDemoCommand implements Callable<Integer> {
 
   @Option(
       names = "--map",
-      description = "Bundled map (office, hall) or .map file (default: ${DEFAULT-VALUE}).",
+      description =
+          "Bundled map (office, hall, columbia) or .map file (default: ${DEFAULT-VALUE}).",
       defaultValue = "office")
   String map = "office";
 

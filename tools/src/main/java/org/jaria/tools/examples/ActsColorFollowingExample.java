@@ -46,15 +46,25 @@ public final class ActsColorFollowingExample {
     }
   }
 
+  /** What the program says once it runs, as ARIA's example does. */
+  public static final String RUNNING =
+      "Running. Train ACTS to detect a color to drive towards an object, or use 'a' key to"
+          + " switch to keyboard driving mode.";
+
   /**
    * The program. {@code camera} is the pan/tilt/zoom camera to use, or null for a VC-C4 on the
    * robot's AUX serial port; {@code keyHandler} gives the keys ('a' switches keyboard driving on
-   * and off, the arrows drive, Escape ends).
+   * and off, the arrows drive, Escape ends); {@code running} is what it says once it runs (ARIA's
+   * {@link #RUNNING}, or what a caller that trained ACTS already, or reads no keys, says).
    *
    * @return 0 normal, 1 no robot, 2 no ACTS
    */
   public static int run(
-      String[] args, ArPTZ camera, ArKeyHandler keyHandler, Consumer<ArRobot> started) {
+      String[] args,
+      ArPTZ camera,
+      ArKeyHandler keyHandler,
+      Consumer<ArRobot> started,
+      String running) {
     // The robot
     ArRobot robot = new ArRobot();
     // Sonar, for basic obstacle avoidance
@@ -122,9 +132,7 @@ public final class ActsColorFollowingExample {
     // Start with keyboard driving off: 'a' turns it on
     keydriveAction.deactivate();
 
-    System.out.println(
-        "Running. Train ACTS to detect a color to drive towards an object, or use 'a' key to"
-            + " switch to keyboard driving mode.");
+    System.out.println(running);
     robot.runAsync(true);
     started.accept(robot);
     try {
@@ -135,5 +143,11 @@ public final class ActsColorFollowingExample {
     acts.close();
     robot.close();
     return 0;
+  }
+
+  /** The program, saying what ARIA's says once it runs ({@link #RUNNING}). */
+  public static int run(
+      String[] args, ArPTZ camera, ArKeyHandler keyHandler, Consumer<ArRobot> started) {
+    return run(args, camera, keyHandler, started, RUNNING);
   }
 }

@@ -1,5 +1,6 @@
 package org.jaria.tools.examples;
 
+import java.io.PrintStream;
 import java.util.function.Consumer;
 import org.jaria.action.ArActionAvoidFront;
 import org.jaria.action.ArActionBumpers;
@@ -31,25 +32,27 @@ public final class GotoActionExample {
 
   /**
    * The program itself. {@code started} is given the robot once it runs, so a caller (the demo
-   * command, a test) can watch it or stop it with {@code robot.stopRunning()}.
+   * command, a test) can watch it or stop it with {@code robot.stopRunning()}; what goes wrong (no
+   * robot, an unknown option) is said on {@code err}, where a caller with options of its own
+   * collects it to explain it in its own words.
    *
    * @return the exit status: 0 normal, 1 bad arguments or no robot
    */
-  public static int run(String[] args, Consumer<ArRobot> started) {
+  public static int run(String[] args, Consumer<ArRobot> started, PrintStream err) {
     ArArgumentParser argParser = new ArArgumentParser(args);
     argParser.loadDefaultArguments();
     ArRobot robot = new ArRobot();
     ArRobotConnector robotConnector = new ArRobotConnector(argParser, robot);
 
     if (!robotConnector.connectRobot()) {
-      System.err.println("Could not connect to the robot: " + robot.getConnectFailure());
+      err.println("Could not connect to the robot: " + robot.getConnectFailure());
       if (argParser.checkHelpAndWarnUnparsed()) {
-        System.err.println(ArRobotConnector.optionsHelp());
+        err.println(ArRobotConnector.optionsHelp());
       }
       return 1;
     }
     if (!argParser.checkHelpAndWarnUnparsed()) {
-      System.err.println(ArRobotConnector.optionsHelp());
+      err.println(ArRobotConnector.optionsHelp());
       robot.close();
       return 1;
     }
@@ -94,5 +97,10 @@ public final class GotoActionExample {
     }
     robot.close();
     return 0;
+  }
+
+  /** The program, saying what goes wrong on standard error. */
+  public static int run(String[] args, Consumer<ArRobot> started) {
+    return run(args, started, System.err);
   }
 }

@@ -32,17 +32,21 @@ public final class GotoExample {
   }
 
   /**
-   * The program.
+   * The program; what goes wrong (no robot, an unknown option) is said on {@code err}.
    *
    * @return 0 when every goal was reached, 1 no robot, 2 stopped before the end
    */
   public static int run(
-      String[] args, List<ArPose> goals, PrintStream out, Consumer<ArRobot> started) {
+      String[] args,
+      List<ArPose> goals,
+      PrintStream out,
+      Consumer<ArRobot> started,
+      PrintStream err) {
     ArArgumentParser parser = new ArArgumentParser(args);
     ArRobot robot = new ArRobot();
     ArRobotConnector connector = new ArRobotConnector(parser, robot);
     if (!connector.connectRobot() || !parser.checkHelpAndWarnUnparsed()) {
-      out.println("Could not connect to the robot: " + robot.getConnectFailure());
+      err.println("Could not connect to the robot: " + robot.getConnectFailure());
       return 1;
     }
     robot.addRangeDevice(new ArSonarDevice());
@@ -79,5 +83,11 @@ public final class GotoExample {
     }
     robot.close();
     return index[0] == goals.size() ? 0 : 2;
+  }
+
+  /** The program, saying what goes wrong on {@code out} too. */
+  public static int run(
+      String[] args, List<ArPose> goals, PrintStream out, Consumer<ArRobot> started) {
+    return run(args, goals, out, started, out);
   }
 }

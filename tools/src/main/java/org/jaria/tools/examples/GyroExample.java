@@ -104,8 +104,15 @@ public final class GyroExample {
     }
   }
 
+  /** What the program says of its keys before it connects. */
+  public static final String KEYS =
+      "This program lets you drive the robot with the keyboard: arrows drive, space stops,\n"
+          + "1-0 and q-p turn, a/s/d/f turn to 0/90/180/270 degrees. ESC exits.";
+
   /**
-   * The program, with keys from {@code keyHandler} (a terminal, or keys fed by a caller).
+   * The program, with keys from {@code keyHandler} (a terminal, or keys fed by a caller), saying
+   * {@code intro} before it connects ({@link #KEYS}, or what a caller that presses the keys itself
+   * says).
    *
    * @return 0 normal, 1 no robot
    */
@@ -114,7 +121,8 @@ public final class GyroExample {
       ArKeyHandler keyHandler,
       PrintStream out,
       int printEvery,
-      Consumer<ArRobot> started) {
+      Consumer<ArRobot> started,
+      String intro) {
     ArRobot robot = new ArRobot();
     ArActionKeydrive keydriveAct = new ArActionKeydrive(keyHandler);
     new GyroTask(robot, keyHandler, out, printEvery);
@@ -124,9 +132,7 @@ public final class GyroExample {
       connector.logOptions();
       return 1;
     }
-    out.println(
-        "This program lets you drive the robot with the keyboard: arrows drive, space stops,\n"
-            + "1-0 and q-p turn, a/s/d/f turn to 0/90/180/270 degrees. ESC exits.");
+    out.println(intro);
     robot.addRangeDevice(sonar);
     if (!connector.connectRobot(robot)) {
       out.println("Could not connect to robot... exiting: " + robot.getConnectFailure());
@@ -144,5 +150,15 @@ public final class GyroExample {
     }
     robot.close();
     return 0;
+  }
+
+  /** The program, saying what its keys do ({@link #KEYS}) before it connects. */
+  public static int run(
+      String[] args,
+      ArKeyHandler keyHandler,
+      PrintStream out,
+      int printEvery,
+      Consumer<ArRobot> started) {
+    return run(args, keyHandler, out, printEvery, started, KEYS);
   }
 }

@@ -47,7 +47,9 @@ final class ActsServerControl implements AutoCloseable {
     ActsServer s =
         new ActsServer(
             pipeline,
-            ServerSettings.DEFAULT.withAddress("", port).withMaxFps(maxFps),
+            ServerSettings.DEFAULT
+                .withAddress(ServerSettings.DEFAULT.bindHost(), port)
+                .withMaxFps(maxFps),
             Clock.system());
     try {
       s.start();

@@ -59,15 +59,23 @@ public final class FxImages {
    * place, so a failure never leaves half a file.
    */
   public static void writePng(Image image, Path file) throws IOException {
-    byte[] png = ImageFiles.encode(toRgb(image), "png");
+    write(ImageFiles.encode(toRgb(image), "png"), file);
+  }
+
+  /**
+   * Writes {@code bytes} to {@code file} through a file next to it, moved into place when complete.
+   * Both get the permissions every new file of the user gets (their umask: usually readable by
+   * all), not a temporary file's owner-only ones: a screenshot is made to be shown.
+   */
+  static void write(byte[] bytes, Path file) throws IOException {
     Path abs = file.toAbsolutePath();
     Path dir = abs.getParent();
     if (dir != null) {
       Files.createDirectories(dir);
     }
-    Path tmp = Files.createTempFile(dir, ".jaria-", ".png.tmp");
+    Path tmp = abs.resolveSibling("." + abs.getFileName() + ".writing");
     try {
-      Files.write(tmp, png);
+      Files.write(tmp, bytes);
       Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
     } finally {
       Files.deleteIfExists(tmp);

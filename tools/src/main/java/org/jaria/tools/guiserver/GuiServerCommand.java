@@ -34,6 +34,7 @@ import org.jaria.net.sim.SimulatedGuiServer;
 import org.jaria.net.video.JpegVideo;
 import org.jaria.robot.ArRobot;
 import org.jaria.tools.cli.Passwords;
+import org.jaria.tools.cli.SecondsOption;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -49,9 +50,10 @@ import picocli.CommandLine.Spec;
     name = "guiserver",
     mixinStandardHelpOptions = true,
     sortOptions = false,
+    // One paragraph per element: picocli wraps each to the terminal's width by itself.
     description = {
-      "The thesis's guiServer (§6.1): sonar localization, path planning and a network server",
-      "for monitors (./jaria monitor). Without --remote it drives an embedded simulator."
+      "The thesis's guiServer (§6.1): sonar localization, path planning and a network server"
+          + " for monitors (./jaria monitor). Without --remote it drives an embedded simulator."
     })
 public final class GuiServerCommand implements Callable<Integer> {
 
@@ -60,7 +62,8 @@ public final class GuiServerCommand implements Callable<Integer> {
   @Option(
       names = "--map",
       paramLabel = "FILE",
-      description = "The map: a .map file or a bundled map (office, hall). Default: office.")
+      description =
+          "The map: a .map file or a bundled map (office, hall, columbia). Default: office.")
   String map = "office";
 
   @Option(
@@ -122,8 +125,8 @@ public final class GuiServerCommand implements Callable<Integer> {
       names = "--forward-video",
       paramLabel = "HOST[:PORT]",
       description =
-          "Forward the video of this ArNetworking video server (port 7070 if absent: ACTS's SAV"
-              + " server, ./jaria acts) to monitors, as ARIA's serverDemo does; it replaces the"
+          "Forward the video of this ArNetworking video server (port 7070 if absent: the SAV"
+              + " server of jaria acts) to monitors, as ARIA's serverDemo does; it replaces the"
               + " camera.")
   String forwardVideo;
 
@@ -185,7 +188,8 @@ public final class GuiServerCommand implements Callable<Integer> {
 
   @Option(
       names = "--seconds",
-      description = "Stop after this many seconds (default ${DEFAULT-VALUE}: run until Ctrl-C).")
+      converter = SecondsOption.Whole.class,
+      description = "Stop after this many seconds (default and 0: run until Ctrl-C).")
   int seconds;
 
   @Override

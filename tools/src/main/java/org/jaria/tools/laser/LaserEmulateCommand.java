@@ -30,8 +30,8 @@ import picocli.CommandLine.Spec;
 @Command(
     name = "emulate",
     description = {
-      "Present a simulated robot's laser as a real LMS-200 or URG on a serial pseudo-terminal",
-      "or a TCP port, to try 'jaria laser' or an ARIA program without hardware.",
+      "Present a simulated robot's laser as a real LMS-200 or URG on a serial pseudo-terminal"
+          + " or a TCP port, to try 'jaria laser' or an ARIA program without hardware.",
       "Example (two terminals):",
       "  socat pty,raw,echo=0,link=/tmp/laserA pty,raw,echo=0,link=/tmp/laserB",
       "  jaria laser emulate --type lms2xx --device /tmp/laserB",

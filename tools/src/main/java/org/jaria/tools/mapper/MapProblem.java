@@ -11,9 +11,9 @@ public record MapProblem(Severity severity, String message, long itemId) {
 
   /** How bad a problem is. */
   public enum Severity {
-    /** The map will not work as intended (a goal no robot can reach). */
+    /** The map will not work (the home, where the robot starts, is where no robot can stand). */
     ERROR,
-    /** Probably a mistake (a goal without a name). */
+    /** One place will not work, or probably a mistake (a goal no robot can reach, no name). */
     WARNING
   }
 

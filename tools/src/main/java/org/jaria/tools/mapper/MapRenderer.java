@@ -1,22 +1,23 @@
 package org.jaria.tools.mapper;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.BitSet;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import java.util.Set;
-import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.ToDoubleFunction;
 import javafx.geometry.VPos;
 import javafx.scene.canvas.GraphicsContext;
 import javafx.scene.paint.Color;
 import javafx.scene.text.Font;
-import javafx.scene.text.Text;
 import javafx.scene.text.TextAlignment;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.map.ArMapObject;
+import org.jaria.tools.fx.LabelPlacer;
 import org.jaria.tools.fx.PointLayer;
+import org.jaria.tools.fx.TextWidths;
 import org.jaria.tools.fx.Viewport;
 
 /**
@@ -41,6 +42,7 @@ public final class MapRenderer {
   static final Color GRID_AXIS = Color.web("#c9ced8");
 
   private static final int POINT_ARGB = 0xFF303030;
+  private static final Color LABEL_BACKING = Color.rgb(255, 255, 255, 0.8);
   private static final int SELECTED_ARGB = 0xFF1E78FF;
 
   private final Font font = Font.font("System", 11);
@@ -48,18 +50,7 @@ public final class MapRenderer {
   /** A label's height in pixels (the font's size and a little room). */
   private static final double LABEL_HEIGHT = 14;
 
-  /** Label widths by text: measuring text is slow next to drawing it. */
-  private final Map<String, Double> widths = new ConcurrentHashMap<>();
-
-  private double textWidth(String text) {
-    return widths.computeIfAbsent(
-        text,
-        t -> {
-          Text measure = new Text(t);
-          measure.setFont(font);
-          return Math.ceil(measure.getLayoutBounds().getWidth()) + 2;
-        });
-  }
+  private final TextWidths widths = new TextWidths(font);
 
   private boolean scaleBar = true;
 
@@ -94,33 +85,32 @@ public final class MapRenderer {
     }
     // Markers first, then the names where they do not overlap (selected objects' names first,
     // so those always show).
-    List<LabelPlacer.Label> selectedLabels = new ArrayList<>();
-    List<LabelPlacer.Label> otherLabels = new ArrayList<>();
+    Set<String> selectedNames = new HashSet<>();
     for (MapObjectEntry e : content.objects()) {
       boolean selected = selection != null && selection.contains(e.id());
       drawObject(gc, vp, e.object(), selected, false, 0, 0);
-      ArMapObject o = e.object();
-      if (opt.labels() && !o.name().isEmpty() && !o.hasFromTo()) {
-        double x = vp.toScreenX(o.pose().x());
-        double y = vp.toScreenY(o.pose().y());
-        if (x >= -60 && y >= -60 && x <= vp.width() + 60 && y <= vp.height() + 60) {
-          (selected ? selectedLabels : otherLabels)
-              .add(new LabelPlacer.Label(x, y, textWidth(o.name()), LABEL_HEIGHT, o.name()));
-        }
-      }
-    }
-    selectedLabels.addAll(otherLabels);
-    Set<String> selectedNames = new HashSet<>();
-    for (MapObjectEntry e : content.objects()) {
-      if (selection != null && selection.contains(e.id())) {
+      if (selected) {
         selectedNames.add(e.object().name());
       }
     }
     gc.setFont(font);
     gc.setTextAlign(TextAlignment.LEFT);
     gc.setTextBaseline(VPos.CENTER);
-    for (LabelPlacer.Placed p : LabelPlacer.place(selectedLabels)) {
+    List<LabelPlacer.Placed> labels =
+        opt.labels()
+            ? placeLabels(
+                content.objects(),
+                opt.lines() ? content.lines() : List.of(),
+                selection,
+                vp,
+                widths::of,
+                LABEL_HEIGHT)
+            : List.of();
+    for (LabelPlacer.Placed p : labels) {
       String name = p.label().text();
+      // A pale backing: names stay legible over dense laser points and walls.
+      gc.setFill(LABEL_BACKING);
+      gc.fillRect(p.left() - 1, p.top(), p.label().width() + 1, p.label().height());
       gc.setFill(Color.WHITE);
       gc.fillText(name, p.left() + 0.8, p.centerY() + 0.8);
       gc.setFill(selectedNames.contains(name) ? SELECTION : Color.web("#202020"));
@@ -129,6 +119,63 @@ public final class MapRenderer {
     if (scaleBar) {
       drawScaleBar(gc, vp);
     }
+  }
+
+  /**
+   * Where the names of the objects go on the picture {@code vp} shows: the selected objects' first,
+   * none over a marker (named or not) or another name, none past the picture's edge, across a wall
+   * only where no side is clear of them.
+   */
+  static List<LabelPlacer.Placed> placeLabels(
+      List<MapObjectEntry> objects,
+      List<MapLine> walls,
+      MapSelection selection,
+      Viewport vp,
+      ToDoubleFunction<String> textWidth,
+      double labelHeight) {
+    List<LabelPlacer.Label> selectedLabels = new ArrayList<>();
+    List<LabelPlacer.Label> otherLabels = new ArrayList<>();
+    double[] unnamed = new double[2 * objects.size()];
+    int n = 0;
+    for (MapObjectEntry e : objects) {
+      ArMapObject o = e.object();
+      if (o.hasFromTo()) {
+        continue;
+      }
+      double x = vp.toScreenX(o.pose().x());
+      double y = vp.toScreenY(o.pose().y());
+      if (x < -60 || y < -60 || x > vp.width() + 60 || y > vp.height() + 60) {
+        continue;
+      }
+      if (o.name().isEmpty()) {
+        unnamed[n++] = x;
+        unnamed[n++] = y;
+      } else {
+        boolean selected = selection != null && selection.contains(e.id());
+        (selected ? selectedLabels : otherLabels)
+            .add(
+                new LabelPlacer.Label(
+                    x, y, textWidth.applyAsDouble(o.name()), labelHeight, o.name()));
+      }
+    }
+    selectedLabels.addAll(otherLabels);
+    double[] lines = new double[4 * walls.size()];
+    int k = 0;
+    for (MapLine l : walls) {
+      ArLineSegment s = l.segment();
+      if (vp.intersects(s.x1(), s.y1(), s.x2(), s.y2())) {
+        lines[k++] = vp.toScreenX(s.x1());
+        lines[k++] = vp.toScreenY(s.y1());
+        lines[k++] = vp.toScreenX(s.x2());
+        lines[k++] = vp.toScreenY(s.y2());
+      }
+    }
+    return LabelPlacer.place(
+        selectedLabels,
+        Arrays.copyOf(unnamed, n),
+        Arrays.copyOf(lines, k),
+        vp.width(),
+        vp.height());
   }
 
   // Grid lines are 1-pixel filled rectangles, not stroked lines: axis-aligned fills are an order

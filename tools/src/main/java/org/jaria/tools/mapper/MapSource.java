@@ -1,9 +1,8 @@
 package org.jaria.tools.mapper;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Locale;
-import org.jaria.map.ArMap;
+import java.util.Optional;
+import org.jaria.map.MapNames;
 
 /**
  * What {@code jaria mapper NAME} opens: a {@code .map} file, or one of JAria's bundled maps by name
@@ -22,29 +21,20 @@ public record MapSource(Path file, String bundledName) {
 
   /**
    * Resolves what a user typed: an existing file wins; else a bundled map's name (with or without
-   * {@code .map}).
+   * {@code .map}), as {@link MapNames} decides for every command.
    *
-   * @throws IllegalArgumentException if it is neither, with a message that says what exists
+   * @throws IllegalArgumentException if it is neither (or a folder, or unreadable), with a message
+   *     that says what is wrong, what to do and which maps are bundled
    */
   public static MapSource resolve(String typed) {
-    Path p = Path.of(typed);
-    if (Files.exists(p)) {
-      return file(p);
+    String bundled = MapNames.bundledName(typed);
+    if (bundled != null) {
+      return new MapSource(null, bundled);
     }
-    String name =
-        typed.toLowerCase(Locale.ROOT).endsWith(".map")
-            ? typed.substring(0, typed.length() - 4)
-            : typed;
-    if (ArMap.BUNDLED_MAPS.contains(name)) {
-      return new MapSource(null, name);
+    Optional<String> problem = MapNames.problem(typed);
+    if (problem.isPresent()) {
+      throw new IllegalArgumentException(problem.get());
     }
-    throw new IllegalArgumentException(
-        "there is no map file "
-            + p.toAbsolutePath().normalize()
-            + " and no bundled map named '"
-            + name
-            + "' (bundled: "
-            + String.join(", ", ArMap.BUNDLED_MAPS)
-            + ")");
+    return file(Path.of(typed));
   }
 }

@@ -85,11 +85,16 @@ public final class MapValidator {
       }
       double x = o.pose().x();
       double y = o.pose().y();
+      // Where the robot starts must be free, or the map does not work at all: an error. A goal
+      // or dock no robot can reach is one place the robot refuses to go (ARIA's own columbia map
+      // has such goals on purpose, to show path planning refusing): a warning.
+      Severity unreachable = kind == ObjectKind.HOME ? Severity.ERROR : Severity.WARNING;
+      List<MapProblem> list = unreachable == Severity.ERROR ? errors : warnings;
       for (MapObjectEntry a : areas) {
         if (a.object().contains(x, y)) {
-          errors.add(
+          list.add(
               new MapProblem(
-                  Severity.ERROR,
+                  unreachable,
                   describe(o)
                       + " is inside a forbidden area: a robot may not go there; move it out or"
                       + " shrink the area",
@@ -99,9 +104,9 @@ public final class MapValidator {
       }
       double wall = nearestObstacle(content, points, x, y);
       if (wall < robotRadius) {
-        errors.add(
+        list.add(
             new MapProblem(
-                Severity.ERROR,
+                unreachable,
                 describe(o)
                     + " is "
                     + fmt(wall)

@@ -22,11 +22,12 @@ import picocli.CommandLine.Spec;
     name = "monitor",
     mixinStandardHelpOptions = true,
     sortOptions = false,
+    // One paragraph per element: picocli wraps each to the terminal's width by itself.
     description = {
       "The robot monitor (MobileEyes) for a guiServer (./jaria demo guiserver).",
-      "Map, robot, sonar, particles and path; click to send the robot somewhere, drag it to",
-      "relocalize, drive it with the arrow keys; status, information strings, configuration,",
-      "camera and custom commands."
+      "Map, robot, sonar, particles and path; click to send the robot somewhere, drag it to"
+          + " relocalize, drive it with the arrow keys; status, information strings,"
+          + " configuration, camera and custom commands."
     })
 public final class MonitorCommand implements Callable<Integer>, AppCommand {
 

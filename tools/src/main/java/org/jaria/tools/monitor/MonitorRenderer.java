@@ -1,8 +1,14 @@
 package org.jaria.tools.monitor;
 
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.function.ToDoubleFunction;
+import javafx.geometry.VPos;
 import javafx.scene.canvas.GraphicsContext;
 import javafx.scene.paint.Color;
 import javafx.scene.text.Font;
+import javafx.scene.text.TextAlignment;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMapObject;
@@ -11,6 +17,8 @@ import org.jaria.net.data.Points;
 import org.jaria.net.data.RangeReadings;
 import org.jaria.net.data.RobotUpdate;
 import org.jaria.net.data.SensorReadings;
+import org.jaria.tools.fx.LabelPlacer;
+import org.jaria.tools.fx.TextWidths;
 import org.jaria.tools.fx.Viewport;
 
 /**
@@ -39,6 +47,10 @@ final class MonitorRenderer {
   record Layers(boolean sonar, boolean particles, boolean path) {}
 
   private final Font font = Font.font("System", 11);
+  private final TextWidths widths = new TextWidths(font);
+
+  /** A name's height in pixels (the font's size and a little room). */
+  private static final double LABEL_HEIGHT = 14;
 
   void render(GraphicsContext gc, Viewport vp, MonitorState s, Layers layers, ArPose ghost) {
     gc.setFill(BACKGROUND);
@@ -91,10 +103,66 @@ final class MonitorRenderer {
             vp.toScreenX(l.x1()), vp.toScreenY(l.y1()), vp.toScreenX(l.x2()), vp.toScreenY(l.y2()));
       }
     }
-    gc.setFont(font);
     for (ArMapObject o : m.map().getMapObjects()) {
       drawObject(gc, vp, o);
     }
+    gc.setFont(font);
+    gc.setTextAlign(TextAlignment.LEFT);
+    gc.setTextBaseline(VPos.CENTER);
+    for (LabelPlacer.Placed p :
+        placeLabels(m.map().getMapObjects(), m.map().getLines(), vp, widths::of, LABEL_HEIGHT)) {
+      ArMapObject o = (ArMapObject) p.label().tag();
+      gc.setFill(Color.WHITE);
+      gc.fillText(p.label().text(), p.left() + 0.8, p.centerY() + 0.8);
+      gc.setFill(o.isGoal() ? GOAL : HOME);
+      gc.fillText(p.label().text(), p.left(), p.centerY());
+    }
+  }
+
+  /**
+   * Where the names of goals, the home and docks go on the picture {@code vp} shows: beside their
+   * markers, over no marker or other name, never past the picture's edge, and across a wall only
+   * where no side is clear (the dock by the office map's east wall puts its name on the left).
+   */
+  static List<LabelPlacer.Placed> placeLabels(
+      List<ArMapObject> objects,
+      List<ArLineSegment> walls,
+      Viewport vp,
+      ToDoubleFunction<String> textWidth,
+      double height) {
+    List<LabelPlacer.Label> labels = new ArrayList<>();
+    double[] unnamed = new double[2 * objects.size()];
+    int n = 0;
+    for (ArMapObject o : objects) {
+      if (!hasMarker(o)) {
+        continue;
+      }
+      double x = vp.toScreenX(o.pose().x());
+      double y = vp.toScreenY(o.pose().y());
+      if (o.name().isEmpty()) {
+        unnamed[n++] = x;
+        unnamed[n++] = y;
+      } else {
+        labels.add(
+            new LabelPlacer.Label(x, y, textWidth.applyAsDouble(o.name()), height, o.name(), o));
+      }
+    }
+    double[] lines = new double[4 * walls.size()];
+    int k = 0;
+    for (ArLineSegment s : walls) {
+      lines[k++] = vp.toScreenX(s.x1());
+      lines[k++] = vp.toScreenY(s.y1());
+      lines[k++] = vp.toScreenX(s.x2());
+      lines[k++] = vp.toScreenY(s.y2());
+    }
+    return LabelPlacer.place(labels, Arrays.copyOf(unnamed, n), lines, vp.width(), vp.height());
+  }
+
+  /** Goals, the home and docks have a marker; forbidden lines and areas are drawn as shapes. */
+  private static boolean hasMarker(ArMapObject o) {
+    String type = o.type();
+    return !type.startsWith("Forbidden")
+        && (o.isGoal() || type.equalsIgnoreCase("RobotHome") || type.equalsIgnoreCase("Dock"));
   }
 
   private void drawObject(GraphicsContext gc, Viewport vp, ArMapObject o) {
@@ -120,11 +188,10 @@ final class MonitorRenderer {
       }
       return;
     }
-    boolean goal = o.isGoal();
-    boolean home = type.equalsIgnoreCase("RobotHome") || type.equalsIgnoreCase("Dock");
-    if (!goal && !home) {
+    if (!hasMarker(o)) {
       return;
     }
+    boolean goal = o.isGoal();
     double x = vp.toScreenX(o.pose().x());
     double y = vp.toScreenY(o.pose().y());
     gc.setStroke(goal ? GOAL : HOME);
@@ -132,9 +199,6 @@ final class MonitorRenderer {
     gc.setLineWidth(2);
     gc.strokeOval(x - 6, y - 6, 12, 12);
     gc.fillOval(x - 2, y - 2, 4, 4);
-    if (!o.name().isEmpty()) {
-      gc.fillText(o.name(), x + 8, y - 6);
-    }
   }
 
   private static void drawParticles(GraphicsContext gc, Viewport vp, Points p) {

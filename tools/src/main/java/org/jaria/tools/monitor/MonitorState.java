@@ -2,6 +2,7 @@ package org.jaria.tools.monitor;
 
 import java.util.List;
 import java.util.Map;
+import java.util.function.Predicate;
 import org.jaria.map.ArMap;
 import org.jaria.net.data.ConfigSection;
 import org.jaria.net.data.InfoStrings;
@@ -46,6 +47,20 @@ final class MonitorState {
 
   /** The server's open popups by number (ArServerHandlerPopup). */
   volatile Map<Integer, PopupLayout.Shown> popups = Map.of();
+
+  /**
+   * Whether the first value of everything the window's status panel shows has arrived, of what the
+   * server offers ({@code offered} says whether it offers a data name): the robot (pose, battery,
+   * motors), the map, the localization and the information strings. {@code jaria screenshot} waits
+   * for this, not just for the connection.
+   */
+  boolean firstDataArrived(Predicate<String> offered) {
+    return (!offered.test("update") || robot != null)
+        && (!(offered.test("getMap") || offered.test("getMapBinary")) || map != null)
+        && (!(offered.test("getLocalizationSnapshot") || offered.test("getLocState"))
+            || localization != null)
+        && (!offered.test("getStrings") || strings != null);
+  }
 
   /** Forgets everything (a new connection). */
   void clear() {

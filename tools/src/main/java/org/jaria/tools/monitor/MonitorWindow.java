@@ -75,6 +75,15 @@ public final class MonitorWindow implements DesktopApp {
   private final CameraPane cameraPane = new CameraPane();
   private final PopupDialogs popupDialogs;
   private final CompletableFuture<Void> ready = new CompletableFuture<>();
+
+  /** The information table's row height and header height, pixels (Modena's at 12 px). */
+  static final double INFO_ROW_HEIGHT = 24;
+
+  static final double INFO_HEADER_HEIGHT = 28; // Modena's is 26 at 12 px; a little room
+
+  /** Connected, and the first data are not all shown yet (JavaFX thread only). */
+  private boolean awaitingFirstData;
+
   private final Button connect = new Button("Connect");
   private final ComboBox<String> goals = new ComboBox<>();
   private final Label connection = new Label("Not connected");
@@ -273,9 +282,13 @@ public final class MonitorWindow implements DesktopApp {
     value.setPrefWidth(150);
     infoTable.getColumns().add(label);
     infoTable.getColumns().add(value);
+    // The two columns share the width (no empty third one), and the table is as tall as its rows
+    // (no column of empty ones below them).
+    infoTable.setColumnResizePolicy(TableView.CONSTRAINED_RESIZE_POLICY_FLEX_LAST_COLUMN);
+    infoTable.setFixedCellSize(INFO_ROW_HEIGHT);
     infoTable.setPlaceholder(new Label("No information strings"));
+    fitInfoTable(0);
     VBox status = new VBox(6, g, infoTable);
-    VBox.setVgrow(infoTable, Priority.ALWAYS);
 
     commands.setId("commands");
     commands.setCellFactory(
@@ -364,8 +377,9 @@ public final class MonitorWindow implements DesktopApp {
           if (!link.offers("getVideo")) {
             cameraTab.setText("Camera (none)");
           }
+          // Ready (for a screenshot) once the first data are shown, not at the connection.
+          awaitingFirstData = true;
           dirty.set(true);
-          ready.complete(null);
         },
         e -> {
           connect.setDisable(false);
@@ -530,6 +544,7 @@ public final class MonitorWindow implements DesktopApp {
         rows.add(new String[] {s.labels().get(i), s.values().get(i)});
       }
       infoTable.setItems(rows);
+      fitInfoTable(rows.size());
     }
     List<String> g = state.goals;
     if (!g.equals(shownGoals)) {
@@ -539,6 +554,23 @@ public final class MonitorWindow implements DesktopApp {
     configPane.show(state.config);
     cameraPane.show(state.video);
     popupDialogs.show(state.popups);
+    if (awaitingFirstData && state.firstDataArrived(link::offers)) {
+      awaitingFirstData = false;
+      ready.complete(null);
+    }
+  }
+
+  /** Makes the information table exactly as tall as {@code rows} rows (two for its placeholder). */
+  private void fitInfoTable(int rows) {
+    double h = infoTableHeight(rows, INFO_ROW_HEIGHT);
+    infoTable.setMinHeight(h);
+    infoTable.setPrefHeight(h);
+    infoTable.setMaxHeight(h);
+  }
+
+  /** The height of a table of {@code rows} rows: its header, the rows and its border. */
+  static double infoTableHeight(int rows, double rowHeight) {
+    return INFO_HEADER_HEIGHT + Math.max(2, rows) * rowHeight + 2;
   }
 
   // ------------------------------------------------------------------ DesktopApp

@@ -2,12 +2,13 @@ package org.jaria.tools.simview;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import javafx.stage.Stage;
+import org.jaria.map.MapNames;
 import org.jaria.sim.OdometryError;
 import org.jaria.sim.RobotOptions;
 import org.jaria.sim.SimOptions;
@@ -45,7 +46,8 @@ public final class SimViewCommand implements Callable<Integer>, AppCommand {
   @Option(
       names = "--map",
       paramLabel = "FILE",
-      description = "ArMap .map file, or a bundled map name (office, hall); default: office")
+      description =
+          "ArMap .map file, or a bundled map name (office, hall, columbia); default: office")
   String map = "office";
 
   @Option(names = "--robot", paramLabel = "MODEL", description = "Robot model to add (repeatable).")
@@ -115,14 +117,16 @@ public final class SimViewCommand implements Callable<Integer>, AppCommand {
             .basePort(port)
             .odometryError(OdometryError.parse(odometryError))
             .build();
-    Path file = Path.of(map);
+    String bundled = MapNames.bundledName(map);
     SimWorld world;
-    if (Files.exists(file)) {
-      world = SimWorld.load(file, options);
-    } else if (!map.contains("/") && !map.contains("\\") && !map.endsWith(".map")) {
-      world = SimWorld.bundled(map, options);
+    if (bundled != null) {
+      world = SimWorld.bundled(bundled, options);
     } else {
-      throw new IllegalArgumentException("map file " + map + " does not exist");
+      Optional<String> problem = MapNames.problem(map);
+      if (problem.isPresent()) {
+        throw new IOException(problem.get());
+      }
+      world = SimWorld.load(Path.of(map), options);
     }
     List<String> models = new ArrayList<>(robots.isEmpty() ? List.of("p3dx-sh") : robots);
     if (robotCount != null) {

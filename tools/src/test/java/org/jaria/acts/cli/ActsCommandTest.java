@@ -103,9 +103,7 @@ class ActsCommandTest {
                     "-f",
                     image.toString(),
                     "-p",
-                    "0",
-                    "--bind",
-                    "127.0.0.1",
+                    "0", // and no --bind: this computer only, as the guiServer without a login
                     "-G",
                     "vfw",
                     "-x"));

@@ -51,6 +51,8 @@ class NavigateDemoTest {
             new PrintStream(buf, true, StandardCharsets.UTF_8),
             0);
     assertEquals(2, code);
-    assertTrue(buf.toString(StandardCharsets.UTF_8).contains("cannot read the map"));
+    String said = buf.toString(StandardCharsets.UTF_8);
+    assertTrue(said.contains("there is no map file /no/such/file.map"), said);
+    assertTrue(said.contains("bundled: office, hall, columbia"), said);
   }
 }

@@ -32,6 +32,25 @@ class GradeCommandTest {
     return new Run(exit, out.toString(), err.toString());
   }
 
+  /**
+   * Self-grading from the repository's root (classroom.md's command) writes the default report
+   * folder there: the repository ignores it, so it never shows up as untracked work.
+   */
+  @Test
+  void theDefaultReportFolderIsIgnoredByTheRepository() throws IOException {
+    String out =
+        JariaCli.commandLine()
+            .getSubcommands()
+            .get("grade")
+            .getCommandSpec()
+            .findOption("--out")
+            .defaultValue();
+    List<String> ignored = Files.readAllLines(Path.of("..", ".gitignore"));
+    assertTrue(
+        ignored.contains("/" + out + "/") || ignored.contains(out + "/"),
+        "the repository's .gitignore lists " + out + "/: " + ignored);
+  }
+
   @Test
   void listsTheAssignmentsAndExplainsBadArguments(@TempDir Path tmp) {
     Run list = jaria("grade", "--list");

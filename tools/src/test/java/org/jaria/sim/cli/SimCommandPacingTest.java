@@ -74,9 +74,17 @@ class SimCommandPacingTest {
   }
 
   @Test
+  void zeroSecondsIsNoLimitAsInTheDemos() {
+    SimCommand sim = new SimCommand();
+    new picocli.CommandLine(sim).parseArgs("--seconds", "0");
+    sim.buildOptions();
+    assertEquals(null, sim.seconds, "no time limit");
+  }
+
+  @Test
   void badPacingOptionsSayWhatIsWrong() {
-    assertTrue(run("--port", "0", "--seconds", "0") != 0);
-    assertTrue(err.toString().contains("--seconds must be positive"), err.toString());
+    assertEquals(2, run("--port", "0", "--seconds", "-1"));
+    assertTrue(err.toString().contains("0 for no limit"), err.toString());
     err.getBuffer().setLength(0);
     assertTrue(run("--port", "0", "--unthrottled", "--speedup", "3") != 0);
     assertTrue(err.toString().contains("either --speedup or --unthrottled"), err.toString());

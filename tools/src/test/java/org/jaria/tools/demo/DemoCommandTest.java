@@ -141,6 +141,9 @@ class DemoCommandTest {
     assertEquals(0, r.status(), r.out() + r.err() + log);
     assertTrue(r.out().contains("gyro"), r.out());
     assertTrue(!log.contains("keydrive will not work"), log);
+    // It says that it presses the keys itself, not that the user may.
+    assertTrue(r.out().contains("The demo presses the keys itself"), r.out());
+    assertTrue(!r.out().contains("This program lets you drive"), r.out());
   }
 
   @Test
@@ -180,10 +183,23 @@ class DemoCommandTest {
 
   @Test
   void chaseStartsTheSimulatorAndActsAndPrintsTheBallDistance() {
-    Run r = jaria("demo", "chase", "--seconds", "2");
+    PrintStream realOut = System.out;
+    ByteArrayOutputStream printed = new ByteArrayOutputStream();
+    System.setOut(new PrintStream(printed, true, StandardCharsets.UTF_8)); // the program's own
+    Run r;
+    try {
+      r = jaria("demo", "chase", "--seconds", "2");
+    } finally {
+      System.setOut(realOut);
+    }
+    String program = printed.toString(StandardCharsets.UTF_8);
     assertEquals(0, r.status(), r.out() + r.err());
     assertTrue(r.out().contains("channel 1 trained on the red ball"), r.out());
     assertTrue(r.out().contains("ball") && r.out().contains("mm away"), r.out());
+    // The channel is trained and no key is read: the program says so, not "train ACTS".
+    assertTrue(program.contains("trained on it already"), program);
+    assertTrue(program.contains("The keyboard is not read"), program);
+    assertTrue(!program.contains("Train ACTS"), program);
   }
 
   @Test

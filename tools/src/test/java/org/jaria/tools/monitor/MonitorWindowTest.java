@@ -147,6 +147,44 @@ class MonitorWindowTest {
     return 1 / FxRuntime.call(() -> w.canvas().viewport().scale(), 10);
   }
 
+  /**
+   * Ready (what {@code jaria screenshot monitor} waits for) means the first data are shown: pose,
+   * battery and motors are filled in then, not "-", and the information table holds its rows, as
+   * tall as they are, with its two columns sharing the width.
+   */
+  @Test
+  void readyMeansTheFirstDataAreShownAndTheTableFitsItsRows() throws Exception {
+    MonitorWindow w = open(stage, PASSWORD);
+    w.ready().get(20, TimeUnit.SECONDS);
+    FxRuntime.run(
+        () -> {
+          var scene = stage.getScene();
+          for (String id : List.of("#status-pose", "#status-battery", "#status-motors")) {
+            String text = ((javafx.scene.control.Label) scene.lookup(id)).getText();
+            assertTrue(!text.equals("-"), id + " shown: " + text);
+          }
+          @SuppressWarnings("unchecked")
+          javafx.scene.control.TableView<String[]> table =
+              (javafx.scene.control.TableView<String[]>) scene.lookup("#info-table");
+          int rows = table.getItems().size();
+          assertTrue(rows > 0, "the information strings arrived with the rest");
+          assertEquals(
+              MonitorWindow.infoTableHeight(rows, MonitorWindow.INFO_ROW_HEIGHT),
+              table.getMaxHeight(),
+              0.5,
+              "no empty rows below the " + rows + " rows");
+          double header = table.lookup(".column-header-background").getLayoutBounds().getHeight();
+          assertTrue(
+              header <= MonitorWindow.INFO_HEADER_HEIGHT,
+              "the header (" + header + " px) leaves room for every row");
+          double columns = table.getColumns().stream().mapToDouble(c -> c.getWidth()).sum();
+          assertTrue(
+              columns >= table.getWidth() - 4,
+              "no empty third column: " + columns + " of " + table.getWidth());
+        },
+        10);
+  }
+
   @Test
   void severalMonitorsShowTheRobotWhereItIs() throws Exception {
     MonitorWindow a = connected();
