@@ -4,10 +4,12 @@ import com.fasterxml.jackson.core.JsonGenerator;
 import java.io.IOException;
 import org.jaria.geom.ArPose;
 import org.jaria.web.model.MapLayer;
+import org.jaria.web.model.Points;
 
 /**
- * The map as a {@code foxglove.SceneUpdate}: walls as one line list, the sensor points as short
- * crosses, forbidden lines and areas in red, goals as arrows with their names.
+ * The map as a {@code foxglove.SceneUpdate} of four entities: {@code walls} (one line list),
+ * {@code points} (the sensor points as short crosses), {@code forbidden} (forbidden lines and areas,
+ * red) and {@code goals} (arrows with their names).
  */
 final class MapScene {
 
@@ -21,15 +23,11 @@ final class MapScene {
   static void write(JsonGenerator g, long t, MapLayer map) throws IOException {
     SceneWriter s = new SceneWriter(g, t);
     s.begin();
-    s.beginEntity("map");
+    lines(s, "walls", map.lines(), 0.03, WALL);
+    lines(s, "points", crosses(map), 0.01, POINT);
+    s.beginEntity("forbidden");
     s.empty("arrows", "cubes", "spheres", "cylinders");
     s.beginList("lines");
-    if (map.lines().size() > 0) {
-      s.line(SceneWriter.LINE_LIST, map.lines(), 0.03, WALL, 1);
-    }
-    if (map.points().size() > 0) {
-      s.line(SceneWriter.LINE_LIST, crosses(map), 0.01, POINT, 1);
-    }
     if (map.forbiddenLines().size() > 0) {
       s.line(SceneWriter.LINE_LIST, map.forbiddenLines(), 0.05, FORBIDDEN, 1);
     }
@@ -48,7 +46,7 @@ final class MapScene {
     s.empty("cubes", "spheres", "cylinders", "lines", "triangles");
     s.beginList("texts");
     for (MapLayer.Goal goal : map.goals()) {
-      s.text(new ArPose(goal.x(), goal.y() + 250, 0), goal.name(), GOAL);
+      s.text(new ArPose(goal.x(), goal.y(), 0), goal.name(), GOAL);
     }
     s.endList();
     s.empty("models");
@@ -56,9 +54,23 @@ final class MapScene {
     s.end();
   }
 
+  /** An entity of one line list (nothing if there are no points). */
+  private static void lines(SceneWriter s, String id, Points pts, double thickness, int rgb)
+      throws IOException {
+    s.beginEntity(id);
+    s.empty("arrows", "cubes", "spheres", "cylinders");
+    s.beginList("lines");
+    if (pts.size() > 0) {
+      s.line(SceneWriter.LINE_LIST, pts, thickness, rgb, 1);
+    }
+    s.endList();
+    s.empty("triangles", "texts", "models");
+    s.endEntity();
+  }
+
   /** Each sensor point as a small cross (two 40 mm segments), so Foxglove shows it. */
-  private static org.jaria.web.model.Points crosses(MapLayer map) {
-    var b = org.jaria.web.model.Points.builder(4 * map.points().size());
+  private static Points crosses(MapLayer map) {
+    var b = Points.builder(4 * map.points().size());
     for (int i = 0; i < map.points().size(); i++) {
       float x = map.points().x(i);
       float y = map.points().y(i);

@@ -17,9 +17,10 @@ import org.slf4j.LoggerFactory;
  * its {@link ClientSession}) and sends it messages without ever waiting: a message that would push
  * the bytes waiting for this client over the limit is dropped and counted, and a client that keeps
  * the limit full for longer than allowed is disconnected and counted. Jetty calls the listener
- * methods; the publisher calls {@link #send}.
+ * methods; the publisher calls {@link #send}. Public only because Jetty calls the listener methods
+ * through method handles, which need a public class; nothing outside this package makes one.
  */
-final class ClientConnection implements Session.Listener.AutoDemanding {
+public final class ClientConnection implements Session.Listener.AutoDemanding {
 
   private static final Logger LOG = LoggerFactory.getLogger(ClientConnection.class);
 

@@ -83,7 +83,10 @@ public final class WebServer implements AutoCloseable {
     pool.setName("web-server");
     pool.setDaemon(true);
     jetty = new Server(pool);
-    connector = new ServerConnector(jetty, 1, 1);
+    org.eclipse.jetty.server.HttpConfiguration http = new org.eclipse.jetty.server.HttpConfiguration();
+    http.setSendServerVersion(false);
+    connector =
+        new ServerConnector(jetty, 1, 1, new org.eclipse.jetty.server.HttpConnectionFactory(http));
     connector.setHost(options.bind());
     connector.setPort(options.port());
     connector.setIdleTimeout(30_000);
