@@ -14,6 +14,7 @@ import org.junit.jupiter.api.Test;
  * every sub-package of org.jaria.web is its own node): the model at the bottom, then JSON, the
  * protocol and the controls, the sources, the server, and the recording on top.
  */
+@org.junit.jupiter.api.Tag("slow")
 class PackageCyclesTest {
 
   @Test

@@ -36,8 +36,20 @@ public final class JsonValues {
    * @throws BadJson if it is not one JSON value within the limits
    */
   public static Object read(String text) throws BadJson {
-    try (JsonParser p = Json.factory().createParser(text)) {
-      int[] budget = {MAX_VALUES};
+    return read(text, Json.factory(), MAX_VALUES);
+  }
+
+  /**
+   * The value of {@code text}, read with another factory's limits and at most {@code maxValues}
+   * values (for text that does not come from the network, such as the server's own messages in
+   * tests).
+   *
+   * @throws BadJson if it is not one JSON value within the limits
+   */
+  public static Object read(String text, com.fasterxml.jackson.core.JsonFactory factory, int maxValues)
+      throws BadJson {
+    try (JsonParser p = factory.createParser(text)) {
+      int[] budget = {maxValues};
       JsonToken t = p.nextToken();
       if (t == null) {
         throw new BadJson("empty message", null);

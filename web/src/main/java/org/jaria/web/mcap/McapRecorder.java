@@ -11,7 +11,6 @@ import java.util.HashMap;
 import java.util.Map;
 import org.jaria.web.foxglove.Channel;
 import org.jaria.web.foxglove.Message;
-import org.jaria.web.foxglove.TopicKind;
 import org.jaria.web.server.MessageSink;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -27,7 +26,7 @@ public final class McapRecorder implements MessageSink {
 
   private final McapWriter writer;
   private final Path file;
-  private final Map<TopicKind, Integer> schemaIds = new HashMap<>();
+  private final Map<String, Integer> schemaIds = new HashMap<>();
   private final Map<Integer, Integer> channelIds = new HashMap<>();
   private boolean failed;
 
@@ -67,12 +66,12 @@ public final class McapRecorder implements MessageSink {
             k -> {
               int schema =
                   schemaIds.computeIfAbsent(
-                      channel.kind(),
-                      kind ->
+                      channel.kind().schemaName(),
+                      name ->
                           writer.addSchema(
-                              kind.schemaName(),
+                              name,
                               Channel.SCHEMA_ENCODING,
-                              kind.schema().getBytes(StandardCharsets.UTF_8)));
+                              channel.kind().schema().getBytes(StandardCharsets.UTF_8)));
               return writer.addChannel(schema, channel.topic(), Channel.ENCODING, Map.of());
             });
     try {
@@ -81,6 +80,11 @@ public final class McapRecorder implements MessageSink {
       failed = true;
       LOG.warn("recording to {} stopped: {}", file, e.toString());
     }
+  }
+
+  /** Closes the current chunk now (tests: a recording with more than one chunk). */
+  synchronized void flushChunkForTest() throws IOException {
+    writer.flushChunk();
   }
 
   /** Bytes written so far. */

@@ -137,7 +137,8 @@ public final class McapWriter implements AutoCloseable {
     return position;
   }
 
-  private void flushChunk() throws IOException {
+  /** Writes the chunk so far (and its message indexes), if it holds anything. */
+  void flushChunk() throws IOException {
     if (chunk.size() == 0) {
       return;
     }

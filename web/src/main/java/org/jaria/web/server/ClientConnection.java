@@ -115,7 +115,9 @@ public final class ClientConnection implements Session.Listener.AutoDemanding {
   }
 
   private boolean admitSend(int size) {
-    if (queued.get() + size > hub.options().maxQueuedBytes()) {
+    long waiting = queued.get();
+    // A message larger than the whole limit still goes to a client that has nothing waiting.
+    if (waiting > 0 && waiting + size > hub.options().maxQueuedBytes()) {
       hub.counters().messagesDropped.increment();
       long now = System.nanoTime();
       long since = fullSince;

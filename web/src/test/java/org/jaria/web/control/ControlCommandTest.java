@@ -64,56 +64,9 @@ class ControlCommandTest {
     assertInstanceOf(ControlCommand.Invalid.class, parse("/cmd_vel", "nonsense"));
   }
 
-  /** Records what is asked of it. */
-  static final class Recorder implements Controls.Driver, Controls.Simulation {
-    final List<String> calls = new ArrayList<>();
-    boolean acceptGoals = true;
-
-    @Override
-    public String robotName() {
-      return "r";
-    }
-
-    @Override
-    public void drive(double vel, double rotVel) {
-      calls.add("drive " + vel + " " + rotVel);
-    }
-
-    @Override
-    public boolean goTo(ArPose pose, boolean useHeading) {
-      calls.add("goto " + pose);
-      return acceptGoals;
-    }
-
-    @Override
-    public void stop() {
-      calls.add("stop");
-    }
-
-    @Override
-    public void run() {
-      calls.add("run");
-    }
-
-    @Override
-    public void pause() {
-      calls.add("pause");
-    }
-
-    @Override
-    public void step(long millis) {
-      calls.add("step " + millis);
-    }
-
-    @Override
-    public void setSpeedup(double speedup) {
-      calls.add("speed " + speedup);
-    }
-  }
-
   @Test
   void commandsGoToTheControlsThatExist() {
-    Recorder r = new Recorder();
+    RecordingControls r = new RecordingControls();
     Controls both = new Controls(r, r);
     assertNull(ControlCommand.apply(new ControlCommand.Drive(100, 10), both));
     assertNull(ControlCommand.apply(new ControlCommand.Sim(ControlCommand.SimAction.STEP, 50), both));
