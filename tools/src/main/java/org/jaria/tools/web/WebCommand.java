@@ -86,6 +86,9 @@ public final class WebCommand implements Callable<Integer> {
 
   private final CountDownLatch stop = new CountDownLatch(1);
 
+  /** Told of the running simulation and web view (tests watch the world through it). */
+  java.util.function.BiConsumer<SimulatedGuiServer, WebView> onStarted = (s, v) -> {};
+
   @Override
   public Integer call() {
     PrintWriter out = spec.commandLine().getOut();
@@ -131,6 +134,7 @@ public final class WebCommand implements Callable<Integer> {
             WebView.start(options, nv.source(), nv.controls(), record, true, out, nv.driver())) {
           out.println(seconds > 0 ? "Stops after " + seconds + " s; Ctrl-C sooner." : "Ctrl-C stops.");
           out.flush();
+          onStarted.accept(s, v);
           waitForStop();
           out.printf(Locale.ROOT, "Web view: %s%n", summary(v));
         }

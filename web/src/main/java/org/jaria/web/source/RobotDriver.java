@@ -10,7 +10,8 @@ import org.jaria.web.control.Controls;
 
 /**
  * Drives an {@link ArRobot} for viewers: an {@link ArActionInput} above every other action carries
- * the arrow keys' velocities; a goal goes to path planning. A drive command holds for {@link
+ * the arrow keys' velocities (and path planning's actions are switched off); a goal switches the
+ * robot's other actions off and path planning's on, as a server's goto mode does. A drive command holds for {@link
  * ControlCommand#DRIVE_HOLD_MILLIS} ms of the robot's clock and then the robot stops by itself (a
  * task in its cycle checks), so a viewer that disconnects or stops sending cannot leave it driving.
  * Close it to take the action and the task away again.
@@ -48,12 +49,17 @@ public final class RobotDriver implements Controls.Driver, AutoCloseable {
 
   @Override
   public void drive(double vel, double rotVel) {
-    if (path != null && path.isActive()) {
-      path.cancelPathPlan();
+    if (path != null) {
+      if (path.isActive()) {
+        path.cancelPathPlan();
+      }
+      path.getPathPlanActionGroup().deactivate();
     }
     lastDriveNanos = robot.getClock().nanoTime();
     driving = true;
-    robot.enableMotors();
+    if (!robot.areMotorsEnabled()) {
+      robot.enableMotors();
+    }
     input.activate();
     input.setVel(vel);
     input.setRotVel(rotVel);
@@ -76,8 +82,15 @@ public final class RobotDriver implements Controls.Driver, AutoCloseable {
       return false;
     }
     driving = false;
+    // As a server's goto mode does: the path's actions alone drive (whatever another mode had
+    // running stops), with this driver's action standing by, asking for nothing.
+    robot.deactivateActions();
+    path.getPathPlanActionGroup().activate();
     input.clear();
-    robot.enableMotors();
+    input.activate();
+    if (!robot.areMotorsEnabled()) {
+      robot.enableMotors();
+    }
     return path.pathPlanToPose(pose, useHeading);
   }
 
