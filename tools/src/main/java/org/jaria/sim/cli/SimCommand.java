@@ -463,7 +463,10 @@ public final class SimCommand implements Callable<Integer> {
             org.jaria.tools.web.WebOption.mapOrNull(mapName),
             mapName == null ? "empty" : Path.of(mapName).getFileName().toString());
     return web.start(
-        "jaria sim", source, new org.jaria.web.control.Controls(null, control), out);
+        "jaria sim · " + (mapName == null ? "empty world" : Path.of(mapName).getFileName()),
+        source,
+        new org.jaria.web.control.Controls(null, control),
+        out);
   }
 
   /**

@@ -153,7 +153,7 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
             new org.jaria.web.source.SimWorldSource(
                 sim.world, control, org.jaria.tools.web.WebOption.mapOrNull(map), map);
         try (var view =
-            web.start("jaria demo", source, new org.jaria.web.control.Controls(null, control), out)) {
+            web.start("jaria demo · " + map, source, new org.jaria.web.control.Controls(null, control), out)) {
           if (!gui) {
             return runWander(sim, ticker, l, out);
           }

@@ -100,7 +100,7 @@ public final class WebCommand implements Callable<Integer> {
       ArMap m = loadMap(map);
       String mapName = Path.of(map).getFileName().toString();
       WebOptions options =
-          WebOptions.loopback(port).withBind(bind).withControl(allowControl).withName("JAria web");
+          WebOptions.loopback(port).withBind(bind).withControl(allowControl).withName("jaria web · " + mapName);
       ServerOptions monitors =
           ServerOptions.builder()
               .serverName("guiServer")

@@ -96,12 +96,15 @@ class WebViewBrowserTest {
       waitUntil(sim.world()::isRealTime, "Run set it going again");
 
       // A click on the map sends a goal; the robot plans a path and gets there.
-      ArPose goal = new ArPose(after.x() + 3000, after.y());
+      ArPose goal = new ArPose(after.x() + 5000, after.y());
       chrome.eval("document.getElementById('follow').checked = false");
       Map<?, ?> at = (Map<?, ?>) chrome.eval("jaria.pageOf(" + goal.x() + ", " + goal.y() + ")");
       chrome.click(num(at.get("x")), num(at.get("y")));
       waitUntil(() -> sim.nav().getPathPlanningTask().isActive(), "the goal was taken");
       chrome.waitFor("jaria.world.robots.get('" + name + "').path.length > 1", 20);
+      // The README's picture: following the robot, a little closer.
+      chrome.eval("document.getElementById('follow').checked = true; jaria.view.scale *= 1.5");
+      waitUntil(() -> robot.getTruePose().findDistanceTo(after) > 800, "under way");
       byte[] readme = chrome.screenshot();
       Path out = Path.of("target", "web-view.png");
       Files.write(out, readme);

@@ -35,6 +35,7 @@ final class Publisher {
     MapLayer map = source.map();
     WorldFrame frame = source.frame();
     long t = frame.clock().timeNanos();
+    hub.frameTaken(t, sampled);
     boolean mapChanged = !java.util.Objects.equals(map, lastMap);
     if (mapChanged) {
       lastMap = map;
@@ -63,6 +64,5 @@ final class Publisher {
       }
     }
     hub.counters().frames.increment();
-    hub.frameDone(t, sampled);
   }
 }

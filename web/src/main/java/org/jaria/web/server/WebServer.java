@@ -192,8 +192,8 @@ public final class WebServer implements AutoCloseable {
   }
 
   /**
-   * For benchmarks: called on the publisher thread after each frame with the frame's time stamp and
-   * the {@link System#nanoTime()} at which it was taken from the source.
+   * For benchmarks: called on the publisher thread as each frame is taken from the source, before
+   * it is sent, with the frame's time stamp and the {@link System#nanoTime()} of that moment.
    */
   public void setFrameObserver(FrameObserver observer) {
     frameObserver = observer;
@@ -203,7 +203,7 @@ public final class WebServer implements AutoCloseable {
   @FunctionalInterface
   public interface FrameObserver {
     /**
-     * A frame was published.
+     * A frame was taken and is about to be sent.
      *
      * @param frameTime the frame's time stamp (the source's clock), ns
      * @param sampledNanos {@link System#nanoTime()} when the frame was taken from the source
@@ -225,7 +225,7 @@ public final class WebServer implements AutoCloseable {
     return sinks;
   }
 
-  void frameDone(long frameTime, long sampledNanos) {
+  void frameTaken(long frameTime, long sampledNanos) {
     FrameObserver o = frameObserver;
     if (o != null) {
       o.published(frameTime, sampledNanos);
