@@ -236,9 +236,9 @@ class DocsCommandsTest {
   }
 
   /**
-   * The browser-only recipe as a reader follows it, in each guide: its {@code ./jaria sim ... --web}
-   * line starts the simulator with the web view (a free port for the web view and the robot, ten
-   * times real time), the printed address serves the page, a WebSocket client of that address
+   * The browser-only recipe as a reader follows it, in each guide: its {@code ./jaria sim ...
+   * --web} line starts the simulator with the web view (a free port for the web view and the robot,
+   * ten times real time), the printed address serves the page, a WebSocket client of that address
    * watches the robot's true pose as the page does, and step 3's HelloRobot line drives the square
    * that the watcher sees.
    */

@@ -12,8 +12,8 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 /**
- * Watches a web view as its page does, over Foxglove's protocol: subscribes to every robot's
- * {@code true_pose} and remembers how far the first robot got from where it was first seen.
+ * Watches a web view as its page does, over Foxglove's protocol: subscribes to every robot's {@code
+ * true_pose} and remembers how far the first robot got from where it was first seen.
  */
 final class PoseWatcher implements WebSocket.Listener, AutoCloseable {
 
@@ -59,7 +59,9 @@ final class PoseWatcher implements WebSocket.Listener, AutoCloseable {
       Matcher m = TRUE_POSE.matcher(text);
       if (m.find()) {
         w.sendText(
-            "{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":1,\"channelId\":" + m.group(1) + "}]}",
+            "{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":1,\"channelId\":"
+                + m.group(1)
+                + "}]}",
             true);
       }
       text.setLength(0);

@@ -10,9 +10,9 @@ import org.jaria.web.server.WebServer;
 import org.junit.jupiter.api.Test;
 
 /**
- * The web view's packages depend on each other without loops (read from the compiled classes;
- * every sub-package of org.jaria.web is its own node): the model at the bottom, then JSON, the
- * protocol and the controls, the sources, the server, and the recording on top.
+ * The web view's packages depend on each other without loops (read from the compiled classes; every
+ * sub-package of org.jaria.web is its own node): the model at the bottom, then JSON, the protocol
+ * and the controls, the sources, the server, and the recording on top.
  */
 @org.junit.jupiter.api.Tag("slow")
 class PackageCyclesTest {
@@ -37,7 +37,10 @@ class PackageCyclesTest {
         .should()
         .dependOnClassesThat()
         .resideInAnyPackage(
-            "org.jaria.web.server..", "org.jaria.web.source..", "org.eclipse.jetty..", "org.jaria.sim..")
+            "org.jaria.web.server..",
+            "org.jaria.web.source..",
+            "org.eclipse.jetty..",
+            "org.jaria.sim..")
         .check(web);
   }
 }

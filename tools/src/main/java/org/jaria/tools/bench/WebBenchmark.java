@@ -136,7 +136,8 @@ public final class WebBenchmark {
             clients,
             web.options().rateHz(),
             Runtime.getRuntime().availableProcessors()));
-    out.append(String.format(Locale.ROOT, "%-46s %12s %12s %9s%n", "measure", "median", "p99", "samples"));
+    out.append(
+        String.format(Locale.ROOT, "%-46s %12s %12s %9s%n", "measure", "median", "p99", "samples"));
     row(out, "robot cycle, no web server", alone, 1e-3, "us");
     row(out, "robot cycle, web server + clients", loaded, 1e-3, "us");
     row(out, "update latency (frame taken -> client)", latency, 1e-6, "ms");

@@ -114,7 +114,8 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
         }
       }
       if (web.enabled() && remote != null) {
-        err.println("jaria demo: --web shows the embedded simulator; it cannot show a --remote robot");
+        err.println(
+            "jaria demo: --web shows the embedded simulator; it cannot show a --remote robot");
         return 2;
       }
       if (remote != null) {
@@ -153,7 +154,11 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
             new org.jaria.web.source.SimWorldSource(
                 sim.world, control, org.jaria.tools.web.WebOption.mapOrNull(map), map);
         try (var view =
-            web.start("jaria demo · " + map, source, new org.jaria.web.control.Controls(null, control), out)) {
+            web.start(
+                "jaria demo · " + map,
+                source,
+                new org.jaria.web.control.Controls(null, control),
+                out)) {
           if (!gui) {
             return runWander(sim, ticker, l, out);
           }

@@ -216,7 +216,8 @@ public final class GuiServerCommand implements Callable<Integer> {
         var nv =
             org.jaria.tools.web.NavigationView.simulated(
                 s.world(), s.sim().sim().getName(), s.nav(), m, mapName, speed);
-        try (var view = web.start("guiServer · " + mapName, nv.source(), nv.controls(), out, nv.driver())) {
+        try (var view =
+            web.start("guiServer · " + mapName, nv.source(), nv.controls(), out, nv.driver())) {
           return serve(s.gui(), s.robot(), forwarder, out);
         }
       }
@@ -319,7 +320,8 @@ public final class GuiServerCommand implements Callable<Integer> {
         nav.addCommands(gui.getCommands());
         var nv = org.jaria.tools.web.NavigationView.real(nav, m, mapName);
         try (ArHybridForwarderVideo forwarder = forwarder(gui.getServer(), out);
-            var view = web.start("guiServer · " + mapName, nv.source(), nv.controls(), out, nv.driver())) {
+            var view =
+                web.start("guiServer · " + mapName, nv.source(), nv.controls(), out, nv.driver())) {
           gui.open();
           return serve(gui, robot, forwarder, out);
         }

@@ -20,10 +20,10 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code jaria web}: a simulated robot that localizes with its sonar and plans paths, shown in a web
- * browser (and to Foxglove or Lichtblick over the same port). With {@code --allow-control} the page
- * drives it with the arrow keys, sends it to where you click, and pauses, steps or speeds up the
- * simulation.
+ * {@code jaria web}: a simulated robot that localizes with its sonar and plans paths, shown in a
+ * web browser (and to Foxglove or Lichtblick over the same port). With {@code --allow-control} the
+ * page drives it with the arrow keys, sends it to where you click, and pauses, steps or speeds up
+ * the simulation.
  */
 @Command(
     name = "web",
@@ -100,7 +100,10 @@ public final class WebCommand implements Callable<Integer> {
       ArMap m = loadMap(map);
       String mapName = Path.of(map).getFileName().toString();
       WebOptions options =
-          WebOptions.loopback(port).withBind(bind).withControl(allowControl).withName("jaria web · " + mapName);
+          WebOptions.loopback(port)
+              .withBind(bind)
+              .withControl(allowControl)
+              .withName("jaria web · " + mapName);
       ServerOptions monitors =
           ServerOptions.builder()
               .serverName("guiServer")
@@ -132,7 +135,8 @@ public final class WebCommand implements Callable<Integer> {
             s.wasLocalized() ? "yes" : "no");
         try (WebView v =
             WebView.start(options, nv.source(), nv.controls(), record, true, out, nv.driver())) {
-          out.println(seconds > 0 ? "Stops after " + seconds + " s; Ctrl-C sooner." : "Ctrl-C stops.");
+          out.println(
+              seconds > 0 ? "Stops after " + seconds + " s; Ctrl-C sooner." : "Ctrl-C stops.");
           out.flush();
           onStarted.accept(s, v);
           waitForStop();

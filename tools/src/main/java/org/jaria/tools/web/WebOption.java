@@ -24,7 +24,9 @@ public final class WebOption {
       fallbackValue = "" + WebOptions.DEFAULT_PORT,
       description =
           "Also show it in a web browser: serve the page (and Foxglove's WebSocket protocol) on"
-              + " PORT (default " + WebOptions.DEFAULT_PORT + "; 0: any free port)")
+              + " PORT (default "
+              + WebOptions.DEFAULT_PORT
+              + "; 0: any free port)")
   Integer port;
 
   @Option(

@@ -49,7 +49,11 @@ public final class WebView implements AutoCloseable {
         rec = McapRecorder.create(record, "JAria " + JariaCli.projectVersion());
       } catch (IOException e) {
         throw new IOException(
-            "cannot write the recording " + record + " (" + e.getMessage() + "): give a file in a"
+            "cannot write the recording "
+                + record
+                + " ("
+                + e.getMessage()
+                + "): give a file in a"
                 + " folder you can write to",
             e);
       }

@@ -58,7 +58,8 @@ class WebViewBrowserTest {
       String name = robot.getName();
 
       chrome.navigate(m.group(1));
-      chrome.waitFor("window.jaria && jaria.world.frames > 3 && jaria.world.map && jaria.selected", 30);
+      chrome.waitFor(
+          "window.jaria && jaria.world.frames > 3 && jaria.world.map && jaria.selected", 30);
       assertEquals(name, chrome.eval("jaria.selected"));
       assertEquals(List.of("drive", "goal", "sim"), chrome.eval("jaria.control"));
 
@@ -78,8 +79,15 @@ class WebViewBrowserTest {
       chrome.waitFor("jaria.world.clock && jaria.world.clock.paused", 10);
       ArPose truth = robot.getTruePose();
       chrome.waitFor(
-          "Math.abs(jaria.world.robots.get('" + name + "').truePose.x - " + truth.x() + ") < 1"
-              + " && Math.abs(jaria.world.robots.get('" + name + "').truePose.y - " + truth.y()
+          "Math.abs(jaria.world.robots.get('"
+              + name
+              + "').truePose.x - "
+              + truth.x()
+              + ") < 1"
+              + " && Math.abs(jaria.world.robots.get('"
+              + name
+              + "').truePose.y - "
+              + truth.y()
               + ") < 1",
           10);
       Map<?, ?> drawn = (Map<?, ?>) chrome.eval("jaria.screenOf('" + name + "')");
@@ -129,7 +137,9 @@ class WebViewBrowserTest {
     Map<?, ?> r =
         (Map<?, ?>)
             chrome.eval(
-                "(() => { const b = document.getElementById('" + id + "').getBoundingClientRect();"
+                "(() => { const b = document.getElementById('"
+                    + id
+                    + "').getBoundingClientRect();"
                     + " return {x: b.left + b.width / 2, y: b.top + b.height / 2}; })()");
     chrome.click(num(r.get("x")), num(r.get("y")));
   }

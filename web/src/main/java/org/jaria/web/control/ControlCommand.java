@@ -12,8 +12,8 @@ import org.jaria.web.json.JsonValues;
  *   <li>{@value #DRIVE_TOPIC}: a Twist, {@code {"linear":{"x":m/s},"angular":{"z":rad/s}}} (what
  *       Foxglove's Teleop panel sends);
  *   <li>{@value #GOAL_TOPIC}: a pose, {@code {"pose":{"position":{"x":m,"y":m},
- *       "orientation":{...}}}} (what Foxglove's 3D panel's "publish pose" sends), heading used
- *       only when the orientation is given;
+ *       "orientation":{...}}}} (what Foxglove's 3D panel's "publish pose" sends), heading used only
+ *       when the orientation is given;
  *   <li>{@value #SIM_TOPIC}: {@code {"command":"run"|"pause"|"step"|"speed", "value":n}}.
  * </ul>
  *

@@ -7,8 +7,8 @@ import java.util.Map;
 import java.util.Set;
 
 /**
- * The channels the server advertises, kept in step with the topics the frames carry: a new topic
- * (a robot joins, or its laser's first scan) gets a new channel; a topic no frame carries any more
+ * The channels the server advertises, kept in step with the topics the frames carry: a new topic (a
+ * robot joins, or its laser's first scan) gets a new channel; a topic no frame carries any more
  * (the robot left) loses its channel. Ids are never reused, so a viewer's old subscription cannot
  * land on another topic. Not thread-safe: one publisher thread owns it.
  */

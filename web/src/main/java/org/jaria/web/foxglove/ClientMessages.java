@@ -8,9 +8,9 @@ import java.util.Map;
 import org.jaria.web.json.JsonValues;
 
 /**
- * Reads what a client sends: JSON text operations and binary client-publish messages. Never
- * throws: anything that is not a message of the protocol becomes {@link ClientRequest.Malformed}
- * (with what is wrong) or {@link ClientRequest.Unknown} (a well-formed but unsupported operation).
+ * Reads what a client sends: JSON text operations and binary client-publish messages. Never throws:
+ * anything that is not a message of the protocol becomes {@link ClientRequest.Malformed} (with what
+ * is wrong) or {@link ClientRequest.Unknown} (a well-formed but unsupported operation).
  */
 public final class ClientMessages {
 

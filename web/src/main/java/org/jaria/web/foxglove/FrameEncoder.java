@@ -131,7 +131,9 @@ public final class FrameEncoder {
       int k = j == i ? Math.max(i - 1, 0) : i;
       double th =
           Math.toDegrees(
-              Math.atan2(path.y(j) - path.y(k), path.x(j) - path.x(k) == 0 ? 1e-9 : path.x(j) - path.x(k)));
+              Math.atan2(
+                  path.y(j) - path.y(k),
+                  path.x(j) - path.x(k) == 0 ? 1e-9 : path.x(j) - path.x(k)));
       g.writeStartObject();
       Encoding.vector(g, "position", path.x(i), path.y(i));
       Encoding.quaternion(g, "orientation", th);

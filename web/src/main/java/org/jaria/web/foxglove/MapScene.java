@@ -7,9 +7,9 @@ import org.jaria.web.model.MapLayer;
 import org.jaria.web.model.Points;
 
 /**
- * The map as a {@code foxglove.SceneUpdate} of four entities: {@code walls} (one line list),
- * {@code points} (the sensor points as short crosses), {@code forbidden} (forbidden lines and areas,
- * red) and {@code goals} (arrows with their names).
+ * The map as a {@code foxglove.SceneUpdate} of four entities: {@code walls} (one line list), {@code
+ * points} (the sensor points as short crosses), {@code forbidden} (forbidden lines and areas, red)
+ * and {@code goals} (arrows with their names).
  */
 final class MapScene {
 

@@ -39,7 +39,9 @@ final class SceneWriter {
     g.writeEndObject();
   }
 
-  /** Starts an entity; its primitive lists follow, in the schema's order, then {@link #endEntity}. */
+  /**
+   * Starts an entity; its primitive lists follow, in the schema's order, then {@link #endEntity}.
+   */
   void beginEntity(String id) throws IOException {
     g.writeStartObject();
     Encoding.time(g, "timestamp", t);

@@ -2,8 +2,8 @@ package org.jaria.web.foxglove;
 
 /**
  * What the web view publishes, one kind per topic: four topics for the whole world and seven for
- * each robot ({@code /NAME/...}). Each has a schema; Foxglove's 3D panel draws the {@code foxglove.*}
- * ones.
+ * each robot ({@code /NAME/...}). Each has a schema; Foxglove's 3D panel draws the {@code
+ * foxglove.*} ones.
  */
 public enum TopicKind {
   /** The map's walls, points, goals and forbidden areas (sent on subscribing and on a change). */

@@ -46,8 +46,8 @@ public final class JsonValues {
    *
    * @throws BadJson if it is not one JSON value within the limits
    */
-  public static Object read(String text, com.fasterxml.jackson.core.JsonFactory factory, int maxValues)
-      throws BadJson {
+  public static Object read(
+      String text, com.fasterxml.jackson.core.JsonFactory factory, int maxValues) throws BadJson {
     try (JsonParser p = factory.createParser(text)) {
       int[] budget = {maxValues};
       JsonToken t = p.nextToken();
@@ -64,7 +64,6 @@ public final class JsonValues {
     }
   }
 
-
   /** Jackson's messages add the source location on further lines; the first says what is wrong. */
   private static String firstLine(String s) {
     if (s == null) {
@@ -74,8 +73,7 @@ public final class JsonValues {
     return nl < 0 ? s : s.substring(0, nl);
   }
 
-  private static Object value(JsonParser p, JsonToken t, int[] budget)
-      throws IOException, BadJson {
+  private static Object value(JsonParser p, JsonToken t, int[] budget) throws IOException, BadJson {
     if (t == null) {
       throw new BadJson("the message ends inside a value", null);
     }

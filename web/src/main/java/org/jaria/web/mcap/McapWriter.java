@@ -13,9 +13,9 @@ import java.util.zip.CRC32;
  * Writes an MCAP file (the recording format Foxglove and Lichtblick open): the magic, a header,
  * then uncompressed chunks of schema, channel and message records each followed by its message
  * indexes, then a summary (schemas, channels, statistics, chunk indexes, summary offsets) and the
- * footer, with the data and summary CRCs, so that a reader can seek by time. Written here because no
- * maintained MCAP writer for Java is published on Maven Central; the format is small and documented
- * (its records are framed as opcode, uint64 length, content, all little-endian).
+ * footer, with the data and summary CRCs, so that a reader can seek by time. Written here because
+ * no maintained MCAP writer for Java is published on Maven Central; the format is small and
+ * documented (its records are framed as opcode, uint64 length, content, all little-endian).
  *
  * <p>Not thread-safe; one thread writes.
  */
@@ -47,8 +47,13 @@ public final class McapWriter implements AutoCloseable {
       int id, int schemaId, String topic, String encoding, Map<String, String> metadata) {}
 
   private record ChunkIndex(
-      long start, long end, long offset, long length, Map<Integer, Long> indexOffsets,
-      long indexLength, long size) {}
+      long start,
+      long end,
+      long offset,
+      long length,
+      Map<Integer, Long> indexOffsets,
+      long indexLength,
+      long size) {}
 
   private final OutputStream out;
   private final CRC32 dataCrc = new CRC32();
@@ -117,7 +122,9 @@ public final class McapWriter implements AutoCloseable {
       throw new IllegalArgumentException("no channel " + channelId + ": add the channel first");
     }
     int seq = sequence.merge(channelId, 1, Integer::sum);
-    chunkIndex.computeIfAbsent(channelId, k -> new ArrayList<>()).add(new long[] {logTime, chunk.size()});
+    chunkIndex
+        .computeIfAbsent(channelId, k -> new ArrayList<>())
+        .add(new long[] {logTime, chunk.size()});
     int at = chunk.beginRecord(MESSAGE);
     chunk.u16(channelId).u32(seq).u64(logTime).u64(publishTime).bytes(data);
     chunk.endRecord(at);
@@ -167,7 +174,8 @@ public final class McapWriter implements AutoCloseable {
       emit(rec.array(), rec.size(), true);
     }
     chunkIndexes.add(
-        new ChunkIndex(start, end, offset, length, indexOffsets, position - indexStart, chunk.size()));
+        new ChunkIndex(
+            start, end, offset, length, indexOffsets, position - indexStart, chunk.size()));
     chunk.reset();
     chunkIndex.clear();
     chunkStart = Long.MAX_VALUE;

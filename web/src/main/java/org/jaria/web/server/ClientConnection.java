@@ -71,7 +71,8 @@ public final class ClientConnection implements Session.Listener.AutoDemanding {
     if (!state.admit(System.nanoTime())) {
       hub.counters().flooded.increment();
       if (floodedHere.incrementAndGet() == FLOOD_CLOSE) {
-        LOG.warn("web client {} floods ({} messages dropped): disconnecting it", remote, FLOOD_CLOSE);
+        LOG.warn(
+            "web client {} floods ({} messages dropped): disconnecting it", remote, FLOOD_CLOSE);
         close(StatusCode.POLICY_VIOLATION, "too many messages");
       }
       return;

@@ -12,8 +12,8 @@ import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.TimeUnit;
 import org.eclipse.jetty.http.HttpStatus;
 import org.eclipse.jetty.server.Request;
 import org.eclipse.jetty.server.Response;
@@ -83,7 +83,8 @@ public final class WebServer implements AutoCloseable {
     pool.setName("web-server");
     pool.setDaemon(true);
     jetty = new Server(pool);
-    org.eclipse.jetty.server.HttpConfiguration http = new org.eclipse.jetty.server.HttpConfiguration();
+    org.eclipse.jetty.server.HttpConfiguration http =
+        new org.eclipse.jetty.server.HttpConfiguration();
     http.setSendServerVersion(false);
     connector =
         new ServerConnector(jetty, 1, 1, new org.eclipse.jetty.server.HttpConnectionFactory(http));
@@ -266,7 +267,9 @@ public final class WebServer implements AutoCloseable {
     String origin = req.getHeaders().get("Origin");
     boolean trusted = origin == null || sameOrigin(origin, req) || options.token() != null;
     return new ClientConnection(
-        this, options.allowControl() && trusted, String.valueOf(req.getConnectionMetaData().getRemoteSocketAddress()));
+        this,
+        options.allowControl() && trusted,
+        String.valueOf(req.getConnectionMetaData().getRemoteSocketAddress()));
   }
 
   private static boolean sameOrigin(String origin, ServerUpgradeRequest req) {
@@ -290,8 +293,10 @@ public final class WebServer implements AutoCloseable {
             options.serverName(),
             capabilities,
             Map.of(
-                "jaria.control", options.allowControl() ? controls.describe() : "",
-                "jaria.drive.hold.ms", String.valueOf(ControlCommand.DRIVE_HOLD_MILLIS)),
+                "jaria.control",
+                options.allowControl() ? controls.describe() : "",
+                "jaria.drive.hold.ms",
+                String.valueOf(ControlCommand.DRIVE_HOLD_MILLIS)),
             Long.toHexString(System.identityHashCode(this))));
     if (!channels.isEmpty()) {
       c.sendText(ServerMessages.advertise(channels));

@@ -30,7 +30,8 @@ public final class MapLayers {
       if (o.isGoal() || o.type().equals("RobotHome") || o.type().equals("Dock")) {
         boolean heading = !o.type().equals("Goal");
         goals.add(
-            new MapLayer.Goal(o.name(), o.type(), o.pose().x(), o.pose().y(), o.pose().th(), heading));
+            new MapLayer.Goal(
+                o.name(), o.type(), o.pose().x(), o.pose().y(), o.pose().th(), heading));
       } else if (o.isLineType() && o.type().startsWith("Forbidden")) {
         forbiddenLines.add(o.getFromToSegment());
       } else if (o.isAreaType() && o.type().startsWith("Forbidden")) {

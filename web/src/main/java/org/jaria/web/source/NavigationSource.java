@@ -3,7 +3,6 @@ package org.jaria.web.source;
 import java.util.List;
 import org.jaria.arnl.ArBaseLocalizationTask;
 import org.jaria.arnl.ArPathPlanningTask;
-import org.jaria.arnl.mcl.PoseEstimate;
 import org.jaria.geom.ArPose;
 import org.jaria.geom.ArTransform;
 import org.jaria.map.ArMap;
@@ -85,14 +84,12 @@ public final class NavigationSource implements FrameSource, RobotOverlay {
   @Override
   public RobotFrame apply(RobotFrame base) {
     RobotStatus s = robot.getStatus();
+    // The robot's pose is its odometry corrected by the localization's last fix: where it believes
+    // it is now (the fix itself lags behind by the distance driven since).
     ArPose believed = s.pose();
     Points particles = Points.EMPTY;
     double score = Double.NaN;
     if (loc != null) {
-      PoseEstimate e = loc.getEstimate();
-      if (e != null) {
-        believed = e.pose();
-      }
       particles = particles(loc.getCurrentSamplePoses());
       score = loc.getLocalizationScore();
     }

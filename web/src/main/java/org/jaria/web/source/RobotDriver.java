@@ -11,14 +11,16 @@ import org.jaria.web.control.Controls;
 /**
  * Drives an {@link ArRobot} for viewers: an {@link ArActionInput} above every other action carries
  * the arrow keys' velocities (and path planning's actions are switched off); a goal switches the
- * robot's other actions off and path planning's on, as a server's goto mode does. A drive command holds for {@link
- * ControlCommand#DRIVE_HOLD_MILLIS} ms of the robot's clock and then the robot stops by itself (a
- * task in its cycle checks), so a viewer that disconnects or stops sending cannot leave it driving.
- * Close it to take the action and the task away again.
+ * robot's other actions off and path planning's on, as a server's goto mode does. A drive command
+ * holds for {@link ControlCommand#DRIVE_HOLD_MILLIS} ms of the robot's clock and then the robot
+ * stops by itself (a task in its cycle checks), so a viewer that disconnects or stops sending
+ * cannot leave it driving. Close it to take the action and the task away again.
  */
 public final class RobotDriver implements Controls.Driver, AutoCloseable {
 
-  /** The action's priority: above path planning's (50) and its lost/slow-down actions (140, 150). */
+  /**
+   * The action's priority: above path planning's (50) and its lost/slow-down actions (140, 150).
+   */
   public static final int PRIORITY = 200;
 
   private static final String TASK = "web view drive hold";

@@ -138,7 +138,7 @@ const client = new FoxgloveClient(wsUrl, {
 
 // ---- drawing ----
 function fmtPose(p) {
-  return p ? `${(p.x / 1000).toFixed(2)}, ${(p.y / 1000).toFixed(2)} m, ${p.th.toFixed(0)}°` : "–";
+  return p ? `${(p.x / 1000).toFixed(2)}, ${(p.y / 1000).toFixed(2)} m, ${Math.round(p.th) + 0}°` : "–";
 }
 
 function fmtClock(c) {

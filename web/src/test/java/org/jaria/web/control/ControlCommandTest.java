@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.charset.StandardCharsets;
-import java.util.ArrayList;
 import java.util.List;
 import org.jaria.geom.ArPose;
 import org.junit.jupiter.api.Test;
@@ -43,7 +42,8 @@ class ControlCommandTest {
     assertTrue(goal.useHeading());
     assertEquals(90, goal.pose().th(), 1e-4);
     assertInstanceOf(
-        ControlCommand.Invalid.class, parse("/goal", "{\"pose\":{\"position\":{\"x\":1e12,\"y\":0}}}"));
+        ControlCommand.Invalid.class,
+        parse("/goal", "{\"pose\":{\"position\":{\"x\":1e12,\"y\":0}}}"));
     assertInstanceOf(ControlCommand.Invalid.class, parse("/goal", "{}"));
   }
 
@@ -56,10 +56,12 @@ class ControlCommandTest {
         new ControlCommand.Sim(ControlCommand.SimAction.STEP, 100),
         parse("/sim/control", "{\"command\":\"step\",\"value\":100}"));
     assertInstanceOf(
-        ControlCommand.Invalid.class, parse("/sim/control", "{\"command\":\"step\",\"value\":1e9}"));
+        ControlCommand.Invalid.class,
+        parse("/sim/control", "{\"command\":\"step\",\"value\":1e9}"));
     assertInstanceOf(
         ControlCommand.Invalid.class, parse("/sim/control", "{\"command\":\"speed\",\"value\":0}"));
-    assertInstanceOf(ControlCommand.Invalid.class, parse("/sim/control", "{\"command\":\"reboot\"}"));
+    assertInstanceOf(
+        ControlCommand.Invalid.class, parse("/sim/control", "{\"command\":\"reboot\"}"));
     assertInstanceOf(ControlCommand.Invalid.class, parse("/elsewhere", "{}"));
     assertInstanceOf(ControlCommand.Invalid.class, parse("/cmd_vel", "nonsense"));
   }
@@ -69,14 +71,15 @@ class ControlCommandTest {
     RecordingControls r = new RecordingControls();
     Controls both = new Controls(r, r);
     assertNull(ControlCommand.apply(new ControlCommand.Drive(100, 10), both));
-    assertNull(ControlCommand.apply(new ControlCommand.Sim(ControlCommand.SimAction.STEP, 50), both));
-    assertNull(ControlCommand.apply(new ControlCommand.Sim(ControlCommand.SimAction.SPEED, 2), both));
+    assertNull(
+        ControlCommand.apply(new ControlCommand.Sim(ControlCommand.SimAction.STEP, 50), both));
+    assertNull(
+        ControlCommand.apply(new ControlCommand.Sim(ControlCommand.SimAction.SPEED, 2), both));
     r.acceptGoals = false;
     String refused = ControlCommand.apply(new ControlCommand.Goal(new ArPose(1, 2), false), both);
     assertTrue(refused.startsWith("no path to 1, 2"), refused);
     assertEquals(
-        List.of("drive 100.0 10.0", "step 50", "speed 2.0", "goto " + new ArPose(1, 2)),
-        r.calls);
+        List.of("drive 100.0 10.0", "step 50", "speed 2.0", "goto " + new ArPose(1, 2)), r.calls);
     assertEquals("drive,goal,sim", both.describe());
     String none = ControlCommand.apply(new ControlCommand.Drive(1, 1), new Controls(null, r));
     assertTrue(none.contains("no robot"), none);

@@ -49,4 +49,4 @@ public final class RecordingControls implements Controls.Driver, Controls.Simula
   public void setSpeedup(double speedup) {
     calls.add("speed " + speedup);
   }
-  }
+}

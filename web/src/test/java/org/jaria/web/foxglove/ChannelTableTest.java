@@ -19,7 +19,8 @@ class ChannelTableTest {
     ChannelTable.Change c1 =
         t.update(List.of(m("/map", TopicKind.MAP), m("/a/status", TopicKind.STATUS)));
     assertEquals(List.of(1, 2), c1.added().stream().map(Channel::id).toList());
-    assertTrue(t.update(List.of(m("/map", TopicKind.MAP), m("/a/status", TopicKind.STATUS))).isEmpty());
+    assertTrue(
+        t.update(List.of(m("/map", TopicKind.MAP), m("/a/status", TopicKind.STATUS))).isEmpty());
     ChannelTable.Change c2 = t.update(List.of(m("/b/status", TopicKind.STATUS)));
     assertEquals(List.of("/b/status"), c2.added().stream().map(Channel::topic).toList());
     assertEquals(List.of("/a/status"), c2.removed().stream().map(Channel::topic).toList());

@@ -79,7 +79,8 @@ class ClientSessionTest {
             CHANNELS);
     assertEquals(ClientSession.Problem.REFUSED, o.problem());
     assertTrue(o.replies().get(0).contains("--allow-control"), o.replies().toString());
-    ClientSession.Outcome p = s.handle(new ClientRequest.Publish(1, new byte[] {'{', '}'}), CHANNELS);
+    ClientSession.Outcome p =
+        s.handle(new ClientRequest.Publish(1, new byte[] {'{', '}'}), CHANNELS);
     assertEquals(ClientSession.Problem.REFUSED, p.problem());
     assertNull(p.published());
   }
@@ -114,7 +115,8 @@ class ClientSessionTest {
     assertEquals(ClientSession.Problem.MALFORMED, m.problem());
     assertTrue(m.replies().get(0).contains("\"op\":\"status\""), m.replies().toString());
     assertEquals(
-        ClientSession.Problem.UNKNOWN_OP, s.handle(new ClientRequest.Unknown("x"), CHANNELS).problem());
+        ClientSession.Problem.UNKNOWN_OP,
+        s.handle(new ClientRequest.Unknown("x"), CHANNELS).problem());
   }
 
   @Test

@@ -91,7 +91,8 @@ class FoxgloveClientReplayTest {
       }
     }
     List<String> topics = channels.stream().map(c -> String.valueOf(c.get("topic"))).toList();
-    for (String t : List.of("/map", "/p3dx-sh_1/true_pose", "/p3dx-sh_1/laser", "/p3dx-sh_1/pose")) {
+    for (String t :
+        List.of("/map", "/p3dx-sh_1/true_pose", "/p3dx-sh_1/laser", "/p3dx-sh_1/pose")) {
       assertTrue(topics.contains(t), t + " in " + topics);
     }
   }
@@ -150,7 +151,8 @@ class FoxgloveClientReplayTest {
       ClientRequest r =
           f.get("text") instanceof String t
               ? ClientMessages.parse(t)
-              : ClientMessages.parse(ByteBuffer.wrap(Base64.getDecoder().decode((String) f.get("binary"))));
+              : ClientMessages.parse(
+                  ByteBuffer.wrap(Base64.getDecoder().decode((String) f.get("binary"))));
       ClientSession.Outcome o = session.handle(r, channels);
       assertNull(o.problem(), r + " -> " + o.replies());
       subscribes += r instanceof ClientRequest.Subscribe ? 1 : 0;

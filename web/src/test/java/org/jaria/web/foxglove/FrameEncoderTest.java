@@ -114,7 +114,9 @@ class FrameEncoderTest {
     Map<?, ?> m = json(topic(FrameEncoder.encode(FRAME), "/bot_1/laser"));
     assertEquals(-Math.PI / 2, num(m.get("start_angle")), 1e-6);
     assertEquals(-Math.PI / 2 + 2 * Math.PI / 180, num(m.get("end_angle")), 1e-6);
-    assertEquals(List.of(1.0, 2.0, 0.0), ((List<?>) m.get("ranges")).stream().map(FrameEncoderTest::num).toList());
+    assertEquals(
+        List.of(1.0, 2.0, 0.0),
+        ((List<?>) m.get("ranges")).stream().map(FrameEncoderTest::num).toList());
     Map<?, ?> pos = (Map<?, ?>) ((Map<?, ?>) m.get("pose")).get("position");
     assertEquals(1.6, num(pos.get("x")));
   }
@@ -162,7 +164,8 @@ class FrameEncoderTest {
         FrameEncoder.encode(new WorldFrame(FRAME.clock(), List.of(sim))).stream()
             .map(Message::topic)
             .toList();
-    assertEquals(List.of("/clock", "/robots", "/tf", "/r/true_pose", "/r/sonar", "/r/status"), topics);
+    assertEquals(
+        List.of("/clock", "/robots", "/tf", "/r/true_pose", "/r/sonar", "/r/status"), topics);
   }
 
   @Test
@@ -183,7 +186,8 @@ class FrameEncoderTest {
         entities.stream().map(e -> ((Map<?, ?>) e).get("id")).toList());
     Map<?, ?> walls = (Map<?, ?>) entities.get(0);
     for (String required :
-        List.of("arrows", "cubes", "spheres", "cylinders", "lines", "triangles", "texts", "models")) {
+        List.of(
+            "arrows", "cubes", "spheres", "cylinders", "lines", "triangles", "texts", "models")) {
       assertTrue(walls.containsKey(required), required);
     }
     Map<?, ?> line = (Map<?, ?>) ((List<?>) walls.get("lines")).get(0);

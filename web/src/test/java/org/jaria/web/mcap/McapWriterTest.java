@@ -34,11 +34,11 @@ import org.junit.jupiter.api.Test;
 /**
  * The MCAP writer's bytes: their framing and checksums here, and a whole recording compared byte
  * for byte with {@code recording.mcap}, which was made by {@link #recording()} and then read by
- * hand with MCAP's official reader (@mcap/core 2.2.2, Node): McapIndexedReader read its 41
- * messages on 11 channels through the summary's 2 chunk indexes, each payload JSON, and
- * McapStreamReader with CRC checks on read all 110 records (Header 1, Schema 16, Channel 22,
- * Message 41, MessageIndex 21, DataEnd 1, Statistics 1, ChunkIndex 2, SummaryOffset 4, Footer 1;
- * schemas and channels appear in the chunks and again in the summary).
+ * hand with MCAP's official reader (@mcap/core 2.2.2, Node): McapIndexedReader read its 41 messages
+ * on 11 channels through the summary's 2 chunk indexes, each payload JSON, and McapStreamReader
+ * with CRC checks on read all 110 records (Header 1, Schema 16, Channel 22, Message 41,
+ * MessageIndex 21, DataEnd 1, Statistics 1, ChunkIndex 2, SummaryOffset 4, Footer 1; schemas and
+ * channels appear in the chunks and again in the summary).
  */
 class McapWriterTest {
 
@@ -67,14 +67,19 @@ class McapWriterTest {
                 Points.of(200, -150, 200, 150, -200, 150, -200, -150),
                 Points.of(1000, 1500),
                 Points.of(3000 - 40 * i, 1500),
-                new LaserFrame(new ArPose(1100 + 40 * i, 1500, 0), -90, 45, new int[] {1500, 2000, 2900, 2000, 1500}),
+                new LaserFrame(
+                    new ArPose(1100 + 40 * i, 1500, 0),
+                    -90,
+                    45,
+                    new int[] {1500, 2000, 2900, 2000, 1500}),
                 Points.of(1000, 1500, 1010, 1490),
                 Points.of(1000 + 40 * i, 1500, 3000, 2000),
                 new ArPose(3000, 2000, 0),
                 new RobotStatus(400, 0, 12.5, true, false, "going to the goal", 0.9));
         List<Message> ms = new java.util.ArrayList<>();
         ms.add(FrameEncoder.encodeMap(map, t));
-        ms.addAll(FrameEncoder.encode(new WorldFrame(new ClockFrame(t, 1, false, true), List.of(r))));
+        ms.addAll(
+            FrameEncoder.encode(new WorldFrame(new ClockFrame(t, 1, false, true), List.of(r))));
         table.update(ms);
         for (Message m : ms) {
           if (i == 0 || !m.topic().equals("/map")) {

@@ -62,7 +62,8 @@ class ModelValuesTest {
     assertEquals(robot("a", 1), robot("a", 1));
     assertNotEquals(robot("a", 1), robot("a", 2));
     ClockFrame c = new ClockFrame(5, 1, false, true);
-    assertEquals(new WorldFrame(c, List.of(robot("a", 1))), new WorldFrame(c, List.of(robot("a", 1))));
+    assertEquals(
+        new WorldFrame(c, List.of(robot("a", 1))), new WorldFrame(c, List.of(robot("a", 1))));
     assertEquals(
         new LaserFrame(ArPose.ORIGIN, -90, 1, new int[] {1, 2}),
         new LaserFrame(ArPose.ORIGIN, -90, 1, new int[] {1, 2}));

@@ -22,8 +22,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
-import org.jaria.web.control.RecordingControls;
 import org.jaria.web.control.Controls;
+import org.jaria.web.control.RecordingControls;
 import org.jaria.web.json.JsonValues;
 import org.junit.jupiter.api.Test;
 
@@ -41,7 +41,9 @@ class WebServerTest {
   static int status(URI uri, String method) throws Exception {
     HttpRequest req =
         HttpRequest.newBuilder(uri).method(method, HttpRequest.BodyPublishers.noBody()).build();
-    return HttpClient.newHttpClient().send(req, HttpResponse.BodyHandlers.discarding()).statusCode();
+    return HttpClient.newHttpClient()
+        .send(req, HttpResponse.BodyHandlers.discarding())
+        .statusCode();
   }
 
   /** A raw request line, as a browser would never send it (paths that try to leave the page). */
@@ -90,15 +92,23 @@ class WebServerTest {
       URI base = URI.create("http://127.0.0.1:" + s.port());
       HttpResponse<String> page =
           HttpClient.newHttpClient()
-              .send(HttpRequest.newBuilder(base.resolve("/")).build(), HttpResponse.BodyHandlers.ofString());
+              .send(
+                  HttpRequest.newBuilder(base.resolve("/")).build(),
+                  HttpResponse.BodyHandlers.ofString());
       assertEquals(200, page.statusCode());
       assertTrue(page.body().contains("<canvas id=\"view\""));
-      assertTrue(page.headers().firstValue("Content-Security-Policy").orElse("").contains("default-src 'none'"));
+      assertTrue(
+          page.headers()
+              .firstValue("Content-Security-Policy")
+              .orElse("")
+              .contains("default-src 'none'"));
       assertTrue(page.headers().firstValue("Server").isEmpty(), "no server version is given away");
-      for (String f : List.of("/app.js", "/protocol.js", "/draw.js", "/style.css", "/favicon.svg")) {
+      for (String f :
+          List.of("/app.js", "/protocol.js", "/draw.js", "/style.css", "/favicon.svg")) {
         assertEquals(200, status(base.resolve(f), "GET"), f);
       }
-      for (String f : List.of("/index.htm", "/org/jaria/web/page/app.js", "/WEB-INF/web.xml", "/app.js/")) {
+      for (String f :
+          List.of("/index.htm", "/org/jaria/web/page/app.js", "/WEB-INF/web.xml", "/app.js/")) {
         assertEquals(404, status(base.resolve(f), "GET"), f);
       }
       assertEquals(405, status(base.resolve("/"), "POST"));
@@ -113,7 +123,9 @@ class WebServerTest {
               "/org/jaria/web/server/WebServer.class",
               "/pom.xml")) {
         String response = raw(s.port(), path);
-        assertFalse(response.startsWith("HTTP/1.1 200"), path + ": " + response.lines().findFirst().orElse(""));
+        assertFalse(
+            response.startsWith("HTTP/1.1 200"),
+            path + ": " + response.lines().findFirst().orElse(""));
         assertFalse(response.contains("root:"), path);
       }
       assertTrue(s.stats().notFound() >= 4, s.stats().toString());
@@ -143,7 +155,8 @@ class WebServerTest {
       // the map is sent at once to a new subscriber, then every frame carries the clock
       WsClient.Received m = c.next(r -> !r.isText() && r.binary().getInt(1) == 9);
       assertEquals(1, m.binary().get(0), "opcode: message data");
-      String mapJson = new String(m.binary().array(), 13, m.binary().limit() - 13, StandardCharsets.UTF_8);
+      String mapJson =
+          new String(m.binary().array(), 13, m.binary().limit() - 13, StandardCharsets.UTF_8);
       assertTrue(mapJson.contains("\"id\":\"walls\""), mapJson);
       WsClient.Received a = c.next(r -> !r.isText() && r.binary().getInt(1) == 7);
       WsClient.Received b = c.next(r -> !r.isText() && r.binary().getInt(1) == 7);
@@ -199,7 +212,8 @@ class WebServerTest {
       assertTrue(c.nextText("status").text().contains("malformed"));
       c.send("{\"op\":\"fetchAsset\",\"uri\":\"file:///etc/passwd\",\"requestId\":1}");
       assertTrue(c.nextText("status").text().contains("unsupported operation: fetchAsset"));
-      c.send("{\"op\":\"advertise\",\"channels\":[{\"id\":1,\"topic\":\"/cmd_vel\",\"encoding\":\"json\"}]}");
+      c.send(
+          "{\"op\":\"advertise\",\"channels\":[{\"id\":1,\"topic\":\"/cmd_vel\",\"encoding\":\"json\"}]}");
       assertTrue(c.nextText("status").text().contains("read-only"));
       c.send(ByteBuffer.wrap(new byte[] {1, 1, 0, 0, 0, '{', '}'}));
       c.nextText("status");
@@ -286,7 +300,8 @@ class WebServerTest {
         WsClient fine = WsClient.connect(s.websocketUrl())) {
       Map<?, ?> adv = json(fine.nextText("advertise"));
       long particles = channel(adv, "/robot/particles");
-      String sub = "{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":1,\"channelId\":" + particles + "}]}";
+      String sub =
+          "{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":1,\"channelId\":" + particles + "}]}";
       slow.send(sub);
       fine.send(sub);
       eventually(() -> s.stats().slowClientsClosed() == 1, "the slow client disconnected");
@@ -300,13 +315,15 @@ class WebServerTest {
   @Test
   void aRecordingSinkGetsEveryMessageAndCloseEndsIt() throws Exception {
     java.util.List<String> topics = new java.util.concurrent.CopyOnWriteArrayList<>();
-    java.util.concurrent.atomic.AtomicBoolean closed = new java.util.concurrent.atomic.AtomicBoolean();
+    java.util.concurrent.atomic.AtomicBoolean closed =
+        new java.util.concurrent.atomic.AtomicBoolean();
     WebServer s = start(WebOptions.loopback(0), Controls.NONE);
     int port = s.port();
     s.addSink(
         new MessageSink() {
           @Override
-          public void write(org.jaria.web.foxglove.Channel channel, org.jaria.web.foxglove.Message m) {
+          public void write(
+              org.jaria.web.foxglove.Channel channel, org.jaria.web.foxglove.Message m) {
             topics.add(m.topic());
           }
 

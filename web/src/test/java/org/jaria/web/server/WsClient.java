@@ -14,7 +14,9 @@ import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Predicate;
 
-/** A test client of the server's WebSocket (the JDK's own client): everything it receives, queued. */
+/**
+ * A test client of the server's WebSocket (the JDK's own client): everything it receives, queued.
+ */
 final class WsClient implements WebSocket.Listener, AutoCloseable {
 
   /** A received message: text, or binary (opcode, subscription, time, payload). */
@@ -35,7 +37,8 @@ final class WsClient implements WebSocket.Listener, AutoCloseable {
     this.reading = reading;
     WebSocket.Builder b = HttpClient.newHttpClient().newWebSocketBuilder();
     if (subprotocols.length > 0) {
-      b.subprotocols(subprotocols[0], java.util.Arrays.copyOfRange(subprotocols, 1, subprotocols.length));
+      b.subprotocols(
+          subprotocols[0], java.util.Arrays.copyOfRange(subprotocols, 1, subprotocols.length));
     }
     ws = b.connectTimeout(Duration.ofSeconds(10)).buildAsync(uri, this).get(20, TimeUnit.SECONDS);
   }
@@ -103,7 +106,8 @@ final class WsClient implements WebSocket.Listener, AutoCloseable {
   }
 
   void send(ByteBuffer b) throws Exception {
-    // The JDK's client masks eight bytes at a time in the buffer's own byte order, which scrambles a
+    // The JDK's client masks eight bytes at a time in the buffer's own byte order, which scrambles
+    // a
     // little-endian buffer's payload: hand it big-endian (the bytes are the same).
     ws.sendBinary(b.order(java.nio.ByteOrder.BIG_ENDIAN), true).get(10, TimeUnit.SECONDS);
   }

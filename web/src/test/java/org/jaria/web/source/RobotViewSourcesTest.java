@@ -65,7 +65,8 @@ class RobotViewSourcesTest {
     assertTrue(loc.localizeRobotAtHomeBlocking(), "localized at home");
     driver = new RobotDriver(robot, path);
     source = new SimWorldSource(world, new SimulationControl(world, 1), OFFICE, "office");
-    source.addOverlay(r.getName(), new NavigationSource(robot, OFFICE, "office", loc, path, driver));
+    source.addOverlay(
+        r.getName(), new NavigationSource(robot, OFFICE, "office", loc, path, driver));
   }
 
   @AfterEach
@@ -139,7 +140,8 @@ class RobotViewSourcesTest {
             () -> path.getState() == ArPathPlanningTask.PathPlanningState.REACHED_GOAL,
             Duration.ofMinutes(2)),
         "reached: " + path.getState() + " " + path.getFailureString());
-    assertTrue(sim.sim().getTruePose().findDistanceTo(goal) < 400, sim.sim().getTruePose().toString());
+    assertTrue(
+        sim.sim().getTruePose().findDistanceTo(goal) < 400, sim.sim().getTruePose().toString());
     assertEquals("goal reached", frame().status().mode());
     assertNull(frame().goal(), "no goal once it is reached");
   }
