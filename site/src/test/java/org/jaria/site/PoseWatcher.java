@@ -58,11 +58,12 @@ final class PoseWatcher implements WebSocket.Listener, AutoCloseable {
     if (last) {
       Matcher m = TRUE_POSE.matcher(text);
       if (m.find()) {
-        w.sendText(
-            "{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":1,\"channelId\":"
-                + m.group(1)
-                + "}]}",
-            true);
+        var unused =
+            w.sendText(
+                "{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":1,\"channelId\":"
+                    + m.group(1)
+                    + "}]}",
+                true);
       }
       text.setLength(0);
     }

@@ -298,7 +298,7 @@ public final class WebBenchmark {
         sb.append(channel).append('}');
         first = false;
       }
-      w.sendText(sb.append("]}"), true);
+      var unused = w.sendText(sb.append("]}"), true);
     }
 
     @Override

@@ -121,7 +121,7 @@ final class Chromium implements AutoCloseable {
   }
 
   private static String find() throws IOException {
-    for (String dir : System.getenv().getOrDefault("PATH", "/usr/bin").split(":")) {
+    for (String dir : System.getenv().getOrDefault("PATH", "/usr/bin").split(":", -1)) {
       for (String name : List.of("chromium", "chromium-browser", "google-chrome")) {
         Path p = Path.of(dir, name);
         if (Files.isExecutable(p)) {

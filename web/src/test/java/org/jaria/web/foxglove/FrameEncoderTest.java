@@ -137,7 +137,7 @@ class FrameEncoderTest {
     Map<?, ?> s = json(m);
     assertNull(s.get("battery_volts"));
     assertTrue(s.containsKey("battery_volts"));
-    assertEquals(Boolean.TRUE, s.get("stalled"));
+    assertEquals(true, s.get("stalled"));
     Map<?, ?> full = json(topic(FrameEncoder.encode(FRAME), "/bot_1/status"));
     assertEquals(12.5, num(full.get("battery_volts")));
     assertEquals("going to the goal", full.get("mode"));

@@ -48,7 +48,7 @@ class WebServerTest {
 
   /** A raw request line, as a browser would never send it (paths that try to leave the page). */
   static String raw(int port, String path) throws IOException {
-    try (Socket s = new Socket("127.0.0.1", port)) {
+    try (Socket s = new Socket(java.net.InetAddress.getLoopbackAddress(), port)) {
       s.setSoTimeout(10_000);
       OutputStream out = s.getOutputStream();
       out.write(
@@ -155,8 +155,7 @@ class WebServerTest {
       // the map is sent at once to a new subscriber, then every frame carries the clock
       WsClient.Received m = c.next(r -> !r.isText() && r.binary().getInt(1) == 9);
       assertEquals(1, m.binary().get(0), "opcode: message data");
-      String mapJson =
-          new String(m.binary().array(), 13, m.binary().limit() - 13, StandardCharsets.UTF_8);
+      String mapJson = new String(body(m.binary()), StandardCharsets.UTF_8);
       assertTrue(mapJson.contains("\"id\":\"walls\""), mapJson);
       WsClient.Received a = c.next(r -> !r.isText() && r.binary().getInt(1) == 7);
       WsClient.Received b = c.next(r -> !r.isText() && r.binary().getInt(1) == 7);
@@ -238,7 +237,7 @@ class WebServerTest {
         WsClient other = WsClient.connect(s.websocketUrl())) {
       c.nextText("serverInfo");
       other.nextText("serverInfo");
-      c.ws.sendText("x".repeat(200_000), true);
+      var unused = c.ws.sendText("x".repeat(200_000), true);
       assertEquals(1009, c.closed.get(20, TimeUnit.SECONDS));
       eventually(() -> s.stats().oversized() == 1, "oversized counted");
       other.send("{\"op\":\"nope\"}");
@@ -252,7 +251,7 @@ class WebServerTest {
         WsClient c = WsClient.connect(s.websocketUrl())) {
       c.nextText("serverInfo");
       for (int i = 0; i < 3000 && !c.closed.isDone(); i++) {
-        c.ws.sendText("{\"op\":\"unsubscribe\",\"subscriptionIds\":[1]}", true);
+        var unused = c.ws.sendText("{\"op\":\"unsubscribe\",\"subscriptionIds\":[1]}", true);
       }
       assertEquals(1008, c.closed.get(30, TimeUnit.SECONDS), "policy violation");
       assertTrue(s.stats().flooded() >= ClientConnection.FLOOD_CLOSE, s.stats().toString());
@@ -280,6 +279,13 @@ class WebServerTest {
       assertEquals(List.of("drive 300.0 0.0", "pause"), controls.calls);
       assertEquals(2, s.stats().controlCommands());
     }
+  }
+
+  /** A message's payload (after the 13-byte header). */
+  static byte[] body(ByteBuffer b) {
+    byte[] out = new byte[b.limit() - 13];
+    b.get(13, out);
+    return out;
   }
 
   static ByteBuffer publish(int channel, String json) {
@@ -335,6 +341,8 @@ class WebServerTest {
     eventually(() -> topics.contains("/clock") && topics.contains("/robot/true_pose"), "recorded");
     s.close();
     assertTrue(closed.get());
-    assertThrows(IOException.class, () -> new Socket("127.0.0.1", port).close());
+    assertThrows(
+        IOException.class,
+        () -> new Socket(java.net.InetAddress.getLoopbackAddress(), port).close());
   }
 }
