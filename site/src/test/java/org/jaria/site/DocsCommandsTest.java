@@ -266,6 +266,12 @@ class DocsCommandsTest {
     simThread.start();
     try {
       waitForPort(port, simOut);
+      long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+      while (!simOut.toString().contains("Web view: open")) {
+        assertTrue(System.nanoTime() < deadline, "no web view address printed:\n" + simOut);
+        // Watching another thread's printed output, which has no event to wait on.
+        TimeUnit.MILLISECONDS.sleep(50);
+      }
       java.util.regex.Matcher m =
           java.util.regex.Pattern.compile("Web view: open (http://\\S+) in a browser")
               .matcher(simOut.toString());
