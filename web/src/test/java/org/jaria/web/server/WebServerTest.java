@@ -299,6 +299,7 @@ class WebServerTest {
   }
 
   @Test
+  @org.junit.jupiter.api.Tag("slow") // fills a socket's buffers at 30 frames a second
   void aClientThatStopsReadingLosesMessagesThenItsConnectionAndOthersGoOn() throws Exception {
     WebOptions o = WebOptions.loopback(0).withLimits(8, 65536, 65536, 500).withRate(30);
     try (WebServer s = WebServer.start(o, new FakeSource(20_000), Controls.NONE);
