@@ -70,6 +70,9 @@ public final class SimCommand implements Callable<Integer> {
 
   @Mixin MobileSimOptions mobileSim = new MobileSimOptions();
 
+  /** --web, --allow-control, --record: watch the world in a browser. */
+  @Mixin org.jaria.tools.web.WebOption web = new org.jaria.tools.web.WebOption();
+
   @Option(
       names = {"-m", "--map", "-map"},
       paramLabel = "FILE",
@@ -494,6 +497,7 @@ public final class SimCommand implements Callable<Integer> {
           exitCode.set(code);
           stop.countDown();
         });
+    org.jaria.tools.web.WebView view = null;
     try {
       world.listen();
     } catch (IOException | RuntimeException e) {
@@ -512,6 +516,7 @@ public final class SimCommand implements Callable<Integer> {
               ? "Ctrl-C stops"
               : "stops after " + seconds + " s of simulated time (or Ctrl-C)");
       out.flush();
+      view = startWebView(world, out);
       if (seconds != null) {
         long end = world.getClock().nanoTime() + Math.round(seconds * 1e9);
         world.addStepListener(
@@ -527,6 +532,9 @@ public final class SimCommand implements Callable<Integer> {
     } catch (InterruptedException e) {
       Thread.currentThread().interrupt();
     } finally {
+      if (view != null) {
+        view.close();
+      }
       summaryOnce(world, out);
       world.close();
       try {
@@ -538,6 +546,24 @@ public final class SimCommand implements Callable<Integer> {
       out.flush();
     }
     return exitCode.get();
+  }
+
+  /** The web view --web or --record asks for (the clock controls only with --allow-control). */
+  private org.jaria.tools.web.WebView startWebView(SimWorld world, PrintWriter out)
+      throws IOException {
+    String mapName = map != null ? map : mobileSim.noMap ? null : "office";
+    var control = new org.jaria.web.source.SimulationControl(world, pacing());
+    var source =
+        new org.jaria.web.source.SimWorldSource(
+            world,
+            control,
+            org.jaria.tools.web.WebOption.mapOrNull(mapName),
+            mapName == null ? "empty" : Path.of(mapName).getFileName().toString());
+    return web.start(
+        "jaria sim · " + (mapName == null ? "empty world" : Path.of(mapName).getFileName()),
+        source,
+        new org.jaria.web.control.Controls(null, control),
+        out);
   }
 
   /**

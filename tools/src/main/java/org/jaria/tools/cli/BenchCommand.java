@@ -20,7 +20,8 @@ import picocli.CommandLine.Spec;
       BenchCommand.Actions.class,
       BenchCommand.Net.class,
       BenchCommand.Mapper.class,
-      BenchCommand.Hostile.class
+      BenchCommand.Hostile.class,
+      BenchCommand.Web.class
     })
 final class BenchCommand implements Runnable {
 
@@ -63,6 +64,19 @@ final class BenchCommand implements Runnable {
     @Override
     String table() throws Exception {
       return ProtocolBenchmark.run(quick);
+    }
+  }
+
+  /** {@code jaria bench web}. */
+  @Command(
+      name = "web",
+      description =
+          "The web view under load: 10 clients at 10 Hz subscribed to everything; server CPU,"
+              + " update latency, the robot cycle with and without it, bytes per client.")
+  static final class Web extends QuickBench {
+    @Override
+    String table() throws Exception {
+      return org.jaria.tools.bench.WebBenchmark.run(quick);
     }
   }
 

@@ -27,6 +27,7 @@ import picocli.CommandLine.Command;
       org.jaria.tools.mapper.MapperCommand.class,
       org.jaria.tools.eztrain.EzTrainCommand.class,
       org.jaria.tools.monitor.MonitorCommand.class,
+      org.jaria.tools.web.WebCommand.class,
       org.jaria.tools.fx.ScreenshotCommand.class,
       BenchCommand.class,
       org.jaria.classroom.cli.GradeCommand.class,

@@ -48,6 +48,9 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
           "Watch it in the simulator view (needs a display); closing the window ends the demo.")
   boolean gui;
 
+  @picocli.CommandLine.Mixin
+  org.jaria.tools.web.WebOption web = new org.jaria.tools.web.WebOption();
+
   /** Without a subcommand: wander, with the options given to {@code demo}. */
   @Override
   public Integer call() throws Exception {
@@ -59,6 +62,7 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
     w.seed = seed;
     w.remote = remote;
     w.gui = gui;
+    w.web = web;
     return w.call();
   }
 
@@ -89,7 +93,11 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
     @Option(names = "--laser-port", description = "The laser's serial device with --remote.")
     String laserPort;
 
+    @picocli.CommandLine.Mixin
+    org.jaria.tools.web.WebOption web = new org.jaria.tools.web.WebOption();
+
     @Override
+    @SuppressWarnings("try") // the web view only needs closing
     public Integer call() throws Exception {
       PrintWriter out = spec.commandLine().getOut();
       PrintWriter err = spec.commandLine().getErr();
@@ -104,6 +112,11 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
           err.println("jaria demo: --gui: " + problem.get());
           return 1;
         }
+      }
+      if (web.enabled() && remote != null) {
+        err.println(
+            "jaria demo: --web shows the embedded simulator; it cannot show a --remote robot");
+        return 2;
       }
       if (remote != null) {
         checkRemote();
@@ -137,10 +150,21 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
             start.y());
         out.println(stopsAfter(seconds));
         out.flush();
-        if (!gui) {
-          return runWander(sim, ticker, l, out);
+        var control = new org.jaria.web.source.SimulationControl(sim.world, 1.0);
+        var source =
+            new org.jaria.web.source.SimWorldSource(
+                sim.world, control, org.jaria.tools.web.WebOption.mapOrNull(map), map);
+        try (var view =
+            web.start(
+                "jaria demo · " + map,
+                source,
+                new org.jaria.web.control.Controls(null, control),
+                out)) {
+          if (!gui) {
+            return runWander(sim, ticker, l, out);
+          }
+          return runWithWindow(sim, ticker, l, out, err);
         }
-        return runWithWindow(sim, ticker, l, out, err);
       }
     }
 

@@ -192,7 +192,12 @@ public final class GuiServerCommand implements Callable<Integer> {
       description = "Stop after this many seconds (default and 0: run until Ctrl-C).")
   int seconds;
 
+  /** --web, --allow-control, --record: watch (and drive) it in a browser. */
+  @picocli.CommandLine.Mixin
+  org.jaria.tools.web.WebOption web = new org.jaria.tools.web.WebOption();
+
   @Override
+  @SuppressWarnings("try") // the web view only needs closing
   public Integer call() {
     PrintWriter out = spec.commandLine().getOut();
     PrintWriter err = spec.commandLine().getErr();
@@ -245,7 +250,13 @@ public final class GuiServerCommand implements Callable<Integer> {
             map,
             speed == 1 ? "real time" : speed + " × real time");
         report(out, s.wasLocalized(), s.robot(), s.nav());
-        return serve(s.gui(), s.robot(), forwarder, out);
+        var nv =
+            org.jaria.tools.web.NavigationView.simulated(
+                s.world(), s.sim().sim().getName(), s.nav(), m, mapName, speed);
+        try (var view =
+            web.start("guiServer · " + mapName, nv.source(), nv.controls(), out, nv.driver())) {
+          return serve(s.gui(), s.robot(), forwarder, out);
+        }
       }
     } catch (IllegalArgumentException | IllegalStateException | IOException e) {
       err.println("guiserver: " + e.getMessage());
@@ -369,6 +380,7 @@ public final class GuiServerCommand implements Callable<Integer> {
     };
   }
 
+  @SuppressWarnings("try") // the web view only needs closing
   private int runOnRobot(ArMap m, String mapName, ServerOptions options, PrintWriter out)
       throws IOException {
     RobotAddress where = robotAddress();
@@ -408,7 +420,10 @@ public final class GuiServerCommand implements Callable<Integer> {
               .mapChange(mapFolder(), nav::setMap)
               .build()) {
         nav.addCommands(gui.getCommands());
-        try (ArHybridForwarderVideo forwarder = forwarder(gui.getServer(), out)) {
+        var nv = org.jaria.tools.web.NavigationView.real(nav, m, mapName);
+        try (ArHybridForwarderVideo forwarder = forwarder(gui.getServer(), out);
+            var view =
+                web.start("guiServer · " + mapName, nv.source(), nv.controls(), out, nv.driver())) {
           gui.open();
           return serve(gui, robot, forwarder, out);
         }
