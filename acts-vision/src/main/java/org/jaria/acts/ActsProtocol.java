@@ -1,8 +1,5 @@
 package org.jaria.acts;
 
-import org.jaria.acts.blob.BlobFrame;
-import org.jaria.acts.color.ChannelBank;
-
 /**
  * The ACTS server's wire protocol, as ARIA's {@code ArACTS_1_2} client expects it.
  *
@@ -17,6 +14,7 @@ import org.jaria.acts.color.ChannelBank;
  *       digits).
  *   <li>Then, for every blob in channel order, {@value #BLOB_SIZE} bytes: area (4 digits), then
  *       xcg, ycg, left, right, top, bottom (2 digits each), in image pixel coordinates.
+ *       ({@code org.jaria.acts.server.ActsReply} writes a tracker's frame this way.)
  * </ul>
  *
  * <p>Worked example: a reply with one blob on channel 1 of area 1234, centre (80, 60), box columns
@@ -37,10 +35,10 @@ public final class ActsProtocol {
   public static final byte REQUEST_QUIT = '1';
 
   /** Number of channels in a reply. */
-  public static final int NUM_CHANNELS = ChannelBank.NUM_CHANNELS;
+  public static final int NUM_CHANNELS = 32;
 
   /** Most blobs per channel. */
-  public static final int MAX_BLOBS = ChannelBank.MAX_TRACKED_BLOBS;
+  public static final int MAX_BLOBS = 10;
 
   /** Bytes of the reply header (4 per channel). */
   public static final int HEADER_SIZE = NUM_CHANNELS * 4;
@@ -87,43 +85,5 @@ public final class ActsProtocol {
       v = (v << 6) | d;
     }
     return v;
-  }
-
-  /**
-   * Encodes a frame's blobs as a reply.
-   *
-   * @param out at least {@link #MAX_REPLY} bytes
-   * @return the reply length
-   */
-  public static int encode(BlobFrame frame, byte[] out) {
-    int index = 0;
-    int pos = HEADER_SIZE;
-    for (int ch = 1; ch <= NUM_CHANNELS; ch++) {
-      int n = frame.getNumBlobs(ch);
-      putNumber(index, 2, out, (ch - 1) * 4);
-      putNumber(n, 2, out, (ch - 1) * 4 + 2);
-      for (int b = 1; b <= n; b++) {
-        var blob = frame.getBlob(ch, b);
-        putNumber(blob.area(), 4, out, pos);
-        putNumber(blob.xcg(), 2, out, pos + 4);
-        putNumber(blob.ycg(), 2, out, pos + 6);
-        putNumber(blob.left(), 2, out, pos + 8);
-        putNumber(blob.right(), 2, out, pos + 10);
-        putNumber(blob.top(), 2, out, pos + 12);
-        putNumber(blob.bottom(), 2, out, pos + 14);
-        pos += BLOB_SIZE;
-      }
-      index += n;
-    }
-    return pos;
-  }
-
-  /** Encodes a frame's blobs as a new reply array of exactly the reply's length. */
-  public static byte[] encode(BlobFrame frame) {
-    byte[] buf = new byte[MAX_REPLY];
-    int n = encode(frame, buf);
-    byte[] out = new byte[n];
-    System.arraycopy(buf, 0, out, 0, n);
-    return out;
   }
 }

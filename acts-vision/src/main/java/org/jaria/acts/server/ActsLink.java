@@ -54,7 +54,7 @@ public final class ActsLink {
     if (!pipeline.processNext(frame)) {
       return;
     }
-    int len = ActsProtocol.encode(frame, reply);
+    int len = ActsReply.encode(frame, reply);
     conn.write(reply, 0, len);
     requestsServed++;
   }

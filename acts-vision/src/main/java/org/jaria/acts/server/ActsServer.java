@@ -112,7 +112,7 @@ public final class ActsServer implements AutoCloseable {
     BlobFrame empty = new BlobFrame();
     empty.clear(pipeline.width(), pipeline.height());
     latest = empty;
-    reply = ActsProtocol.encode(empty);
+    reply = ActsReply.encode(empty);
   }
 
   /**
@@ -193,7 +193,7 @@ public final class ActsServer implements AutoCloseable {
               "ACTS: {} has no more frames; serving the last one", pipeline.source().describe());
           return;
         }
-        int n = ActsProtocol.encode(frame, buf);
+        int n = ActsReply.encode(frame, buf);
         byte[] r = new byte[n];
         System.arraycopy(buf, 0, r, 0, n);
         lock.lock();

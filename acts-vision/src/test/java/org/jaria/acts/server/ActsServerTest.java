@@ -154,7 +154,7 @@ class ActsServerTest {
       out.write(
           "hello ACTS\r\n\u0000\u00ff0".getBytes(java.nio.charset.StandardCharsets.ISO_8859_1));
       out.flush();
-      int replyLength = ActsProtocol.encode(server.latestFrame()).length;
+      int replyLength = ActsReply.encode(server.latestFrame()).length;
       assertEquals(replyLength, rude.getInputStream().readNBytes(replyLength).length);
       for (int i = 0; i < 200; i++) {
         out.write('0');
@@ -177,7 +177,7 @@ class ActsServerTest {
   void repliesAreExactlyTheEncodedLatestFrame() throws Exception {
     try (Socket s = new Socket(InetAddress.getLoopbackAddress(), server.getPort())) {
       s.getOutputStream().write('0');
-      byte[] expected = ActsProtocol.encode(server.latestFrame());
+      byte[] expected = ActsReply.encode(server.latestFrame());
       byte[] got = s.getInputStream().readNBytes(expected.length);
       assertArrayEquals(expected, got);
     }

@@ -26,7 +26,7 @@ import org.jaria.robot.ArRobot;
  * robot has them) and the map's forbidden lines as range devices; SonARNL sonar localization; path
  * planning with the lost and slow-down-when-uncertain actions; all parameters in one {@link
  * ArConfig} that monitors can edit. Hand {@link #localization()}, {@link #pathPlanning()} and
- * {@link #configRegistry()} to a {@link org.jaria.net.server.GuiServer}.
+ * {@link #configRegistry()} to a {@link org.jaria.net.guiserver.GuiServer}.
  *
  * <pre>{@code
  * try (ArnlNavigation nav = ArnlNavigation.create(robot, map, ArnlNavigation.Mode.THREADED, 1)) {

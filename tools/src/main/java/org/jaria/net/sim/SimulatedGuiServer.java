@@ -6,7 +6,7 @@ import java.util.Objects;
 import org.jaria.acts.ptz.ArVCC4;
 import org.jaria.map.ArMap;
 import org.jaria.net.arnl.ArnlNavigation;
-import org.jaria.net.server.GuiServer;
+import org.jaria.net.guiserver.GuiServer;
 import org.jaria.net.server.MapFolder;
 import org.jaria.net.server.ServerOptions;
 import org.jaria.robot.ArRobot;

@@ -12,7 +12,7 @@ import org.jaria.protocol.ArRobotPacketReceiver;
 import org.jaria.protocol.DropCounters;
 import org.jaria.protocol.DropReason;
 import org.jaria.protocol.Hex;
-import org.jaria.protocol.PacketFormatter;
+import org.jaria.protocol.packets.PacketFormatter;
 import org.jaria.util.UserFiles;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;

@@ -25,7 +25,7 @@ import org.jaria.net.forward.ForwarderStats;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ArServerUserInfo;
 import org.jaria.net.server.Authenticator;
-import org.jaria.net.server.GuiServer;
+import org.jaria.net.guiserver.GuiServer;
 import org.jaria.net.server.MapFolder;
 import org.jaria.net.server.ServerOptions;
 import org.jaria.net.server.modes.ArServerModes;

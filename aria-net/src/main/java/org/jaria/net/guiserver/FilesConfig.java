@@ -1,4 +1,4 @@
-package org.jaria.net.server;
+package org.jaria.net.guiserver;
 
 import java.util.ArrayList;
 import java.util.List;

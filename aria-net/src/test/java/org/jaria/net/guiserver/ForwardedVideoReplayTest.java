@@ -1,5 +1,7 @@
-package org.jaria.net.server;
+package org.jaria.net.guiserver;
 
+import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.ServerOptions;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

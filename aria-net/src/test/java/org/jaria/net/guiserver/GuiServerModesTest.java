@@ -1,4 +1,4 @@
-package org.jaria.net.server;
+package org.jaria.net.guiserver;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;

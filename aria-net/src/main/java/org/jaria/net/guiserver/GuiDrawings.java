@@ -1,4 +1,4 @@
-package org.jaria.net.server;
+package org.jaria.net.guiserver;
 
 import org.jaria.net.data.ArDrawingData;
 import org.jaria.net.data.Points;

@@ -1,5 +1,6 @@
-package org.jaria.net.server;
+package org.jaria.net.guiserver;
 
+import org.jaria.net.server.ArServerBase;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

@@ -1,5 +1,6 @@
-package org.jaria.net.server;
+package org.jaria.net.guiserver;
 
+import org.jaria.net.server.ServerOptions;
 import java.time.Duration;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;

@@ -1,5 +1,10 @@
-package org.jaria.net.server;
+package org.jaria.net.guiserver;
 
+import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.CallPolicy;
+import org.jaria.net.server.MapFolder;
+import org.jaria.net.server.ServerOptions;
+import org.jaria.net.server.Where;
 import java.io.IOException;
 import java.util.Locale;
 import java.util.Objects;

@@ -1,17 +1,11 @@
-package org.jaria.protocol;
+package org.jaria.protocol.packets;
 
 import java.util.Locale;
-import org.jaria.protocol.packets.ArConfigPacket;
-import org.jaria.protocol.packets.EncoderPacket;
-import org.jaria.protocol.packets.GripperPacket;
-import org.jaria.protocol.packets.GyroPacket;
-import org.jaria.protocol.packets.IoPacket;
-import org.jaria.protocol.packets.JoystickPacket;
-import org.jaria.protocol.packets.PacketIds;
-import org.jaria.protocol.packets.SerAuxPacket;
-import org.jaria.protocol.packets.SimStatPacket;
-import org.jaria.protocol.packets.StandardSip;
-import org.jaria.protocol.packets.Tcm2Packet;
+import org.jaria.protocol.ArCommands;
+import org.jaria.protocol.ArRobotPacket;
+import org.jaria.protocol.ArgKind;
+import org.jaria.protocol.CommandCodec;
+import org.jaria.protocol.Hex;
 
 /**
  * Describes ARCOS packets in words, for protocol debugging ({@code ./jaria packets}). The same
