@@ -30,7 +30,7 @@ public record SimOptions(
     SonarOptions sonar,
     OdometryError odometryError,
     int basePort,
-    ServerOptions server,
+    SimServerOptions server,
     SimProfile profile) {
 
   /** MobileSim's first robot port. */
@@ -104,7 +104,7 @@ public record SimOptions(
     private SonarOptions sonar = SonarOptions.DEFAULTS;
     private OdometryError odometryError = OdometryError.NONE;
     private int basePort = DEFAULT_PORT;
-    private ServerOptions server = ServerOptions.DEFAULTS;
+    private SimServerOptions server = SimServerOptions.DEFAULTS;
     private SimProfile profile = SimProfile.PIONEER;
 
     private Builder() {}
@@ -176,7 +176,7 @@ public record SimOptions(
     }
 
     /** How the robots' ports treat their clients. */
-    public Builder server(ServerOptions s) {
+    public Builder server(SimServerOptions s) {
       server = s;
       return this;
     }

@@ -304,7 +304,7 @@ public final class SimRobot implements CameraMount {
   }
 
   /** The last laser scan, or null if the robot has no laser or has not scanned yet. */
-  public LaserScan getLaserScan() {
+  public SimLaserScan getLaserScan() {
     world.lock.lock();
     try {
       return Views.laser(slot.body);

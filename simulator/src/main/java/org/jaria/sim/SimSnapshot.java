@@ -45,7 +45,7 @@ public record SimSnapshot(long simTimeNanos, List<RobotView> robots, List<SimObs
       ArPose odometryPose,
       List<ArPose> footprint,
       List<SonarView> sonar,
-      LaserScan laser,
+      SimLaserScan laser,
       int stallAndBumpers,
       double vel,
       double rotVel,

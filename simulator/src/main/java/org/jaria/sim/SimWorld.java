@@ -101,7 +101,7 @@ public final class SimWorld implements AutoCloseable, CameraScene {
         new WorldTick(this, clock, options.tick().toNanos(), statics, geometry, serving, robots);
     this.name =
         "world-" + WORLD_NUMBERS.incrementAndGet() + "-" + MapSupport.shortName(map.source());
-    ServerOptions so = options.server();
+    SimServerOptions so = options.server();
     Path folder = so.mapFolder() != null ? so.mapFolder() : Path.of("");
     this.mapLoader =
         new ClientMapLoader(

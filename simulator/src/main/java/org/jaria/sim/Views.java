@@ -66,7 +66,7 @@ final class Views {
         org.jaria.geom.ArMath.fixAngle(b.trueTh() + m.getSonarTh(i)));
   }
 
-  static LaserScan laser(RobotBody b) {
+  static SimLaserScan laser(RobotBody b) {
     LaserModel l = b.laser();
     if (l == null || l.lastCount() == 0) {
       return null;
@@ -78,7 +78,7 @@ final class Views {
         ranges[k] = max; // drawn to the end of the beam, as the record says
       }
     }
-    return new LaserScan(
+    return new SimLaserScan(
         new ArPose(l.originX(), l.originY(), l.originTh()), l.getStart(), l.beamSpacing(), ranges);
   }
 }

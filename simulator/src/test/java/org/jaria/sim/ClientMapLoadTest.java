@@ -43,7 +43,7 @@ class ClientMapLoadTest {
   private static SimOptions inFolder(Path dir, long maxBytes) {
     return SimOptions.builder()
         .watchdogMillis(0)
-        .server(ServerOptions.DEFAULTS.withMapFolder(dir, maxBytes))
+        .server(SimServerOptions.DEFAULTS.withMapFolder(dir, maxBytes))
         .build();
   }
 
@@ -150,7 +150,7 @@ class ClientMapLoadTest {
     SimOptions o =
         SimOptions.builder()
             .watchdogMillis(0)
-            .server(ServerOptions.DEFAULTS.withIgnoredCommands(Set.of(239, 224)))
+            .server(SimServerOptions.DEFAULTS.withIgnoredCommands(Set.of(239, 224)))
             .build();
     try (SimWorld w = SimWorld.empty(o)) {
       AtomicInteger exit = new AtomicInteger(-1);

@@ -233,7 +233,7 @@ class DevicesTest {
       double laserX = r.getModel().getLaserX();
       assertEquals(3000 - laserX, ranges[90], 4 * 5, "straight ahead");
       assertEquals((3000 - laserX) / Math.cos(Math.toRadians(45)), ranges[135], 30);
-      LaserScan truth = r.getLaserScan();
+      SimLaserScan truth = r.getLaserScan();
       assertNotNull(truth);
       assertEquals(181, truth.size());
       assertEquals(ranges[90], truth.range(90));

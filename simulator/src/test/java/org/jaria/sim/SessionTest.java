@@ -326,7 +326,7 @@ class SessionTest {
     SimOptions o =
         SimOptions.builder()
             .watchdogMillis(0)
-            .server(ServerOptions.DEFAULTS.withMapFolder(dir, 1 << 20))
+            .server(SimServerOptions.DEFAULTS.withMapFolder(dir, 1 << 20))
             .build();
     try (SimWorld w = SimWorld.empty(o)) {
       SimRobot r = w.addRobot("p3dx-sh");

@@ -42,24 +42,24 @@ class LocStateAndPathTest {
 
   @Test
   void pathIsAByte2CountAndPoints() {
-    PlannedPath path = new PlannedPath(Points.ofFlat(new int[] {1, 2, -3, 4}, 2));
+    PathPoints path = new PathPoints(Points.ofFlat(new int[] {1, 2, -3, 4}, 2));
     ArNetPacket p = new ArNetPacket();
     path.write(p);
     assertArrayEquals(
         new byte[] {2, 0, 1, 0, 0, 0, 2, 0, 0, 0, -3, -1, -1, -1, 4, 0, 0, 0}, p.toByteArray());
-    assertEquals(path, PlannedPath.read(p.toReader()));
+    assertEquals(path, PathPoints.read(p.toReader()));
   }
 
   @Test
   void hostilePathsAreErrors() {
     assertThrows(
         ArNetPacketException.class,
-        () -> PlannedPath.read(new ArNetPacket().byte2ToBuf(30000).byte4ToBuf(1).toReader()));
+        () -> PathPoints.read(new ArNetPacket().byte2ToBuf(30000).byte4ToBuf(1).toReader()));
     assertThrows(
         ArNetPacketException.class,
-        () -> PlannedPath.read(new ArNetPacket().byte2ToBuf(-2).toReader()));
+        () -> PathPoints.read(new ArNetPacket().byte2ToBuf(-2).toReader()));
     assertThrows(
         IllegalArgumentException.class,
-        () -> new PlannedPath(Points.ofFlat(new int[2 * (PlannedPath.MAX_POINTS + 1)], 2)));
+        () -> new PathPoints(Points.ofFlat(new int[2 * (PathPoints.MAX_POINTS + 1)], 2)));
   }
 }

@@ -27,7 +27,7 @@ class SimulatedLaserTest {
         LaserScan scan = laser.getLaserScan();
         assertNotNull(scan);
         assertEquals(181, scan.size());
-        org.jaria.sim.LaserScan truth = r.getLaserScan();
+        org.jaria.sim.SimLaserScan truth = r.getLaserScan();
         int compared = 0;
         for (int i = 0; i < scan.size(); i += 10) {
           if (truth.range(i) > 0 && truth.range(i) < 30000) {

@@ -19,7 +19,7 @@ import org.jaria.connection.ArTcpConnection;
 import org.jaria.protocol.Hex;
 import org.jaria.robot.ArRobot;
 import org.jaria.sim.ServerCounters;
-import org.jaria.sim.ServerOptions;
+import org.jaria.sim.SimServerOptions;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
@@ -45,7 +45,7 @@ class HostileSimClientsTest {
             "office",
             SimOptions.builder()
                 .basePort(0)
-                .server(ServerOptions.DEFAULTS.withTimeouts(5000, 10_000))
+                .server(SimServerOptions.DEFAULTS.withTimeouts(5000, 10_000))
                 .build());
     w.addRobot("p3dx-sh");
     w.listen();

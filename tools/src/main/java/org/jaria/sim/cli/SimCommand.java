@@ -18,7 +18,7 @@ import org.jaria.map.MapNames;
 import org.jaria.sim.OdometryError;
 import org.jaria.sim.RobotFactory;
 import org.jaria.sim.RobotOptions;
-import org.jaria.sim.ServerOptions;
+import org.jaria.sim.SimServerOptions;
 import org.jaria.sim.ServerPlan;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
@@ -403,8 +403,8 @@ public final class SimCommand implements Callable<Integer> {
   }
 
   /** What --cwd and --ignore-command ask of the robots' ports. */
-  private ServerOptions serverOptions() {
-    ServerOptions so = ServerOptions.DEFAULTS.withIgnoredCommands(Set.copyOf(ignoreCommands));
+  private SimServerOptions serverOptions() {
+    SimServerOptions so = SimServerOptions.DEFAULTS.withIgnoredCommands(Set.copyOf(ignoreCommands));
     if (cwd != null) {
       if (!Files.isDirectory(cwd)) {
         throw new ParameterException(

@@ -50,7 +50,7 @@ public final class AreaTool implements MapTool {
     start = null;
     if (Math.abs(b[0] - a[0]) >= 1 && Math.abs(b[1] - a[1]) >= 1) {
       c.document()
-          .execute(MapCommands.addObject(ArMapObject.forbiddenArea(a[0], a[1], b[0], b[1])));
+          .execute(MapEdits.addObject(ArMapObject.forbiddenArea(a[0], a[1], b[0], b[1])));
     }
     c.redraw();
   }

@@ -68,9 +68,9 @@ public final class LineTool implements MapTool {
     }
     if (forbidden) {
       c.document()
-          .execute(MapCommands.addObject(ArMapObject.forbiddenLine(a[0], a[1], b[0], b[1])));
+          .execute(MapEdits.addObject(ArMapObject.forbiddenLine(a[0], a[1], b[0], b[1])));
     } else {
-      c.document().execute(MapCommands.addLine(new ArLineSegment(a[0], a[1], b[0], b[1])));
+      c.document().execute(MapEdits.addLine(new ArLineSegment(a[0], a[1], b[0], b[1])));
     }
     c.redraw();
   }

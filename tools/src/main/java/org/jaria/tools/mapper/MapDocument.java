@@ -11,7 +11,7 @@ import org.jaria.map.ArMap;
 
 /**
  * A map being edited: its current {@link MapContent}, the undo and redo history, the file it came
- * from and whether it has unsaved changes. Edits are {@link MapCommand}s run through {@link
+ * from and whether it has unsaved changes. Edits are {@link MapEdit}s run through {@link
  * #execute}; each one records the content before and after, so undo and redo are exact.
  *
  * <p>Used on the JavaFX thread; saving hands an immutable content to {@link MapFile} on a worker
@@ -119,7 +119,7 @@ public final class MapDocument {
    *
    * @throws IllegalArgumentException if the edit cannot apply
    */
-  public void execute(MapCommand command) {
+  public void execute(MapEdit command) {
     MapContent after = command.apply(content, ids::getAndIncrement);
     if (after.equals(content)) {
       return;

@@ -287,7 +287,7 @@ final class MapperActions {
       w.status("Nothing selected to delete");
       return;
     }
-    w.document().execute(MapCommands.delete(s.ids(), s.points()));
+    w.document().execute(MapEdits.delete(s.ids(), s.points()));
     s.clear();
   }
 
@@ -326,7 +326,7 @@ final class MapperActions {
                 double th = Double.parseDouble(s.trim().replace(',', '.'));
                 w.document()
                     .execute(
-                        MapCommands.replace(
+                        MapEdits.replace(
                             "Rotate", id, MapGeometry.withHeading(e.get().object(), th)));
               } catch (NumberFormatException ex) {
                 w.prompts().error("Not a heading", "'" + s + "' is not a number of degrees.");

@@ -466,7 +466,7 @@ public final class MapperWindow implements DesktopApp {
         prompts.askText("Rename", "New name of the " + ObjectKind.describe(o.type()), o.name());
     if (name.isPresent() && !name.get().equals(o.name())) {
       try {
-        doc[0].execute(MapCommands.replace("Rename", id, MapGeometry.renamed(o, name.get())));
+        doc[0].execute(MapEdits.replace("Rename", id, MapGeometry.renamed(o, name.get())));
       } catch (IllegalArgumentException ex) {
         prompts.error("Cannot rename", ex.getMessage() + "\n\nChoose a name without quotes.");
       }

@@ -114,12 +114,12 @@ final class ObjectPanel extends VBox {
     try {
       if (!name.getText().equals(o.name())) {
         document[0].execute(
-            MapCommands.replace("Rename", e.get().id(), MapGeometry.renamed(o, name.getText())));
+            MapEdits.replace("Rename", e.get().id(), MapGeometry.renamed(o, name.getText())));
         o = document[0].content().findObject(e.get().id()).orElseThrow().object();
       }
       if (Math.abs(th - o.pose().th()) > 1e-9) {
         document[0].execute(
-            MapCommands.replace("Rotate", e.get().id(), MapGeometry.withHeading(o, th)));
+            MapEdits.replace("Rotate", e.get().id(), MapGeometry.withHeading(o, th)));
       }
     } catch (IllegalArgumentException ex) {
       prompts.error("Cannot change the object", ex.getMessage());

@@ -69,7 +69,7 @@ public final class PlaceTool implements MapTool {
     }
     ArMapObject o = make(c.document().content(), at[0], at[1], heading);
     at = null;
-    c.document().execute(MapCommands.addObject(o));
+    c.document().execute(MapEdits.addObject(o));
     c.redraw();
   }
 

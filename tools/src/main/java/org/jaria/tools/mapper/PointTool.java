@@ -33,7 +33,7 @@ public final class PointTool implements MapTool {
     double[] p = c.snap(c.viewport().toWorldX(e.getX()), c.viewport().toWorldY(e.getY()));
     c.document()
         .execute(
-            MapCommands.addPoints(
+            MapEdits.addPoints(
                 new int[] {(int) Math.round(p[0])}, new int[] {(int) Math.round(p[1])}));
     c.redraw();
     return p;

@@ -140,7 +140,7 @@ public final class SelectTool implements MapTool {
           c.rename(single);
         } else if ((d[0] != 0 || d[1] != 0) && !c.selection().isEmpty()) {
           c.document()
-              .execute(MapCommands.move(c.selection().ids(), c.selection().points(), d[0], d[1]));
+              .execute(MapEdits.move(c.selection().ids(), c.selection().points(), d[0], d[1]));
         }
       }
       case BOX -> selectBox(c);
@@ -149,7 +149,7 @@ public final class SelectTool implements MapTool {
         if (area != null && rotation != area.object().pose().th()) {
           c.document()
               .execute(
-                  MapCommands.replace(
+                  MapEdits.replace(
                       "Rotate", area.id(), MapGeometry.withHeading(area.object(), rotation)));
         }
       }

@@ -12,7 +12,7 @@ import org.jaria.net.data.LocState;
 import org.jaria.net.data.LocalizationSnapshot;
 import org.jaria.net.data.NamedDrawing;
 import org.jaria.net.data.PathSnapshot;
-import org.jaria.net.data.PlannedPath;
+import org.jaria.net.data.PathPoints;
 import org.jaria.net.data.Points;
 import org.jaria.net.data.PopupLayout;
 import org.slf4j.Logger;
@@ -54,7 +54,7 @@ final class LinkExtras {
         "getPath",
         p -> {
           if (!client.dataExists("getPathSnapshot")) {
-            state.path = new PathSnapshot("", "", null, PlannedPath.read(p).path(), Points.EMPTY);
+            state.path = new PathSnapshot("", "", null, PathPoints.read(p).path(), Points.EMPTY);
             changed.run();
           }
         });

@@ -67,7 +67,7 @@ public final class MonitorWindow implements DesktopApp {
   private final String password;
   private final MonitorState state = new MonitorState();
   private final AtomicBoolean dirty = new AtomicBoolean(true);
-  private final RobotLink link;
+  private final GuiServerLink link;
   private final BackgroundWork work = new BackgroundWork("monitor-network");
   private final MonitorCanvas canvas;
   private final TeleopKeys teleop;
@@ -125,7 +125,7 @@ public final class MonitorWindow implements DesktopApp {
     this.port = port;
     this.user = user == null ? "" : user;
     this.password = password;
-    this.link = new RobotLink(state, () -> dirty.set(true));
+    this.link = new GuiServerLink(state, () -> dirty.set(true));
     this.canvas = new MonitorCanvas(state);
     canvas.setId("map");
     canvas.setOnGoto(this::gotoPose);

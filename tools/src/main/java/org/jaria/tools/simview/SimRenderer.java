@@ -11,7 +11,7 @@ import javafx.scene.text.Font;
 import javafx.scene.text.TextAlignment;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
-import org.jaria.sim.LaserScan;
+import org.jaria.sim.SimLaserScan;
 import org.jaria.sim.SimObstacle;
 import org.jaria.sim.SimSnapshot;
 import org.jaria.sim.camera.ColoredObject;
@@ -284,7 +284,7 @@ public final class SimRenderer {
     gc.strokeArc(x - r, y - r, 2 * r, 2 * r, start, s.coneDeg(), ArcType.OPEN);
   }
 
-  private static void laser(GraphicsContext gc, Viewport vp, LaserScan scan) {
+  private static void laser(GraphicsContext gc, Viewport vp, SimLaserScan scan) {
     ArPose o = scan.origin();
     double ox = vp.toScreenX(o.x());
     double oy = vp.toScreenY(o.y());

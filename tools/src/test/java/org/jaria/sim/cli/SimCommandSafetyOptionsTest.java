@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.nio.file.Path;
 import java.util.Set;
-import org.jaria.sim.ServerOptions;
+import org.jaria.sim.SimServerOptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
@@ -14,7 +14,7 @@ import picocli.CommandLine;
 /** MobileSim's --cwd and --ignore-command, as the "Hostile clients" section of the guide uses. */
 class SimCommandSafetyOptionsTest {
 
-  private static ServerOptions parse(String... args) {
+  private static SimServerOptions parse(String... args) {
     SimCommand cmd = new SimCommand();
     new CommandLine(cmd).parseArgs(args);
     return cmd.buildOptions().server();
@@ -22,16 +22,16 @@ class SimCommandSafetyOptionsTest {
 
   @Test
   void cwdAndIgnoreCommandAsInTheGuide(@TempDir Path maps) {
-    ServerOptions o =
+    SimServerOptions o =
         parse("--cwd", maps.toString(), "--ignore-command", "239", "--ignore-command", "224");
     assertEquals(maps, o.mapFolder());
     assertEquals(Set.of(239, 224), o.ignoredCommands());
-    assertEquals(ServerOptions.DEFAULTS.handshakeTimeoutMillis(), o.handshakeTimeoutMillis());
+    assertEquals(SimServerOptions.DEFAULTS.handshakeTimeoutMillis(), o.handshakeTimeoutMillis());
   }
 
   @Test
   void theDefaultsAreSafe() {
-    ServerOptions o = parse();
+    SimServerOptions o = parse();
     assertNull(o.mapFolder(), "maps from the working directory, for local clients only");
     assertEquals(Set.of(), o.ignoredCommands());
     assertEquals(false, o.remoteExit());

@@ -22,8 +22,8 @@ class MapDocumentTest {
   void undoRedoRestoreExactContentAndNames() {
     MapDocument d = MapDocument.newMap();
     MapContent empty = d.content();
-    d.execute(MapCommands.addLine(new ArLineSegment(0, 0, 1000, 0)));
-    d.execute(MapCommands.addObject(ArMapObject.goal("A", 10, 20)));
+    d.execute(MapEdits.addLine(new ArLineSegment(0, 0, 1000, 0)));
+    d.execute(MapEdits.addObject(ArMapObject.goal("A", 10, 20)));
     MapContent two = d.content();
     assertEquals("Add goal", d.undoName());
     assertTrue(d.undo());
@@ -42,9 +42,9 @@ class MapDocumentTest {
   @Test
   void newEditClearsRedo() {
     MapDocument d = MapDocument.newMap();
-    d.execute(MapCommands.addObject(ArMapObject.goal("A", 0, 0)));
+    d.execute(MapEdits.addObject(ArMapObject.goal("A", 0, 0)));
     d.undo();
-    d.execute(MapCommands.addObject(ArMapObject.goal("B", 0, 0)));
+    d.execute(MapEdits.addObject(ArMapObject.goal("B", 0, 0)));
     assertFalse(d.canRedo());
     assertEquals("B", d.content().objects().get(0).object().name());
   }
@@ -52,7 +52,7 @@ class MapDocumentTest {
   @Test
   void editThatChangesNothingIsNotRecorded() {
     MapDocument d = MapDocument.newMap();
-    d.execute(MapCommands.delete(Set.of(), new BitSet()));
+    d.execute(MapEdits.delete(Set.of(), new BitSet()));
     assertFalse(d.canUndo());
     assertFalse(d.isModified());
   }
@@ -61,12 +61,12 @@ class MapDocumentTest {
   void modifiedFollowsTheSavedStateThroughUndoAndRedo() {
     MapDocument d = MapDocument.newMap();
     assertFalse(d.isModified());
-    d.execute(MapCommands.addObject(ArMapObject.goal("A", 0, 0)));
+    d.execute(MapEdits.addObject(ArMapObject.goal("A", 0, 0)));
     assertTrue(d.isModified());
     d.markSaved(d.saveMark(), FILE);
     assertFalse(d.isModified());
     assertEquals("x.map", d.title());
-    d.execute(MapCommands.addObject(ArMapObject.goal("B", 0, 0)));
+    d.execute(MapEdits.addObject(ArMapObject.goal("B", 0, 0)));
     assertTrue(d.isModified());
     d.undo();
     assertFalse(d.isModified());
@@ -79,10 +79,10 @@ class MapDocumentTest {
   @Test
   void savedStateOverwrittenAfterUndoStaysModified() {
     MapDocument d = MapDocument.newMap();
-    d.execute(MapCommands.addObject(ArMapObject.goal("A", 0, 0)));
+    d.execute(MapEdits.addObject(ArMapObject.goal("A", 0, 0)));
     d.markSaved(d.saveMark(), FILE);
     d.undo();
-    d.execute(MapCommands.addObject(ArMapObject.goal("B", 0, 0)));
+    d.execute(MapEdits.addObject(ArMapObject.goal("B", 0, 0)));
     assertTrue(d.isModified());
     d.undo();
     assertTrue(d.isModified(), "the saved state (with A) can no longer be reached");
@@ -91,9 +91,9 @@ class MapDocumentTest {
   @Test
   void saveStartedBeforeMoreEditsMarksTheRightState() {
     MapDocument d = MapDocument.newMap();
-    d.execute(MapCommands.addObject(ArMapObject.goal("A", 0, 0)));
+    d.execute(MapEdits.addObject(ArMapObject.goal("A", 0, 0)));
     long mark = d.saveMark();
-    d.execute(MapCommands.addObject(ArMapObject.goal("B", 0, 0)));
+    d.execute(MapEdits.addObject(ArMapObject.goal("B", 0, 0)));
     d.markSaved(mark, FILE); // the background save finished after B was added
     assertTrue(d.isModified());
     d.undo();
@@ -104,7 +104,7 @@ class MapDocumentTest {
   void historyIsBoundedAndForgottenStatesAreModified() {
     MapDocument d = MapDocument.newMap();
     for (int i = 0; i < MapDocument.UNDO_LIMIT + 5; i++) {
-      d.execute(MapCommands.addObject(ArMapObject.goal("G" + i, i, 0)));
+      d.execute(MapEdits.addObject(ArMapObject.goal("G" + i, i, 0)));
     }
     int undone = 0;
     while (d.undo()) {
@@ -120,7 +120,7 @@ class MapDocumentTest {
     MapDocument d = MapDocument.newMap();
     assertThrows(
         IllegalArgumentException.class,
-        () -> d.execute(MapCommands.replace("Rename", 42, ArMapObject.goal("x", 0, 0))));
+        () -> d.execute(MapEdits.replace("Rename", 42, ArMapObject.goal("x", 0, 0))));
   }
 
   @Test
@@ -128,7 +128,7 @@ class MapDocumentTest {
     MapDocument d = MapDocument.newMap();
     int[] calls = {0};
     d.addListener(() -> calls[0]++);
-    d.execute(MapCommands.addPoints(new int[] {1, 2}, new int[] {3, 4}));
+    d.execute(MapEdits.addPoints(new int[] {1, 2}, new int[] {3, 4}));
     d.undo();
     d.redo();
     d.markSaved(d.saveMark(), FILE);

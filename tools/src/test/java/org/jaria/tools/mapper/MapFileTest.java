@@ -63,9 +63,9 @@ class MapFileTest {
             .findFirst()
             .orElseThrow();
     d.execute(
-        MapCommands.replace(
+        MapEdits.replace(
             "Rename", lobby.id(), MapGeometry.renamed(lobby.object(), "Front door")));
-    d.execute(MapCommands.delete(Set.of(goal1.id()), new BitSet()));
+    d.execute(MapEdits.delete(Set.of(goal1.id()), new BitSet()));
     save(d, file);
 
     List<String> after = Files.readAllLines(file, StandardCharsets.UTF_8);
@@ -83,10 +83,10 @@ class MapFileTest {
   void secondSaveAfterMoreEditsStillTouchesOnlyThose() throws Exception {
     Path file = TestFiles.columbiaCopy(dir);
     MapDocument d = open(file);
-    d.execute(MapCommands.addObject(ArMapObject.goal("New", 1000, 1000)));
+    d.execute(MapEdits.addObject(ArMapObject.goal("New", 1000, 1000)));
     save(d, file);
     long newId = d.content().objects().get(d.content().objects().size() - 1).id();
-    d.execute(MapCommands.move(Set.of(newId), new BitSet(), 500, 0));
+    d.execute(MapEdits.move(Set.of(newId), new BitSet(), 500, 0));
     save(d, file);
     ArMap m = ArMap.readFile(file);
     assertEquals(1500, m.findMapObject("New").orElseThrow().pose().x());
@@ -97,10 +97,10 @@ class MapFileTest {
   void editedLinesAndPointsAreRegenerated() throws Exception {
     Path file = TestFiles.columbiaCopy(dir);
     MapDocument d = open(file);
-    d.execute(MapCommands.addLine(new ArLineSegment(0, 0, 1234, 0)));
+    d.execute(MapEdits.addLine(new ArLineSegment(0, 0, 1234, 0)));
     BitSet firstTen = new BitSet();
     firstTen.set(0, 10);
-    d.execute(MapCommands.delete(Set.of(), firstTen));
+    d.execute(MapEdits.delete(Set.of(), firstTen));
     save(d, file);
     ArMap m = ArMap.readFile(file);
     assertEquals(471, m.getLines().size());
@@ -111,9 +111,9 @@ class MapFileTest {
   @Test
   void newMapIsSavedAndReadBack() throws Exception {
     MapDocument d = MapDocument.newMap();
-    d.execute(MapCommands.addLine(new ArLineSegment(0, 0, 5000, 0)));
-    d.execute(MapCommands.addObject(ArMapObject.robotHome("", 100, 100, 0)));
-    d.execute(MapCommands.addObject(ArMapObject.forbiddenArea(1000, 1000, 800, 400, 30)));
+    d.execute(MapEdits.addLine(new ArLineSegment(0, 0, 5000, 0)));
+    d.execute(MapEdits.addObject(ArMapObject.robotHome("", 100, 100, 0)));
+    d.execute(MapEdits.addObject(ArMapObject.forbiddenArea(1000, 1000, 800, 400, 30)));
     Path out = dir.resolve("new.map");
     save(d, out);
     ArMap m = ArMap.readFile(out);
@@ -223,8 +223,8 @@ class MapFileTest {
             .filter(e -> e.object().isAreaType())
             .findFirst()
             .orElseThrow();
-    d.execute(MapCommands.replace("Rotate", area.id(), MapGeometry.withHeading(area.object(), 75)));
-    d.execute(MapCommands.addObject(ArMapObject.goal("Goal3", 1000, 4000)));
+    d.execute(MapEdits.replace("Rotate", area.id(), MapGeometry.withHeading(area.object(), 75)));
+    d.execute(MapEdits.addObject(ArMapObject.goal("Goal3", 1000, 4000)));
     save(d, f);
     List<String> before = EX4.lines().toList();
     List<String> after = Files.readAllLines(f);

@@ -185,7 +185,7 @@ class MapperWindowTest {
         () -> {
           window
               .document()
-              .execute(MapCommands.addObject(ArMapObject.forbiddenArea(0, 0, 4000, 2000)));
+              .execute(MapEdits.addObject(ArMapObject.forbiddenArea(0, 0, 4000, 2000)));
           window.view().viewport().setScale(0.05);
           window.view().centerOn(2000, 1000);
           window.view().paint();
@@ -359,12 +359,12 @@ class MapperWindowTest {
         () -> {
           window
               .document()
-              .execute(MapCommands.addObject(ArMapObject.forbiddenArea(0, 0, 3000, 3000)));
+              .execute(MapEdits.addObject(ArMapObject.forbiddenArea(0, 0, 3000, 3000)));
           window
               .document()
-              .execute(MapCommands.addObject(ArMapObject.robotHome("", 1500, 1500, 0)));
-          window.document().execute(MapCommands.addLine(new ArLineSegment(6000, 0, 6000, 5000)));
-          window.document().execute(MapCommands.addObject(ArMapObject.goal("Wall", 6100, 2000)));
+              .execute(MapEdits.addObject(ArMapObject.robotHome("", 1500, 1500, 0)));
+          window.document().execute(MapEdits.addLine(new ArLineSegment(6000, 0, 6000, 5000)));
+          window.document().execute(MapEdits.addObject(ArMapObject.goal("Wall", 6100, 2000)));
           window.view().fit();
         },
         10);
@@ -401,7 +401,7 @@ class MapperWindowTest {
     openAndWait(null);
     FxRuntime.run(
         () -> {
-          window.document().execute(MapCommands.addObject(ArMapObject.dock("Dock 1", 0, 0, 0)));
+          window.document().execute(MapEdits.addObject(ArMapObject.dock("Dock 1", 0, 0, 0)));
           window.selectAndShow(window.document().content().objects().get(0).id());
         },
         10);

@@ -7,7 +7,7 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
-import org.jaria.sim.LaserScan;
+import org.jaria.sim.SimLaserScan;
 import org.jaria.sim.SimSnapshot;
 import org.jaria.sim.SimWorld;
 import org.jaria.sim.world.WorldMap;
@@ -105,7 +105,7 @@ public final class SimWorldSource implements FrameSource {
     for (ArPose c : v.footprint()) {
       outline.add(c.x(), c.y());
     }
-    LaserScan l = v.laser();
+    SimLaserScan l = v.laser();
     LaserFrame laser =
         l == null ? null : new LaserFrame(l.origin(), l.startDeg(), l.incrementDeg(), l.ranges());
     RobotStatus status =

@@ -13,13 +13,13 @@ import org.jaria.net.NetEncodable;
  *
  * @param path the points
  */
-public record PlannedPath(Points path) implements NetEncodable {
+public record PathPoints(Points path) implements NetEncodable {
 
   /** The most points the layout carries (a byte2 count). */
   public static final int MAX_POINTS = Short.MAX_VALUE;
 
   /** Checks the path is there and fits. */
-  public PlannedPath {
+  public PathPoints {
     Objects.requireNonNull(path, "path");
     if (path.size() > MAX_POINTS) {
       throw new IllegalArgumentException(
@@ -40,7 +40,7 @@ public record PlannedPath(Points path) implements NetEncodable {
    *
    * @throws ArNetPacketException if the count is negative or more than the packet holds
    */
-  public static PlannedPath read(ArNetPacket in) {
+  public static PathPoints read(ArNetPacket in) {
     int n = in.bufToByte2();
     if (n < 0 || (long) n * 8 > in.getRemaining()) {
       throw new ArNetPacketException(
@@ -50,6 +50,6 @@ public record PlannedPath(Points path) implements NetEncodable {
     for (int i = 0; i < v.length; i++) {
       v[i] = in.bufToByte4();
     }
-    return new PlannedPath(Points.ofFlat(v, 2));
+    return new PathPoints(Points.ofFlat(v, 2));
   }
 }

@@ -30,7 +30,7 @@ import org.junit.jupiter.api.Test;
  * getLocState} and {@code getPath} in ARNL's layouts, fetches the drawings and their points, and
  * keeps the server's open popups, closing them when the server does.
  */
-class RobotLinkTest {
+class GuiServerLinkTest {
 
   private static final Points PATH = Points.ofFlat(new int[] {0, 0, 1000, 500, 2000, 500}, 2);
 
@@ -108,7 +108,7 @@ class RobotLinkTest {
       server.open();
       MonitorState state = new MonitorState();
       AtomicInteger changes = new AtomicInteger();
-      try (RobotLink link = new RobotLink(state, changes::incrementAndGet)) {
+      try (GuiServerLink link = new GuiServerLink(state, changes::incrementAndGet)) {
         link.connect("127.0.0.1", server.getPort(), "", null);
         until("ARNL's getLocState", () -> state.localization != null);
         assertEquals("LOCALIZATION_SUCCESS", state.localization.state());

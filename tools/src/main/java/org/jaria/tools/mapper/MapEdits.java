@@ -11,48 +11,48 @@ import org.jaria.map.ArMapObject;
 import org.jaria.map.ArMapPoints;
 
 /** The map editor's edits: add, delete, move, and change one object (rename, rotate...). */
-public final class MapCommands {
+public final class MapEdits {
 
-  private MapCommands() {}
+  private MapEdits() {}
 
   /** Adds wall lines and objects (appended after the existing ones, as a map file lists them). */
-  public static MapCommand add(String name, List<ArLineSegment> lines, List<ArMapObject> objects) {
+  public static MapEdit add(String name, List<ArLineSegment> lines, List<ArMapObject> objects) {
     return new Add(name, List.copyOf(lines), List.copyOf(objects), ArMapPoints.EMPTY);
   }
 
   /** Adds one wall line. */
-  public static MapCommand addLine(ArLineSegment line) {
+  public static MapEdit addLine(ArLineSegment line) {
     return add("Add wall", List.of(line), List.of());
   }
 
   /** Adds one object, named after its type ("Add Goal"). */
-  public static MapCommand addObject(ArMapObject o) {
+  public static MapEdit addObject(ArMapObject o) {
     return add("Add " + ObjectKind.describe(o.type()), List.of(), List.of(o));
   }
 
   /** Adds sensor points at the given coordinates (mm). */
-  public static MapCommand addPoints(int[] xs, int[] ys) {
+  public static MapEdit addPoints(int[] xs, int[] ys) {
     return new Add("Add point", List.of(), List.of(), ArMapPoints.of(xs, ys));
   }
 
   /** Deletes the items with the given editor numbers and the points with the given indices. */
-  public static MapCommand delete(Set<Long> ids, BitSet points) {
+  public static MapEdit delete(Set<Long> ids, BitSet points) {
     return new Delete(Set.copyOf(ids), (BitSet) points.clone());
   }
 
   /** Moves items and points by (dx, dy) mm. */
-  public static MapCommand move(Set<Long> ids, BitSet points, double dx, double dy) {
+  public static MapEdit move(Set<Long> ids, BitSet points, double dx, double dy) {
     return new Move(Set.copyOf(ids), (BitSet) points.clone(), dx, dy);
   }
 
   /** Replaces one object, keeping its place and number (rename, rotate, edit). */
-  public static MapCommand replace(String name, long id, ArMapObject replacement) {
+  public static MapEdit replace(String name, long id, ArMapObject replacement) {
     return new Replace(name, id, replacement);
   }
 
   private record Add(
       String name, List<ArLineSegment> lines, List<ArMapObject> objects, ArMapPoints added)
-      implements MapCommand {
+      implements MapEdit {
     @Override
     public MapContent apply(MapContent before, LongSupplier newIds) {
       List<MapLine> l = new ArrayList<>(before.lines());
@@ -76,7 +76,7 @@ public final class MapCommands {
     }
   }
 
-  private record Delete(Set<Long> ids, BitSet points) implements MapCommand {
+  private record Delete(Set<Long> ids, BitSet points) implements MapEdit {
     @Override
     public String name() {
       int n = ids.size() + points.cardinality();
@@ -107,7 +107,7 @@ public final class MapCommands {
     }
   }
 
-  private record Move(Set<Long> ids, BitSet points, double dx, double dy) implements MapCommand {
+  private record Move(Set<Long> ids, BitSet points, double dx, double dy) implements MapEdit {
     @Override
     public String name() {
       return "Move";
@@ -149,7 +149,7 @@ public final class MapCommands {
     }
   }
 
-  private record Replace(String name, long id, ArMapObject replacement) implements MapCommand {
+  private record Replace(String name, long id, ArMapObject replacement) implements MapEdit {
     @Override
     public MapContent apply(MapContent before, LongSupplier newIds) {
       List<MapObjectEntry> o = new ArrayList<>(before.objects());

@@ -5,9 +5,9 @@ import java.util.function.LongSupplier;
 /**
  * One edit of a map, as the user names it in the Edit menu ("Undo Add forbidden area"). A command
  * computes the content after the edit from the content before it; the {@link MapDocument} keeps
- * both for undo and redo. See {@link MapCommands} for the editor's commands.
+ * both for undo and redo. See {@link MapEdits} for the editor's commands.
  */
-public interface MapCommand {
+public interface MapEdit {
 
   /** What the edit does, e.g. "Add goal" (shown after "Undo"/"Redo"). */
   String name();

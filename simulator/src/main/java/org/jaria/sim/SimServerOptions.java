@@ -27,7 +27,7 @@ import java.util.Set;
  *     this long gives it up to the next client that completes the handshake, ms (default 2000, the
  *     watchdog's time; ARIA sends a packet at least every half second)
  */
-public record ServerOptions(
+public record SimServerOptions(
     int handshakeTimeoutMillis,
     int clientTimeoutMillis,
     Set<Integer> ignoredCommands,
@@ -38,11 +38,11 @@ public record ServerOptions(
     int replaceSilentMillis) {
 
   /** The defaults. */
-  public static final ServerOptions DEFAULTS =
-      new ServerOptions(2000, 10_000, Set.of(), null, 64L << 20, false, 10_000, 2000);
+  public static final SimServerOptions DEFAULTS =
+      new SimServerOptions(2000, 10_000, Set.of(), null, 64L << 20, false, 10_000, 2000);
 
   /** Checks the values. */
-  public ServerOptions {
+  public SimServerOptions {
     if (handshakeTimeoutMillis < 1) {
       throw new IllegalArgumentException(
           "the handshake timeout must be at least 1 ms, was " + handshakeTimeoutMillis);
@@ -72,8 +72,8 @@ public record ServerOptions(
   }
 
   /** These options with other timeouts, ms. */
-  public ServerOptions withTimeouts(int handshakeMillis, int clientMillis) {
-    return new ServerOptions(
+  public SimServerOptions withTimeouts(int handshakeMillis, int clientMillis) {
+    return new SimServerOptions(
         handshakeMillis,
         clientMillis,
         ignoredCommands,
@@ -85,8 +85,8 @@ public record ServerOptions(
   }
 
   /** These options ignoring {@code commands} (numbers 0..255). */
-  public ServerOptions withIgnoredCommands(Set<Integer> commands) {
-    return new ServerOptions(
+  public SimServerOptions withIgnoredCommands(Set<Integer> commands) {
+    return new SimServerOptions(
         handshakeTimeoutMillis,
         clientTimeoutMillis,
         commands,
@@ -101,8 +101,8 @@ public record ServerOptions(
    * These options with client map loads confined to {@code folder} (for clients anywhere), files of
    * at most {@code maxBytes}.
    */
-  public ServerOptions withMapFolder(Path folder, long maxBytes) {
-    return new ServerOptions(
+  public SimServerOptions withMapFolder(Path folder, long maxBytes) {
+    return new SimServerOptions(
         handshakeTimeoutMillis,
         clientTimeoutMillis,
         ignoredCommands,
@@ -114,8 +114,8 @@ public record ServerOptions(
   }
 
   /** These options letting clients on other machines end the simulator with SIM_EXIT. */
-  public ServerOptions withRemoteExit(boolean allowed) {
-    return new ServerOptions(
+  public SimServerOptions withRemoteExit(boolean allowed) {
+    return new SimServerOptions(
         handshakeTimeoutMillis,
         clientTimeoutMillis,
         ignoredCommands,
@@ -130,8 +130,8 @@ public record ServerOptions(
    * These options with holders silent for {@code millis} replaceable by the next client that
    * completes the handshake.
    */
-  public ServerOptions withReplaceSilentMillis(int millis) {
-    return new ServerOptions(
+  public SimServerOptions withReplaceSilentMillis(int millis) {
+    return new SimServerOptions(
         handshakeTimeoutMillis,
         clientTimeoutMillis,
         ignoredCommands,

@@ -35,9 +35,9 @@ import org.slf4j.LoggerFactory;
  * in a {@link MonitorState}, and sends the operator's commands. Every method may be called from any
  * thread; none waits for the network except {@link #connect} (run it off the JavaFX thread).
  */
-final class RobotLink implements AutoCloseable {
+final class GuiServerLink implements AutoCloseable {
 
-  private static final Logger log = LoggerFactory.getLogger(RobotLink.class);
+  private static final Logger log = LoggerFactory.getLogger(GuiServerLink.class);
 
   /** Subscription intervals, ms: the robot smoothly, the slow things slowly. */
   static final long FAST_MS = 100;
@@ -56,7 +56,7 @@ final class RobotLink implements AutoCloseable {
    * A link storing into {@code state} and calling {@code changed} (on the reader thread) after
    * every update.
    */
-  RobotLink(MonitorState state, Runnable changed) {
+  GuiServerLink(MonitorState state, Runnable changed) {
     this.state = state;
     this.changed = changed;
     on("update", RobotUpdate::read, v -> state.robot = v);

@@ -12,7 +12,7 @@ import org.jaria.map.ArMapObject;
 import org.jaria.map.ArMapPoints;
 import org.junit.jupiter.api.Test;
 
-class MapCommandsTest {
+class MapEditsTest {
 
   private final AtomicLong ids = new AtomicLong(100);
 
@@ -30,7 +30,7 @@ class MapCommandsTest {
   @Test
   void addAppendsWithFreshNumbers() {
     MapContent c =
-        MapCommands.add(
+        MapEdits.add(
                 "Add",
                 List.of(new ArLineSegment(1, 2, 3, 4)),
                 List.of(ArMapObject.dock("D", 0, 0, 90)))
@@ -44,7 +44,7 @@ class MapCommandsTest {
   @Test
   void addPointsKeepsTheOldOnes() {
     MapContent c =
-        MapCommands.addPoints(new int[] {7}, new int[] {8}).apply(sample(), ids::getAndIncrement);
+        MapEdits.addPoints(new int[] {7}, new int[] {8}).apply(sample(), ids::getAndIncrement);
     assertEquals(ArMapPoints.of(new int[] {10, 20, 30, 7}, new int[] {1, 2, 3, 8}), c.points());
   }
 
@@ -52,7 +52,7 @@ class MapCommandsTest {
   void deleteRemovesItemsAndPoints() {
     BitSet p = new BitSet();
     p.set(1);
-    MapContent c = MapCommands.delete(Set.of(2L, 3L), p).apply(sample(), ids::getAndIncrement);
+    MapContent c = MapEdits.delete(Set.of(2L, 3L), p).apply(sample(), ids::getAndIncrement);
     assertEquals(List.of(1L), c.lines().stream().map(MapLine::id).toList());
     assertEquals(List.of(4L), c.objects().stream().map(MapObjectEntry::id).toList());
     assertEquals(ArMapPoints.of(new int[] {10, 30}, new int[] {1, 3}), c.points());
@@ -64,7 +64,7 @@ class MapCommandsTest {
     p.set(0);
     MapContent before = sample();
     MapContent c =
-        MapCommands.move(Set.of(1L, 3L, 4L), p, 100, -50).apply(before, ids::getAndIncrement);
+        MapEdits.move(Set.of(1L, 3L, 4L), p, 100, -50).apply(before, ids::getAndIncrement);
     assertEquals(new ArLineSegment(100, -50, 1100, -50), c.lines().get(0).segment());
     assertSame(before.lines().get(1), c.lines().get(1));
     assertEquals(600, c.objects().get(0).object().pose().x());
@@ -77,7 +77,7 @@ class MapCommandsTest {
   @Test
   void replaceKeepsPlaceAndNumber() {
     MapContent c =
-        MapCommands.replace("Rename", 3, ArMapObject.goal("B", 500, 500))
+        MapEdits.replace("Rename", 3, ArMapObject.goal("B", 500, 500))
             .apply(sample(), ids::getAndIncrement);
     assertEquals(3, c.objects().get(0).id());
     assertEquals("B", c.objects().get(0).object().name());

@@ -14,10 +14,10 @@ import org.jaria.geom.ArPose;
  */
 // The array is copied in and out.
 @SuppressWarnings("ArrayRecordComponent")
-public record LaserScan(ArPose origin, double startDeg, double incrementDeg, int[] ranges) {
+public record SimLaserScan(ArPose origin, double startDeg, double incrementDeg, int[] ranges) {
 
   /** Copies the ranges. */
-  public LaserScan {
+  public SimLaserScan {
     ranges = ranges.clone();
   }
 
@@ -38,7 +38,7 @@ public record LaserScan(ArPose origin, double startDeg, double incrementDeg, int
 
   @Override
   public boolean equals(Object o) {
-    return o instanceof LaserScan s
+    return o instanceof SimLaserScan s
         && s.origin.equals(origin)
         && s.startDeg == startDeg
         && s.incrementDeg == incrementDeg
@@ -52,6 +52,6 @@ public record LaserScan(ArPose origin, double startDeg, double incrementDeg, int
 
   @Override
   public String toString() {
-    return "LaserScan[" + origin + ", " + ranges.length + " readings from " + startDeg + "°]";
+    return "SimLaserScan[" + origin + ", " + ranges.length + " readings from " + startDeg + "°]";
   }
 }
