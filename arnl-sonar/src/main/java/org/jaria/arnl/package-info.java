@@ -1,6 +1,6 @@
 /**
  * Sonar localization and path planning, a SonARNL analogue (thesis §5.2), with the thesis's
- * path-following application (§6.1) in {@code org.jaria.arnl.demo.NavigateDemo} (module {@code
+ * path-following application (§6.1) in {@code org.jaria.tools.examples.NavigateDemo} (module {@code
  * tools}, run by {@code jaria demo navigate}).
  *
  * <ul>

@@ -17,7 +17,7 @@ import java.util.concurrent.TimeUnit;
 import org.jaria.sim.RobotFactory;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
-import org.jaria.sim.cli.SimCommand;
+import org.jaria.tools.sim.SimCommand;
 import org.jaria.tools.cli.JariaCli;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;

@@ -67,7 +67,7 @@ import org.jaria.robot.ArRobot;
  * }
  * }</pre>
  *
- * <p>{@code jaria demo guiserver} runs exactly this; {@code org.jaria.net.sim.SimulatedGuiServer}
+ * <p>{@code jaria demo guiserver} runs exactly this; {@code org.jaria.tools.guiserver.sim.SimulatedGuiServer}
  * (module {@code tools}) does it on an embedded simulator. The protocol is described in {@code
  * aria-net/PROTOCOL.md}.
  */

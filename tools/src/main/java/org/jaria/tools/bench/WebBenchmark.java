@@ -23,7 +23,7 @@ import org.jaria.map.ArMap;
 import org.jaria.net.arnl.ArnlNavigation;
 import org.jaria.net.server.Authenticator;
 import org.jaria.net.server.ServerOptions;
-import org.jaria.net.sim.SimulatedGuiServer;
+import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
 import org.jaria.range.ArSimulatedLaser;
 import org.jaria.robot.ArRobot;
 import org.jaria.tools.web.NavigationView;

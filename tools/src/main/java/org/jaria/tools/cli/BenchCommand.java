@@ -87,7 +87,7 @@ final class BenchCommand implements Runnable {
   static final class Sim extends Bench {
     @Override
     String table() {
-      return org.jaria.sim.bench.SimBenchmark.run();
+      return org.jaria.tools.bench.SimBenchmark.run();
     }
   }
 
@@ -111,7 +111,7 @@ final class BenchCommand implements Runnable {
   static final class Arnl extends QuickBench {
     @Override
     String table() {
-      return org.jaria.arnl.bench.ArnlBenchmark.run(quick);
+      return org.jaria.tools.bench.arnl.ArnlBenchmark.run(quick);
     }
   }
 
@@ -135,7 +135,7 @@ final class BenchCommand implements Runnable {
   static final class Net extends QuickBench {
     @Override
     String table() throws Exception {
-      return org.jaria.net.bench.NetBenchmark.run(quick);
+      return org.jaria.tools.bench.NetBenchmark.run(quick);
     }
   }
 

@@ -22,7 +22,7 @@ import picocli.CommandLine.Command;
       MapCommand.class,
       org.jaria.tools.simview.SimGuiCommand.class,
       org.jaria.tools.simview.SimViewCommand.class,
-      org.jaria.acts.cli.ActsCommand.class,
+      org.jaria.tools.acts.ActsCommand.class,
       org.jaria.tools.demo.DemoCommand.class,
       org.jaria.tools.mapper.MapperCommand.class,
       org.jaria.tools.eztrain.EzTrainCommand.class,
@@ -30,7 +30,7 @@ import picocli.CommandLine.Command;
       org.jaria.tools.web.WebCommand.class,
       org.jaria.tools.fx.ScreenshotCommand.class,
       BenchCommand.class,
-      org.jaria.classroom.cli.GradeCommand.class,
+      org.jaria.tools.grade.GradeCommand.class,
       CommandLine.HelpCommand.class
     })
 public final class JariaCli implements Runnable {

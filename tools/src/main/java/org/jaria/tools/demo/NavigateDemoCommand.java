@@ -5,7 +5,7 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
-import org.jaria.arnl.demo.NavigateDemo;
+import org.jaria.tools.examples.NavigateDemo;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 

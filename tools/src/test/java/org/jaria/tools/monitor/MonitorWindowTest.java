@@ -19,7 +19,7 @@ import org.jaria.net.arnl.ArnlNavigation;
 import org.jaria.net.server.Authenticator;
 import org.jaria.net.server.ServerOptions;
 import org.jaria.net.server.modes.ArServerModes;
-import org.jaria.net.sim.SimulatedGuiServer;
+import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
 import org.jaria.tools.fx.AppEnvironment;
 import org.jaria.tools.fx.FxRuntime;
 import org.jaria.tools.fx.ScriptedPrompts;

@@ -19,7 +19,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
 import org.jaria.geom.ArPose;
-import org.jaria.net.sim.SimulatedGuiServer;
+import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
 import org.jaria.sim.SimRobot;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
