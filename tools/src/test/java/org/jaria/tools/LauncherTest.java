@@ -1,6 +1,7 @@
 package org.jaria.tools;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -41,8 +42,11 @@ import org.w3c.dom.NodeList;
 class LauncherTest {
 
   private static final String[] MODULES = {
-    "aria-core", "simulator", "arnl-sonar", "aria-net", "acts-vision", "classroom", "tools"
+    "aria-core", "simulator", "arnl-sonar", "aria-net", "acts-vision", "classroom", "web", "tools"
   };
+
+  /** What the apps are built from besides the command line's modules. */
+  private static final String[] APPS_MODULES = {"acts-camera", "apps"};
 
   @TempDir Path repo;
   private final Instant now = Instant.now();
@@ -57,13 +61,20 @@ class LauncherTest {
         "mvnw",
         """
         #!/bin/sh
-        echo build >> "$(dirname "$0")/mvnw-calls"
+        module=tools
+        previous=
+        for a in "$@"; do
+          if [ "$previous" = "-pl" ]; then module="$a"; fi
+          previous="$a"
+        done
+        echo "build $module" >> "$(dirname "$0")/mvnw-calls"
         echo "[INFO] Scanning for projects..."
         echo "[INFO] Building JAria core (protocol, connections) 0.1.0-SNAPSHOT [2/8]"
         echo "[INFO] Building JAria tools (jaria command line) 0.1.0-SNAPSHOT [8/8]"
-        mkdir -p tools/target/lib
+        mkdir -p "$module/target/lib"
         # Like Maven when nothing changed: an existing jar is not rewritten.
-        [ -f tools/target/jaria-tools.jar ] || echo jar > tools/target/jaria-tools.jar
+        jar="$module/target/jaria-$module.jar"
+        [ -f "$jar" ] || echo jar > "$jar"
         """);
     executable(repo.resolve("mvnw"));
     write(
@@ -76,6 +87,7 @@ class LauncherTest {
     executable(repo.resolve("jdk/bin/java"));
     write("pom.xml", "<project/>");
     List<String> all = new ArrayList<>(Arrays.asList(MODULES));
+    all.addAll(Arrays.asList(APPS_MODULES));
     all.addAll(List.of("examples", "site", "jaria-bom"));
     for (String m : all) {
       write(m + "/pom.xml", "<project/>");
@@ -182,19 +194,103 @@ class LauncherTest {
         "the README says " + m.group(1));
   }
 
-  /** The script's module list is exactly what {@code ./mvnw -pl tools -am} builds. */
+  /**
+   * The script's module lists are exactly what {@code ./mvnw -pl tools -am} and {@code -pl apps
+   * -am} build.
+   */
   @Test
-  void theModulesWatchedAreWhatToolsIsBuiltFrom() throws Exception {
+  void theModulesWatchedAreWhatToolsAndTheAppsAreBuiltFrom() throws Exception {
     String script = Files.readString(Path.of("..", "jaria"), StandardCharsets.UTF_8);
     Matcher m = Pattern.compile("(?m)^modules=\"([^\"]*)\"").matcher(script);
     assertTrue(m.find(), "the launcher names its modules");
     TreeSet<String> watched = new TreeSet<>(Arrays.asList(m.group(1).split(" ")));
     assertEquals(new TreeSet<>(Arrays.asList(MODULES)), watched);
-    assertEquals(reactorOfTools(Path.of("..")), watched);
+    assertEquals(reactorOf(Path.of(".."), "tools"), watched);
+    Matcher a = Pattern.compile("(?m)^apps_modules=\"\\$modules ([^\"]*)\"").matcher(script);
+    assertTrue(a.find(), "the launcher names the apps' modules");
+    TreeSet<String> apps = new TreeSet<>(watched);
+    apps.addAll(Arrays.asList(a.group(1).split(" ")));
+    assertEquals(reactorOf(Path.of(".."), "apps"), apps);
   }
 
-  /** Module folders that {@code -pl tools -am} builds: tools and its org.jaria dependencies. */
-  private static Set<String> reactorOfTools(Path root) throws Exception {
+  /**
+   * A desktop app is built the first time it is asked for, once, and runs with the apps' class
+   * path; the command line's commands neither build nor use it.
+   */
+  @Test
+  void theAppsAreBuiltOnFirstUseOnlyAndOnlyTheirCommandsUseThem() throws Exception {
+    Result cli = jaria(Map.of(), "demo");
+    assertEquals(List.of("build tools"), calls(), cli.err);
+    assertTrue(cli.out.contains("tools/target/jaria-tools.jar"), cli.out);
+    assertFalse(cli.out.contains("apps/target"), cli.out);
+
+    Result app = jaria(Map.of(), "mapper", "office.map");
+    assertEquals(List.of("build tools", "build apps"), calls(), app.err);
+    assertTrue(app.err.contains("building the desktop apps and cameras"), app.err);
+    assertTrue(app.out.contains("apps/target/jaria-apps.jar"), app.out);
+    assertTrue(app.out.endsWith("org.jaria.tools.cli.JariaCli mapper office.map\n"), app.out);
+
+    jaria(Map.of(), "screenshot", "mapper", "-o", "x.png");
+    jaria(Map.of(), "version");
+    assertEquals(List.of("build tools", "build apps"), calls(), "nothing changed since");
+
+    age(repo.resolve("apps/src/main/java/A.java"), Duration.ofMinutes(-10));
+    jaria(Map.of(), "version");
+    assertEquals(2, builds(), "an edited app does not rebuild the command line");
+    jaria(Map.of(), "monitor");
+    assertEquals(List.of("build tools", "build apps", "build apps"), calls());
+  }
+
+  /** Which commands run with the apps: apps, windows, live cameras and their benchmarks. */
+  @Test
+  void theCommandsThatNeedJavaFxOrOpenCvRunWithTheApps() throws Exception {
+    Map<String, String> noBuild = Map.of("JARIA_NO_BUILD", "1");
+    List<List<String>> withApps =
+        List.of(
+            List.of("mapper"),
+            List.of("eztrain", "-f", "desk-scene"),
+            List.of("monitor", "--help"),
+            List.of("simview"),
+            List.of("screenshot", "simview", "-o", "sim.png"),
+            List.of("help", "mapper"),
+            List.of("bench", "vision", "--quick"),
+            List.of("bench", "mapper"),
+            List.of("sim", "--map", "hall", "--gui"),
+            List.of("demo", "--gui"),
+            List.of("demo", "wander", "--gui"),
+            List.of("demo", "guiserver", "--remote", "robot", "--camera", "0"),
+            List.of("acts"),
+            List.of("acts", "-d", "0", "-p", "0"),
+            List.of("acts", "-P"));
+    for (List<String> args : withApps) {
+      Result r = jaria(noBuild, args.toArray(new String[0]));
+      assertTrue(r.out.contains("apps/target/jaria-apps.jar"), args + ": " + r.out);
+    }
+    List<List<String>> commandLineOnly =
+        List.of(
+            List.of(),
+            List.of("--help"),
+            List.of("help"),
+            List.of("help", "sim"),
+            List.of("version"),
+            List.of("demo"),
+            List.of("demo", "guiserver"),
+            List.of("sim", "--map", "hall"),
+            List.of("bench", "sim"),
+            List.of("acts", "-f", "desk-scene"),
+            List.of("acts", "-fdesk-scene"),
+            List.of("acts", "-h"),
+            List.of("web"));
+    for (List<String> args : commandLineOnly) {
+      Result r = jaria(noBuild, args.toArray(new String[0]));
+      assertTrue(r.out.contains("tools/target/jaria-tools.jar"), args + ": " + r.out);
+      assertFalse(r.out.contains("apps/target"), args + ": " + r.out);
+    }
+    assertEquals(0, builds(), "JARIA_NO_BUILD builds nothing");
+  }
+
+  /** Module folders that {@code -pl MODULE -am} builds: it and its org.jaria dependencies. */
+  private static Set<String> reactorOf(Path root, String start) throws Exception {
     Map<String, String> folderOf = new TreeMap<>();
     for (Element module : elements(pom(root.resolve("pom.xml")), "module")) {
       String folder = module.getTextContent().strip();
@@ -202,7 +298,7 @@ class LauncherTest {
       folderOf.put(child(pom(p).getDocumentElement(), "artifactId"), folder);
     }
     TreeSet<String> seen = new TreeSet<>();
-    Deque<String> todo = new ArrayDeque<>(List.of("tools"));
+    Deque<String> todo = new ArrayDeque<>(List.of(start));
     while (!todo.isEmpty()) {
       String folder = todo.pop();
       if (!seen.add(folder)) {
@@ -261,8 +357,13 @@ class LauncherTest {
   }
 
   private int builds() throws IOException {
+    return calls().size();
+  }
+
+  /** The fake build's calls, one line each: "build tools" or "build apps". */
+  private List<String> calls() throws IOException {
     Path calls = repo.resolve("mvnw-calls");
-    return Files.exists(calls) ? Files.readAllLines(calls).size() : 0;
+    return Files.exists(calls) ? Files.readAllLines(calls) : List.of();
   }
 
   private void write(String file, String text) throws IOException {

@@ -20,10 +20,9 @@ import org.jaria.robot.ArRobot;
 import org.junit.jupiter.api.Test;
 
 /**
- * The server's answers to the hostile clients of the guiServer's second round: sockets that squat
- * the login slots, an open server exposed to the network, a handler's huge error message, and
- * password guesses rotated over many addresses (a user whose long strings would break {@code
- * update} for everybody: {@code org.jaria.net.guiserver.GuiServerLongStringsTest}).
+ * The guiServer's answers to the hostile clients of its second round: sockets that squat the login
+ * slots, an open server exposed to the network, a user whose long strings would break {@code
+ * update} for everybody, and password guesses rotated over many addresses.
  */
 class HostileClientsTest {
 
@@ -116,6 +115,59 @@ class HostileClientsTest {
     try (ArServerBase s = new ArServerBase(ServerOptions.builder().port(0).build(), robot)) {
       s.open();
       assertEquals("127.0.0.1", s.getAddress(), "without a login, this computer only");
+    }
+  }
+
+  @Test
+  void aLongGoalNameIsRefusedAndUpdateStaysSmallForEveryClient() throws Exception {
+    try (GuiRig rig = GuiRig.arnl();
+        ArClientBase monitor = new ArClientBase("monitor")) {
+      monitor.connect("127.0.0.1", rig.gui.getServer().getPort(), "", "");
+      AtomicInteger updates = new AtomicInteger();
+      AtomicInteger largest = new AtomicInteger();
+      monitor.addHandler(
+          "update",
+          p -> {
+            largest.accumulateAndGet(p.getDataLength(), Math::max);
+            updates.incrementAndGet();
+          });
+      Futures.get(monitor.request("update", 20));
+      for (int length : new int[] {31_000, 31_900}) {
+        String name = "G".repeat(length);
+        ArClientException e =
+            assertThrows(ArClientException.class, () -> rig.call("gotoGoal", name));
+        assertEquals(NetError.BAD_ARGUMENTS, e.getCode());
+        assertTrue(e.getMessage().length() < 600, "the refusal is short too");
+        int seen = updates.get();
+        Eventually.until(
+            "update is still published",
+            () -> {
+              rig.run(100);
+              return updates.get() > seen + 1;
+            });
+      }
+      assertTrue(largest.get() < 600, "update stayed small: " + largest.get() + " bytes");
+    }
+  }
+
+  @Test
+  void aStatusLineIsCutWhateverAModeWritesInIt() throws Exception {
+    try (GuiRig rig = GuiRig.plain(b -> b)) {
+      var chatty =
+          new org.jaria.net.server.modes.ArServerMode(rig.gui.getServer(), rig.robot, "Chatty") {
+            @Override
+            protected void onActivate() {
+              setStatus("x".repeat(40_000));
+            }
+
+            @Override
+            protected void onDeactivate() {}
+          };
+      assertTrue(rig.gui.getServer().runOnCycle(chatty::activate));
+      rig.run(300);
+      assertEquals(TextLimits.MAX_MESSAGE, chatty.getStatus().length());
+      ArNetPacket update = rig.call("update");
+      assertTrue(update.getDataLength() < 700, "update: " + update.getDataLength() + " bytes");
     }
   }
 

@@ -14,7 +14,8 @@ import org.jaria.acts.blob.TrackerSettings;
 import org.jaria.acts.color.ChannelBank;
 import org.jaria.acts.config.ActsConfig;
 import org.jaria.acts.config.ActsPreferences;
-import org.jaria.acts.image.CameraSource;
+import org.jaria.acts.image.Cameras;
+import org.jaria.acts.image.LiveCamera;
 import org.jaria.acts.image.ImageSequenceSource;
 import org.jaria.acts.image.ImageSource;
 import org.jaria.acts.image.StillImageSource;
@@ -206,7 +207,7 @@ public final class ActsCommand implements Callable<Integer> {
 
   private int run(PrintWriter out, PrintWriter err) throws Exception {
     if (listParameters) {
-      out.print(CameraSource.parameterList());
+      out.print(Cameras.parameterList());
       return 0;
     }
     notes(err);
@@ -400,7 +401,7 @@ public final class ActsCommand implements Callable<Integer> {
       return StillImageSource.open(image, w, h);
     }
     String dev = device != null ? device : prefs.grabberDevice();
-    CameraSource cam = CameraSource.open(dev, w, h);
+    LiveCamera cam = Cameras.open(dev, w, h);
     for (int i = 0; i + 1 < cameraSettings.size(); i += 2) {
       String name = cameraSettings.get(i);
       String value = cameraSettings.get(i + 1);

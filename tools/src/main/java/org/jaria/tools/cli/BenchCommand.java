@@ -1,6 +1,5 @@
 package org.jaria.tools.cli;
 
-import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.jaria.tools.bench.ProtocolBenchmark;
 import picocli.CommandLine.Command;
@@ -15,11 +14,9 @@ import picocli.CommandLine.Spec;
     subcommands = {
       BenchCommand.Protocol.class,
       BenchCommand.Sim.class,
-      BenchCommand.Vision.class,
       BenchCommand.Arnl.class,
       BenchCommand.Actions.class,
       BenchCommand.Net.class,
-      BenchCommand.Mapper.class,
       BenchCommand.Hostile.class,
       BenchCommand.Web.class
     })
@@ -91,17 +88,6 @@ final class BenchCommand implements Runnable {
     }
   }
 
-  /** {@code jaria bench vision}. */
-  @Command(
-      name = "vision",
-      description = "Blob tracking per frame at three sizes and 1/8/32 channels, against OpenCV.")
-  static final class Vision extends QuickBench {
-    @Override
-    String table() throws Exception {
-      return org.jaria.acts.bench.VisionBenchmark.run(quick);
-    }
-  }
-
   /** {@code jaria bench arnl}. */
   @Command(
       name = "arnl",
@@ -136,26 +122,6 @@ final class BenchCommand implements Runnable {
     @Override
     String table() throws Exception {
       return org.jaria.tools.bench.NetBenchmark.run(quick);
-    }
-  }
-
-  /** {@code jaria bench mapper}. */
-  @Command(
-      name = "mapper",
-      description =
-          "Map editor frame times (draw, and draw + pixels) while zooming and panning a"
-              + " 60,000-point map, headless software rendering.")
-  static final class Mapper extends QuickBench {
-
-    @Option(
-        names = "--map",
-        paramLabel = "FILE",
-        description = "Time this map instead of the generated 60,000-point floor plan.")
-    Path map;
-
-    @Override
-    String table() throws Exception {
-      return org.jaria.tools.mapper.MapperBenchmark.run(map, quick ? 40 : 200);
     }
   }
 

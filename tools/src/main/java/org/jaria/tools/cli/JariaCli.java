@@ -1,14 +1,17 @@
 package org.jaria.tools.cli;
 
-import java.io.IOException;
-import java.io.InputStream;
-import java.util.Properties;
+import java.util.Optional;
+import org.jaria.tools.ProjectVersion;
+import org.jaria.tools.desktop.Desktop;
+import org.jaria.tools.desktop.DesktopApps;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
 /**
  * The {@code jaria} command: one entry point for the simulator, the demos, the benchmarks, the
- * protocol tools and the desktop apps. Run {@code ./jaria --help} for the list.
+ * protocol tools and the desktop apps. Run {@code ./jaria --help} for the list. The desktop apps
+ * (JavaFX) come from the {@code apps} module when it is on the class path, and are stand-ins that
+ * say how to get them otherwise (see {@link Desktop}).
  */
 @Command(
     name = "jaria",
@@ -20,18 +23,12 @@ import picocli.CommandLine.Command;
       PacketsCommand.class,
       org.jaria.tools.laser.LaserCommand.class,
       MapCommand.class,
-      org.jaria.tools.simview.SimGuiCommand.class,
-      org.jaria.tools.simview.SimViewCommand.class,
+      org.jaria.tools.sim.SimGuiCommand.class,
       org.jaria.tools.acts.ActsCommand.class,
       org.jaria.tools.demo.DemoCommand.class,
-      org.jaria.tools.mapper.MapperCommand.class,
-      org.jaria.tools.eztrain.EzTrainCommand.class,
-      org.jaria.tools.monitor.MonitorCommand.class,
       org.jaria.tools.web.WebCommand.class,
-      org.jaria.tools.fx.ScreenshotCommand.class,
       BenchCommand.class,
-      org.jaria.tools.grade.GradeCommand.class,
-      CommandLine.HelpCommand.class
+      org.jaria.tools.grade.GradeCommand.class
     })
 public final class JariaCli implements Runnable {
 
@@ -45,6 +42,15 @@ public final class JariaCli implements Runnable {
   /** Builds the command line with every subcommand, ready to execute. */
   public static CommandLine commandLine() {
     CommandLine cli = new CommandLine(new JariaCli());
+    Optional<DesktopApps> apps = Desktop.find();
+    for (CommandLine app : Desktop.appCommands(apps)) {
+      cli.addSubcommand(app.getCommandName(), app);
+    }
+    CommandLine bench = cli.getSubcommands().get("bench");
+    for (CommandLine b : Desktop.benchCommands(apps)) {
+      bench.addSubcommand(b.getCommandName(), b);
+    }
+    cli.addSubcommand(new CommandLine.HelpCommand());
     addHelpOptions(cli);
     cli.setParameterExceptionHandler(CliErrors::badArguments);
     cli.setExecutionExceptionHandler(CliErrors::failed);
@@ -87,26 +93,12 @@ public final class JariaCli implements Runnable {
     System.exit(commandLine().execute(args));
   }
 
-  /** The project version, from the build. */
-  public static String projectVersion() {
-    Properties p = new Properties();
-    try (InputStream in =
-        JariaCli.class.getResourceAsStream("/org/jaria/tools/version.properties")) {
-      if (in != null) {
-        p.load(in);
-      }
-    } catch (IOException e) {
-      // fall through to "unknown"
-    }
-    return p.getProperty("version", "unknown");
-  }
-
   /** Supplies {@code --version}. */
   static final class Version implements CommandLine.IVersionProvider {
     @Override
     public String[] getVersion() {
       return new String[] {
-        "JAria " + projectVersion(),
+        "JAria " + ProjectVersion.get(),
         "Java "
             + System.getProperty("java.version")
             + " ("

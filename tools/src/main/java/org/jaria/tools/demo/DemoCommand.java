@@ -8,13 +8,10 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
-import javafx.application.Platform;
-import javafx.stage.Window;
 import org.jaria.geom.ArPose;
 import org.jaria.robot.ArRobot;
 import org.jaria.tools.examples.GotoActionExample;
-import org.jaria.tools.fx.GuiCheck;
-import org.jaria.tools.simview.SimViewCommand;
+import org.jaria.tools.desktop.Desktop;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -107,7 +104,7 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
         return 2;
       }
       if (gui) {
-        Optional<String> problem = GuiCheck.problem();
+        Optional<String> problem = Desktop.problem();
         if (problem.isPresent()) {
           err.println("jaria demo: --gui: " + problem.get());
           return 1;
@@ -194,13 +191,13 @@ public final class DemoCommand extends DemoOptions implements Callable<Integer> 
                           watch(ticker, robot, sim, l, out);
                         }));
                 // The demo's time is up (or the robot stopped): the window goes with it.
-                Platform.runLater(() -> List.copyOf(Window.getWindows()).forEach(Window::hide));
+                Desktop.closeWindows();
               },
               "demo-program");
       program.start();
       out.println("Closing the window ends the demo sooner.");
       out.flush();
-      int ui = SimViewCommand.showUntilClosed(sim.world, 1.0, err);
+      int ui = Desktop.showUntilClosed("jaria demo --gui", sim.world, 1.0, err);
       ArRobot robot = running.get();
       if (robot != null) {
         robot.stopRunning();

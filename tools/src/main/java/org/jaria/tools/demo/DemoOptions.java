@@ -8,7 +8,7 @@ import java.net.UnknownHostException;
 import java.nio.charset.StandardCharsets;
 import org.jaria.clock.Clock;
 import org.jaria.connection.RobotAddress;
-import org.jaria.tools.cli.SecondsOption;
+import org.jaria.tools.options.SecondsOption;
 import picocli.CommandLine.Option;
 
 /** Options every demo shares. */

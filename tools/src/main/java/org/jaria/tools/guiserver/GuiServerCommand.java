@@ -9,7 +9,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import org.jaria.acts.image.CameraSource;
+import org.jaria.acts.image.Cameras;
 import org.jaria.acts.image.ImageSequenceSource;
 import org.jaria.acts.image.ImageSource;
 import org.jaria.acts.image.StillImageSource;
@@ -33,8 +33,8 @@ import org.jaria.tools.guiserver.sim.ActsPtz;
 import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
 import org.jaria.net.video.JpegVideo;
 import org.jaria.robot.ArRobot;
-import org.jaria.tools.cli.Passwords;
-import org.jaria.tools.cli.SecondsOption;
+import org.jaria.tools.options.Passwords;
+import org.jaria.tools.options.SecondsOption;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -360,7 +360,7 @@ public final class GuiServerCommand implements Callable<Integer> {
     ImageSource source;
     String name;
     if (camera != null) {
-      source = CameraSource.open(camera, w, h);
+      source = Cameras.open(camera, w, h);
       name = "Camera " + camera;
     } else if (video != null) {
       source =

@@ -25,7 +25,7 @@ import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
 import org.jaria.sim.StartPlace;
 import org.jaria.sim.robot.SimProfile;
-import org.jaria.tools.cli.SecondsOption;
+import org.jaria.tools.options.SecondsOption;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;

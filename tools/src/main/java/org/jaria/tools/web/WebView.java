@@ -6,7 +6,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import org.jaria.tools.cli.JariaCli;
+import org.jaria.tools.ProjectVersion;
 import org.jaria.web.control.Controls;
 import org.jaria.web.mcap.McapRecorder;
 import org.jaria.web.server.WebOptions;
@@ -46,7 +46,7 @@ public final class WebView implements AutoCloseable {
     McapRecorder rec = null;
     if (record != null) {
       try {
-        rec = McapRecorder.create(record, "JAria " + JariaCli.projectVersion());
+        rec = McapRecorder.create(record, "JAria " + ProjectVersion.get());
       } catch (IOException e) {
         throw new IOException(
             "cannot write the recording "
