@@ -1,5 +1,6 @@
 package org.jaria.sim;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.ArrayList;
 import java.util.List;
 import org.jaria.geom.ArPose;
@@ -42,9 +43,14 @@ public final class RobotFactory {
   /** Port asked for (0: any free port). */
   final int requestedPort;
 
-  // Guarded by the world's lock (its methods and the world thread take it).
-  int boundPort = -1;
+  // Guarded by the world's lock (its methods and the world thread take it; it is reentrant).
+  @GuardedBy("world.lock")
+  private int boundPort = -1;
+
+  @GuardedBy("world.lock")
   private long made;
+
+  @GuardedBy("world.lock")
   private int inWorld;
 
   RobotFactory(SimWorld world, RobotOptions template, int port, StartPose start) {
@@ -103,14 +109,34 @@ public final class RobotFactory {
    * client, at the start pose (the caller moves it aside if the spot is taken).
    */
   RobotOptions robotFor(String clientAddress, WorldMap map) {
-    made++;
-    inWorld++;
-    return template.withName(clientAddress).withStartPose(start.next(map));
+    world.lock.lock();
+    try {
+      made++;
+      inWorld++;
+      return template.withName(clientAddress).withStartPose(start.next(map));
+    } finally {
+      world.lock.unlock();
+    }
   }
 
   /** One of its robots left the world. */
   void robotRemoved() {
-    inWorld--;
+    world.lock.lock();
+    try {
+      inWorld--;
+    } finally {
+      world.lock.unlock();
+    }
+  }
+
+  /** Its port is open at {@code port}, or closed (-1). */
+  void setBoundPort(int port) {
+    world.lock.lock();
+    try {
+      boundPort = port;
+    } finally {
+      world.lock.unlock();
+    }
   }
 
   @Override

@@ -1,5 +1,6 @@
 package org.jaria.sim;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -88,6 +89,8 @@ public final class SimWorld implements AutoCloseable, CameraScene {
           log.warn("a client asked the simulator to exit with code {}; no exit handler", code);
         }
       };
+
+  @GuardedBy("lock")
   private boolean closed;
 
   private SimWorld(WorldMap map, SimOptions options, VirtualClock clock) {
@@ -609,6 +612,7 @@ public final class SimWorld implements AutoCloseable, CameraScene {
     exitHandler.accept(EXIT_WORLD_FAILED);
   }
 
+  @GuardedBy("lock")
   void requireOpen() {
     if (closed) {
       throw new IllegalStateException("the simulated world was closed; create a new one");

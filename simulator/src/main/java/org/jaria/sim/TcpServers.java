@@ -71,7 +71,7 @@ final class TcpServers implements AutoCloseable {
         t.boundPort = -1;
       }
       for (RobotFactory f : factories) {
-        f.boundPort = -1;
+        f.setBoundPort(-1);
       }
       throw e;
     }
@@ -111,8 +111,9 @@ final class TcpServers implements AutoCloseable {
    */
   void bind(RobotFactory f) throws IOException {
     ServerSocketChannel ch = open(f.requestedPort, f, "the " + f.getModel() + " robot factory");
-    f.boundPort = ((InetSocketAddress) ch.getLocalAddress()).getPort();
-    log.info("robot factory for {} listens on TCP port {}", f.getModel(), f.boundPort);
+    int port = ((InetSocketAddress) ch.getLocalAddress()).getPort();
+    f.setBoundPort(port);
+    log.info("robot factory for {} listens on TCP port {}", f.getModel(), port);
   }
 
   /** Opens a non-blocking listening port whose clients go to {@code owner}. */

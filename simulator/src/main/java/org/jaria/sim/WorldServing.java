@@ -1,5 +1,6 @@
 package org.jaria.sim;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
@@ -8,14 +9,24 @@ import org.jaria.clock.VirtualClock;
 
 /**
  * How a world meets the outside: the robots' and robot factories' TCP ports and the thread that
- * steps the world in real time. Everything but {@link #stopRealTime} runs under the world's lock.
+ * steps the world in real time. Its state is guarded by the world's lock, which every method takes
+ * (it is reentrant: the world's own methods, which hold it already, call these), so Error Prone
+ * checks each access; {@link #stopRealTime} lets go of it while it waits for the thread.
  */
 final class WorldServing {
 
   private final ReentrantLock lock;
+
+  @GuardedBy("lock")
   private TcpServers servers;
+
+  @GuardedBy("lock")
   private RealTimeRunner runner;
+
+  @GuardedBy("lock")
   private java.net.InetAddress bindAddress;
+
+  @GuardedBy("lock")
   private final List<RobotFactory> factories = new ArrayList<>();
 
   WorldServing(ReentrantLock worldLock) {
@@ -24,8 +35,13 @@ final class WorldServing {
 
   /** Opens every factory's and robot's port, once (idempotent). */
   void listen(List<RobotSlot> slots) throws IOException {
-    if (servers == null) {
-      servers = TcpServers.openAll(slots, factories, bindAddress);
+    lock.lock();
+    try {
+      if (servers == null) {
+        servers = TcpServers.openAll(slots, factories, bindAddress);
+      }
+    } finally {
+      lock.unlock();
     }
   }
 
@@ -35,33 +51,54 @@ final class WorldServing {
    * @throws java.io.UncheckedIOException if its port cannot be opened
    */
   void factoryAdded(RobotFactory f) {
-    if (servers != null) {
-      try {
-        servers.bind(f);
-      } catch (IOException e) {
-        throw new java.io.UncheckedIOException(e);
+    lock.lock();
+    try {
+      if (servers != null) {
+        try {
+          servers.bind(f);
+        } catch (IOException e) {
+          throw new java.io.UncheckedIOException(e);
+        }
       }
+      factories.add(f);
+    } finally {
+      lock.unlock();
     }
-    factories.add(f);
   }
 
   /** The robot factories, in the order they were added. */
   List<RobotFactory> factories() {
-    return List.copyOf(factories);
+    lock.lock();
+    try {
+      return List.copyOf(factories);
+    } finally {
+      lock.unlock();
+    }
   }
 
   /** Listens on {@code address} only (null: every interface); before {@link #listen}. */
   void setBindAddress(java.net.InetAddress address) {
-    if (servers != null) {
-      throw new IllegalStateException("the world listens already; set the address before listen()");
+    lock.lock();
+    try {
+      if (servers != null) {
+        throw new IllegalStateException(
+            "the world listens already; set the address before listen()");
+      }
+      bindAddress = address;
+    } finally {
+      lock.unlock();
     }
-    bindAddress = address;
   }
 
   /** Opens the port of a robot added while listening. */
   void robotAdded(RobotSlot slot) {
-    if (servers != null) {
-      servers.bindLate(slot);
+    lock.lock();
+    try {
+      if (servers != null) {
+        servers.bindLate(slot);
+      }
+    } finally {
+      lock.unlock();
     }
   }
 
@@ -70,10 +107,15 @@ final class WorldServing {
    * robot made for it).
    */
   void acceptPending(VirtualClock clock, WorldRobots robots) {
-    if (servers != null) {
-      servers.acceptPending(
-          (slot, c) -> TcpServers.attach(slot, c, clock),
-          (factory, c) -> TcpServers.attach(robots.makeFor(factory, c), c, clock));
+    lock.lock();
+    try {
+      if (servers != null) {
+        servers.acceptPending(
+            (slot, c) -> TcpServers.attach(slot, c, clock),
+            (factory, c) -> TcpServers.attach(robots.makeFor(factory, c), c, clock));
+      }
+    } finally {
+      lock.unlock();
     }
   }
 
@@ -83,17 +125,27 @@ final class WorldServing {
    * @throws IllegalStateException saying how to step by hand
    */
   void checkMayStep() {
-    if (runner != null && !runner.isRunnerThread()) {
-      throw new IllegalStateException(
-          "the world runs in real time; stop it with stopRealTime() before stepping by hand");
+    lock.lock();
+    try {
+      if (runner != null && !runner.isRunnerThread()) {
+        throw new IllegalStateException(
+            "the world runs in real time; stop it with stopRealTime() before stepping by hand");
+      }
+    } finally {
+      lock.unlock();
     }
   }
 
   /** Starts the real-time thread unless one runs. */
   void startRealTime(SimWorld world, long tickNanos, double speedup) {
-    if (runner == null) {
-      runner = new RealTimeRunner(world, tickNanos, speedup);
-      runner.start();
+    lock.lock();
+    try {
+      if (runner == null) {
+        runner = new RealTimeRunner(world, tickNanos, speedup);
+        runner.start();
+      }
+    } finally {
+      lock.unlock();
     }
   }
 
@@ -120,29 +172,49 @@ final class WorldServing {
   }
 
   boolean isRealTime() {
-    return runner != null;
+    lock.lock();
+    try {
+      return runner != null;
+    } finally {
+      lock.unlock();
+    }
   }
 
   /** Real milliseconds a tick should take (0 when stepped by hand or unthrottled). */
   int realIntervalMillis() {
-    RealTimeRunner r = runner;
-    return r == null ? 0 : r.realIntervalMillis();
+    lock.lock();
+    try {
+      RealTimeRunner r = runner;
+      return r == null ? 0 : r.realIntervalMillis();
+    } finally {
+      lock.unlock();
+    }
   }
 
   /** Real milliseconds the last tick took (0 when stepped by hand). */
   int lastIntervalMillis() {
-    RealTimeRunner r = runner;
-    return r == null ? 0 : r.lastIntervalMillis();
+    lock.lock();
+    try {
+      RealTimeRunner r = runner;
+      return r == null ? 0 : r.lastIntervalMillis();
+    } finally {
+      lock.unlock();
+    }
   }
 
   /** Closes every port. */
   void closePorts(List<RobotSlot> slots) {
-    for (RobotSlot s : slots) {
-      TcpServers.unbind(s);
-    }
-    if (servers != null) {
-      servers.close();
-      servers = null;
+    lock.lock();
+    try {
+      for (RobotSlot s : slots) {
+        TcpServers.unbind(s);
+      }
+      if (servers != null) {
+        servers.close();
+        servers = null;
+      }
+    } finally {
+      lock.unlock();
     }
   }
 }

@@ -1,5 +1,6 @@
 package org.jaria.net.client;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.io.BufferedInputStream;
 import java.io.DataInputStream;
 import java.io.EOFException;
@@ -70,7 +71,11 @@ public final class ArClientBase implements AutoCloseable {
 
   // Guarded by "this".
   private final DataList dataList = new DataList();
+
+  @GuardedBy("this")
   private final Map<Integer, Deque<CompletableFuture<ArNetPacket>>> waiting = new LinkedHashMap<>();
+
+  @GuardedBy("this")
   private final Map<Integer, java.io.ByteArrayOutputStream> partial = new LinkedHashMap<>();
 
   /** Largest reply of several packets gathered for a {@link #requestOnce}. */
@@ -282,6 +287,7 @@ public final class ArClientBase implements AutoCloseable {
     }
   }
 
+  @GuardedBy("this") // dispatch calls it holding the lock
   private void failRequest(ArNetPacket p) {
     String name = p.bufToStr();
     String why = p.bufToStr();

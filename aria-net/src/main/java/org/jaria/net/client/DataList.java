@@ -1,5 +1,6 @@
 package org.jaria.net.client;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -14,7 +15,10 @@ import org.jaria.net.protocol.Protocol;
  */
 final class DataList {
 
+  @GuardedBy("this")
   private final Map<Integer, DataInfo> byCommand = new LinkedHashMap<>();
+
+  @GuardedBy("this")
   private final Map<String, DataInfo> byName = new LinkedHashMap<>();
 
   synchronized void clear() {

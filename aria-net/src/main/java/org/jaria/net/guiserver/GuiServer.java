@@ -1,10 +1,5 @@
 package org.jaria.net.guiserver;
 
-import org.jaria.net.server.ArServerBase;
-import org.jaria.net.server.CallPolicy;
-import org.jaria.net.server.MapFolder;
-import org.jaria.net.server.ServerOptions;
-import org.jaria.net.server.Where;
 import java.io.IOException;
 import java.util.Locale;
 import java.util.Objects;
@@ -20,6 +15,10 @@ import org.jaria.net.provider.LocalizationInfo;
 import org.jaria.net.provider.PathPlanningInfo;
 import org.jaria.net.provider.PtzControl;
 import org.jaria.net.provider.VideoSource;
+import org.jaria.net.server.ArServerBase;
+import org.jaria.net.server.CallPolicy;
+import org.jaria.net.server.MapFolder;
+import org.jaria.net.server.ServerOptions;
 import org.jaria.net.server.info.ArCameraCollection;
 import org.jaria.net.server.info.ArServerHandlerCamera;
 import org.jaria.net.server.info.ArServerHandlerCameraCollection;
@@ -67,9 +66,9 @@ import org.jaria.robot.ArRobot;
  * }
  * }</pre>
  *
- * <p>{@code jaria demo guiserver} runs exactly this; {@code org.jaria.tools.guiserver.sim.SimulatedGuiServer}
- * (module {@code tools}) does it on an embedded simulator. The protocol is described in {@code
- * aria-net/PROTOCOL.md}.
+ * <p>{@code jaria demo guiserver} runs exactly this; {@code
+ * org.jaria.tools.guiserver.sim.SimulatedGuiServer} (module {@code tools}) does it on an embedded
+ * simulator. The protocol is described in {@code aria-net/PROTOCOL.md}.
  */
 public final class GuiServer implements AutoCloseable {
 

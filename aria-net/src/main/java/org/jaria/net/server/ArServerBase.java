@@ -1,5 +1,6 @@
 package org.jaria.net.server;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.io.IOException;
 import java.security.SecureRandom;
 import java.util.List;
@@ -72,11 +73,15 @@ public class ArServerBase implements AutoCloseable {
   private final CallRunner calls;
   private final Dispatcher dispatcher;
   private final Publisher publisher;
-  private IoLoop io;
-  private ThreadPoolExecutor workers;
-  private Thread ioThread;
-  private Thread publisherThread;
+  // Written once by open(), read by any thread (getPort() may be asked from another thread than
+  // the one that opened): volatile, so that a reader sees them complete.
+  private volatile IoLoop io;
+  private volatile ThreadPoolExecutor workers;
+  private volatile Thread ioThread;
+  private volatile Thread publisherThread;
   private volatile boolean open;
+
+  @GuardedBy("this")
   private boolean closed;
 
   /** A server without a robot (all handlers run on workers). */

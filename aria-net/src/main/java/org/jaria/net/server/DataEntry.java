@@ -1,5 +1,6 @@
 package org.jaria.net.server;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.nio.ByteBuffer;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.data.DataInfo;
@@ -19,7 +20,10 @@ final class DataEntry {
   /** How requests of this data wait for the robot's cycle. */
   volatile CallPolicy policy = CallPolicy.QUEUED;
 
+  @GuardedBy("this")
   private long encodedVersion = Long.MIN_VALUE;
+
+  @GuardedBy("this")
   private ByteBuffer encoded;
 
   DataEntry(DataInfo info, Where where, RequestHandler handler, Publication publication) {

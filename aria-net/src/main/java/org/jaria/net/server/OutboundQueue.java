@@ -1,5 +1,6 @@
 package org.jaria.net.server;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.ArrayDeque;
 import java.util.HashMap;
 import java.util.Map;
@@ -19,12 +20,24 @@ import java.util.Map;
  */
 final class OutboundQueue {
 
+  @GuardedBy("this")
   private final ArrayDeque<Outgoing> queue = new ArrayDeque<>();
+
+  @GuardedBy("this")
   private final Map<Integer, Outgoing> pendingUpdates = new HashMap<>();
+
   private final long maxOwnedBytes;
+
+  @GuardedBy("this")
   private long ownedBytes;
+
+  @GuardedBy("this")
   private long sharedBytes;
+
+  @GuardedBy("this")
   private long peakBytes;
+
+  @GuardedBy("this")
   private long coalesced;
 
   OutboundQueue(long maxOwnedBytes) {
@@ -67,6 +80,7 @@ final class OutboundQueue {
     peak();
   }
 
+  @GuardedBy("this")
   private void peak() {
     peakBytes = Math.max(peakBytes, ownedBytes + sharedBytes);
   }

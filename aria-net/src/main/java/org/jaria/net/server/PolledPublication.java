@@ -1,5 +1,6 @@
 package org.jaria.net.server;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.Objects;
 import java.util.function.LongSupplier;
 import java.util.function.Supplier;
@@ -15,7 +16,11 @@ public final class PolledPublication implements Publication {
 
   private final Supplier<? extends NetEncodable> supplier;
   private final LongSupplier key;
+
+  @GuardedBy("this")
   private Versioned last = Versioned.NONE;
+
+  @GuardedBy("this")
   private long lastKey = Long.MIN_VALUE;
 
   private PolledPublication(Supplier<? extends NetEncodable> supplier, LongSupplier key) {

@@ -1,5 +1,6 @@
 package org.jaria.net.server;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
@@ -26,7 +27,10 @@ final class Publisher implements Runnable {
   private final ArServerBase server;
   private final ReentrantLock lock = new ReentrantLock();
   private final Condition wake = lock.newCondition();
+
+  @GuardedBy("lock")
   private boolean woken;
+
   private volatile boolean stopping;
   private long failures;
 

@@ -1,6 +1,5 @@
 package org.jaria.net.server;
 
-import org.jaria.net.guiserver.GuiServer;
 import java.time.Duration;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
@@ -13,6 +12,7 @@ import org.jaria.net.ArNetPacket;
 import org.jaria.net.Eventually;
 import org.jaria.net.arnl.ArnlNavigation;
 import org.jaria.net.client.ArClientBase;
+import org.jaria.net.guiserver.GuiServer;
 import org.jaria.range.ArSonarDevice;
 import org.jaria.robot.ArRobot;
 import org.jaria.sim.SimOptions;

@@ -67,8 +67,7 @@ class GuiServerArnlTest {
       assertTrue(moving.path().size() >= 2, "a path of points");
       assertEquals(new ArPose(3000, 15000), moving.goal());
       // ARNL's layout of the path: byte2 count, byte4 x, y.
-      org.jaria.net.data.PathPoints aria =
-          org.jaria.net.data.PathPoints.read(rig.call("getPath"));
+      org.jaria.net.data.PathPoints aria = org.jaria.net.data.PathPoints.read(rig.call("getPath"));
       assertTrue(aria.path().size() >= 2, "the path in getPath: " + aria.path());
       assertTrue(
           rig.runUntil(

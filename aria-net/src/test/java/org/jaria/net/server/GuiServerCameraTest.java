@@ -1,6 +1,5 @@
 package org.jaria.net.server;
 
-import org.jaria.net.guiserver.GuiServer;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -8,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.data.CameraInfo;
+import org.jaria.net.guiserver.GuiServer;
 import org.jaria.net.provider.PtzControl;
 import org.junit.jupiter.api.Test;
 

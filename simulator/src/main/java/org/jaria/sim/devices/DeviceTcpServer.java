@@ -1,5 +1,6 @@
 package org.jaria.sim.devices;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.ServerSocket;
@@ -33,6 +34,7 @@ public final class DeviceTcpServer implements AutoCloseable {
   private final Thread acceptor;
 
   /** Devices started so far. Guarded by {@code this}. */
+  @GuardedBy("this")
   private final List<EmulatedDevice> devices = new ArrayList<>();
 
   /**

@@ -19,9 +19,9 @@ import org.jaria.connection.ArTcpConnection;
 import org.jaria.protocol.Hex;
 import org.jaria.robot.ArRobot;
 import org.jaria.sim.ServerCounters;
-import org.jaria.sim.SimServerOptions;
 import org.jaria.sim.SimOptions;
 import org.jaria.sim.SimRobot;
+import org.jaria.sim.SimServerOptions;
 import org.jaria.sim.SimWorld;
 import org.junit.jupiter.api.Test;
 

@@ -1,7 +1,7 @@
 package org.jaria.net.server.info;
 
-import org.jaria.net.data.PathSnapshot;
 import org.jaria.net.data.PathPoints;
+import org.jaria.net.data.PathSnapshot;
 import org.jaria.net.provider.PathPlanningInfo;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.PolledPublication;
