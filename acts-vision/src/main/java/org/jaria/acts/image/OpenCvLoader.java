@@ -7,6 +7,11 @@ import java.io.IOException;
  * which unpacks the library for this operating system from the openpnp jar). Thread-safe: the JVM
  * initialises the holder class once, so the library is loaded (or fails) exactly once, on first
  * use.
+ *
+ * <p>OpenCV is an optional dependency of this library: a program that only speaks the ACTS protocol
+ * (the {@code ArACTS_1_2} client, the server on still images or the simulator's camera) does not
+ * need its 110 MB jar. Only a live camera ({@link CameraSource}) does; without the jar on the class
+ * path {@link #load()} says which library to add.
  */
 public final class OpenCvLoader {
 
@@ -17,6 +22,11 @@ public final class OpenCvLoader {
     static final String FAILURE = tryLoad();
 
     private static String tryLoad() {
+      if (OpenCvLoader.class.getClassLoader().getResource("nu/pattern/OpenCV.class") == null) {
+        return "OpenCV is not on the class path: a live camera needs the library"
+            + " org.openpnp:opencv (acts-vision declares it optional; add it to your project's"
+            + " dependencies); still images (-f) do not";
+      }
       try {
         nu.pattern.OpenCV.loadLocally();
         return null;

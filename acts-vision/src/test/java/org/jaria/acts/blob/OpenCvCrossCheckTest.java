@@ -7,7 +7,6 @@ import java.io.IOException;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.SplittableRandom;
-import org.jaria.acts.bench.VisionBenchmark;
 import org.jaria.acts.color.ChannelBank;
 import org.jaria.acts.color.LookupTables;
 import org.jaria.acts.color.Trainer;
@@ -15,6 +14,7 @@ import org.jaria.acts.image.OpenCvLoader;
 import org.jaria.acts.image.RgbImage;
 import org.jaria.acts.image.TestScene;
 import org.jaria.acts.testing.Pictures;
+import org.jaria.acts.testing.SceneChannels;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.opencv.core.Core;
@@ -70,9 +70,9 @@ class OpenCvCrossCheckTest {
   void deskSceneWithBoxChannelsAgrees() {
     RgbImage scene = TestScene.render();
     for (int i = 0; i < 8; i++) {
-      compareBox(scene, VisionBenchmark.box(i));
+      compareBox(scene, SceneChannels.box(i));
     }
-    compareBox(TestScene.render(640, 480), VisionBenchmark.box(0));
+    compareBox(TestScene.render(640, 480), SceneChannels.box(0));
   }
 
   @Test

@@ -98,7 +98,7 @@ final class BenchCommand implements Runnable {
   static final class Vision extends QuickBench {
     @Override
     String table() throws Exception {
-      return org.jaria.acts.bench.VisionBenchmark.run(quick);
+      return org.jaria.tools.bench.VisionBenchmark.run(quick);
     }
   }
 

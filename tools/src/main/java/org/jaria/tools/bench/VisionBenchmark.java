@@ -1,4 +1,4 @@
-package org.jaria.acts.bench;
+package org.jaria.tools.bench;
 
 import java.io.IOException;
 import java.util.Arrays;
@@ -17,6 +17,7 @@ import org.jaria.acts.image.TestScene;
 import org.jaria.acts.server.ActsServer;
 import org.jaria.acts.server.ServerSettings;
 import org.jaria.acts.server.VisionPipeline;
+import org.jaria.acts.testing.SceneChannels;
 import org.jaria.clock.Clock;
 import org.opencv.core.Core;
 import org.opencv.core.CvType;
@@ -46,45 +47,7 @@ import org.opencv.imgproc.Imgproc;
  */
 public final class VisionBenchmark {
 
-  /** The boxes {r0, r1, g0, g1, b0, b1} of the eight base channels. */
-  private static final int[][] BASE_BOXES = {
-    {110, 255, 0, 70, 0, 80}, // red (book, cup)
-    {20, 75, 90, 165, 35, 95}, // green (mug)
-    {15, 75, 35, 95, 115, 205}, // blue (pen)
-    {195, 255, 175, 245, 35, 105}, // yellow (note)
-    {150, 255, 80, 145, 0, 55}, // orange (ball)
-    {185, 255, 115, 175, 125, 190}, // pink (eraser)
-    {95, 185, 60, 130, 30, 80}, // wood (desk)
-    {155, 230, 145, 220, 125, 195}, // wall
-  };
-
   private VisionBenchmark() {}
-
-  /** The RGB box {r0, r1, g0, g1, b0, b1} of benchmark channel {@code i} (0-based). */
-  public static int[] box(int i) {
-    int[] b = BASE_BOXES[i % 8].clone();
-    int shift = (i / 8) * 6;
-    for (int k = 0; k < 6; k += 2) {
-      b[k] = Math.max(0, Math.min(250, b[k] + shift));
-      b[k + 1] = Math.max(b[k], Math.min(255, b[k + 1] - shift));
-    }
-    return b;
-  }
-
-  /** A bank with the first {@code n} benchmark channels trained, at {@code cellBits}. */
-  public static ChannelBank bank(int n, int cellBits) {
-    ChannelBank bank = new ChannelBank(cellBits);
-    for (int i = 0; i < n; i++) {
-      int[] b = box(i);
-      bank.edit(
-          i + 1,
-          c -> {
-            c.addRgbBox(b[0], b[1], b[2], b[3], b[4], b[5]);
-            return null;
-          });
-    }
-    return bank;
-  }
 
   /** Runs everything and returns the table ({@code quick}: shorter, less precise runs). */
   public static String run(boolean quick) throws IOException, InterruptedException {
@@ -114,7 +77,8 @@ public final class VisionBenchmark {
     for (int[] s : sizes) {
       RgbImage img = TestScene.render(s[0], s[1]);
       for (int n : channelCounts) {
-        double ours = timeTracker(img, bank(n, ChannelBank.DEFAULT_CELL_BITS), budget, rounds);
+        double ours =
+            timeTracker(img, SceneChannels.bank(n, ChannelBank.DEFAULT_CELL_BITS), budget, rounds);
         double cv = timeOpenCv(img, n, budget, rounds);
         out.append(
             String.format(
@@ -134,7 +98,7 @@ public final class VisionBenchmark {
     RgbImage scene = TestScene.render(640, 480);
     RgbImage noise = noise(640, 480, 42);
     for (int bits = 8; bits >= 6; bits--) {
-      ChannelBank bank = bank(8, bits);
+      ChannelBank bank = SceneChannels.bank(8, bits);
       double a = timeTracker(scene, bank, budget, rounds);
       double b = timeTracker(noise, bank, budget, rounds);
       out.append(
@@ -181,7 +145,7 @@ public final class VisionBenchmark {
     Scalar[] lo = new Scalar[n];
     Scalar[] hi = new Scalar[n];
     for (int i = 0; i < n; i++) {
-      int[] b = box(i);
+      int[] b = SceneChannels.box(i);
       lo[i] = new Scalar(b[0], b[2], b[4]);
       hi[i] = new Scalar(b[1], b[3], b[5]);
     }
@@ -226,7 +190,8 @@ public final class VisionBenchmark {
 
   private static String roundTrip(int samples) throws IOException, InterruptedException {
     StillImageSource src = new StillImageSource(TestScene.render(160, 120));
-    VisionPipeline pipeline = new VisionPipeline(src, bank(8, 8), TrackerSettings.DEFAULT);
+    VisionPipeline pipeline =
+        new VisionPipeline(src, SceneChannels.bank(8, 8), TrackerSettings.DEFAULT);
     ActsServer server =
         new ActsServer(
             pipeline,

@@ -1,9 +1,10 @@
-package org.jaria.acts.bench;
+package org.jaria.tools.bench;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.jaria.acts.color.ChannelBank;
+import org.jaria.acts.testing.SceneChannels;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
@@ -23,10 +24,10 @@ class VisionBenchmarkTest {
 
   @Test
   void benchmarkChannelsAreTrained() {
-    ChannelBank bank = VisionBenchmark.bank(32, 8);
+    ChannelBank bank = SceneChannels.bank(32, 8);
     assertEquals(-1, bank.activeMask(), "all 32 channels can classify");
     for (int i = 0; i < 32; i++) {
-      int[] b = VisionBenchmark.box(i);
+      int[] b = SceneChannels.box(i);
       assertTrue(b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5]);
     }
   }
