@@ -13,7 +13,6 @@ import org.jaria.acts.image.CameraSource;
 import org.jaria.acts.image.ImageSequenceSource;
 import org.jaria.acts.image.ImageSource;
 import org.jaria.acts.image.StillImageSource;
-import org.jaria.acts.ptz.ArVCC4;
 import org.jaria.clock.Clock;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.connection.RobotAddress;
@@ -29,9 +28,9 @@ import org.jaria.net.server.GuiServer;
 import org.jaria.net.server.MapFolder;
 import org.jaria.net.server.ServerOptions;
 import org.jaria.net.server.modes.ArServerModes;
-import org.jaria.net.sim.ActsPtz;
 import org.jaria.net.sim.SimulatedGuiServer;
 import org.jaria.net.video.JpegVideo;
+import org.jaria.ptz.ArVCC4;
 import org.jaria.robot.ArRobot;
 import org.jaria.tools.cli.Passwords;
 import org.jaria.tools.cli.SecondsOption;
@@ -401,11 +400,10 @@ public final class GuiServerCommand implements Callable<Integer> {
         out.printf(Locale.ROOT, "Serving video: %s%n", cam.getName());
       }
       report(out, localized, robot, nav);
-      ActsPtz unit = null;
+      ArVCC4 unit = null;
       if (ptz != null) {
-        ArVCC4 vcc4 = new ArVCC4(robot);
-        vcc4.init();
-        unit = new ActsPtz(vcc4);
+        unit = new ArVCC4(robot);
+        unit.init();
         out.println("Serving the VC-C4 on the robot's AUX port as camera Cam1");
       }
       try (GuiServer gui =

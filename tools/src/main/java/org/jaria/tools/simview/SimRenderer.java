@@ -44,7 +44,7 @@ public final class SimRenderer {
   /**
    * A camera on a robot, as drawn: where it looks relative to the robot and how wide it sees.
    *
-   * @param panDeg pan, degrees (+ left)
+   * @param panDeg pan, degrees (+ right, ARIA's sign)
    * @param fovDeg horizontal field of view, degrees
    */
   public record CameraView(double panDeg, double fovDeg) {
@@ -308,7 +308,7 @@ public final class SimRenderer {
     double y = vp.toScreenY(p.y());
     double r = CAMERA_RANGE_MM * vp.scale();
     double half = Math.toRadians(cam.fovDeg() / 2);
-    double headingDeg = p.th() + cam.panDeg();
+    double headingDeg = p.th() - cam.panDeg();
     double th = Math.toRadians(headingDeg);
     gc.setStroke(CAMERA);
     gc.setLineWidth(1.2);
