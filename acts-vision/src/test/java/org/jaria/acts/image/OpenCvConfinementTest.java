@@ -47,17 +47,29 @@ class OpenCvConfinementTest {
         .check(acts);
   }
 
+  /** The jar (or folder) on this test's class path that holds {@code resource}. */
+  private static URL jarOf(String resource) throws Exception {
+    URL u = OpenCvConfinementTest.class.getClassLoader().getResource(resource);
+    assertTrue(u != null, resource + " is on the test class path");
+    String s = u.toString();
+    if (s.startsWith("jar:")) {
+      return new URL(s.substring(4, s.indexOf("!/")));
+    }
+    return new URL(s.substring(0, s.length() - resource.length()));
+  }
+
   @Test
   void everyOtherClassLoadsWithoutOpenCvAndACameraSaysWhatToAdd() throws Exception {
     List<URL> path = new ArrayList<>();
-    for (Class<?> anchor :
+    path.add(OpenCvLoader.class.getProtectionDomain().getCodeSource().getLocation());
+    path.add(ArRobot.class.getProtectionDomain().getCodeSource().getLocation());
+    // aria-core's own dependencies, found by name: this test does not use them itself.
+    for (String c :
         List.of(
-            OpenCvLoader.class, // this library
-            ArRobot.class, // aria-core
-            org.slf4j.Logger.class,
-            com.fazecast.jSerialComm.SerialPort.class,
-            org.jline.terminal.Terminal.class)) {
-      path.add(anchor.getProtectionDomain().getCodeSource().getLocation());
+            "org/slf4j/Logger.class",
+            "com/fazecast/jSerialComm/SerialPort.class",
+            "org/jline/terminal/Terminal.class")) {
+      path.add(jarOf(c));
     }
     Path root = classes();
     List<String> names;
