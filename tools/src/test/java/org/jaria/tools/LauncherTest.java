@@ -41,7 +41,16 @@ import org.w3c.dom.NodeList;
 class LauncherTest {
 
   private static final String[] MODULES = {
-    "aria-core", "simulator", "arnl-sonar", "aria-net", "acts-vision", "classroom", "tools"
+    "aria-core",
+    "simulator",
+    "jaria-testing",
+    "arnl-sonar",
+    "aria-net",
+    "arnl-net",
+    "acts-vision",
+    "classroom",
+    "web",
+    "tools"
   };
 
   @TempDir Path repo;
