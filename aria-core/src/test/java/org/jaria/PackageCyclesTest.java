@@ -29,7 +29,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * aria-core's packages depend on each other without loops, read from the compiled classes (every
- * package is its own node, sub-packages included: {@code protocol.packets} is not {@code protocol}).
+ * package is its own node, sub-packages included: {@code protocol.packets} is not {@code
+ * protocol}).
  *
  * <p>One seam is allowed, and it is ARIA's own: {@code ArRobot} takes actions, a resolver and range
  * devices ({@code addAction(ArAction, int)}, {@code setResolver(ArResolver)}, {@code

@@ -13,8 +13,8 @@ package org.jaria.acts;
  *       index of its first blob among all blobs of the reply (2 digits) and its blob count (2
  *       digits).
  *   <li>Then, for every blob in channel order, {@value #BLOB_SIZE} bytes: area (4 digits), then
- *       xcg, ycg, left, right, top, bottom (2 digits each), in image pixel coordinates.
- *       ({@code org.jaria.acts.server.ActsReply} writes a tracker's frame this way.)
+ *       xcg, ycg, left, right, top, bottom (2 digits each), in image pixel coordinates. ({@code
+ *       org.jaria.acts.server.ActsReply} writes a tracker's frame this way.)
  * </ul>
  *
  * <p>Worked example: a reply with one blob on channel 1 of area 1234, centre (80, 60), box columns

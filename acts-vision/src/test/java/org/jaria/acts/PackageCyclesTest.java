@@ -12,9 +12,10 @@ import org.junit.jupiter.api.Test;
 
 /**
  * ACTS's packages depend on each other without loops (read from the compiled classes; every
- * sub-package of org.jaria.acts is its own node). The root package is ARIA's client side (ArACTS_1_2,
- * its blobs and the wire protocol's numbers) and names no part of the tracker; images, colour
- * channels and blobs build on it and on each other one way; the server and the actions are on top.
+ * sub-package of org.jaria.acts is its own node). The root package is ARIA's client side
+ * (ArACTS_1_2, its blobs and the wire protocol's numbers) and names no part of the tracker; images,
+ * colour channels and blobs build on it and on each other one way; the server and the actions are
+ * on top.
  */
 class PackageCyclesTest {
 

@@ -12,9 +12,9 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The desktop apps' packages depend on each other without loops (read from the compiled classes;
- * every sub-package of org.jaria.apps is its own node): the shared JavaFX pieces ({@code fx}) at the
- * bottom, each app on them, {@code jaria screenshot} above the apps it renders, and the provider
- * the command line finds ({@code org.jaria.apps}) on top.
+ * every sub-package of org.jaria.apps is its own node): the shared JavaFX pieces ({@code fx}) at
+ * the bottom, each app on them, {@code jaria screenshot} above the apps it renders, and the
+ * provider the command line finds ({@code org.jaria.apps}) on top.
  */
 class PackageCyclesTest {
 

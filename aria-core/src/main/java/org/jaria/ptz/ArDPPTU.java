@@ -72,6 +72,11 @@ public class ArDPPTU extends ArPTZ {
   }
 
   @Override
+  public String getTypeName() {
+    return "dpptu";
+  }
+
+  @Override
   public double getMaxPan() {
     return MAX_PAN;
   }
@@ -87,12 +92,19 @@ public class ArDPPTU extends ArPTZ {
         && command(DpptuText.command("TP", (int) Math.round(tiltDeg / model.tiltDegPerStep)));
   }
 
+  @Override
+  public boolean canPanTiltSlew() {
+    return true;
+  }
+
   /** Sets the pan speed, degrees per second. */
+  @Override
   public boolean panSlew(double degPerSec) {
     return command(DpptuText.command("PS", (int) Math.round(degPerSec / model.panDegPerStep)));
   }
 
   /** Sets the tilt speed, degrees per second. */
+  @Override
   public boolean tiltSlew(double degPerSec) {
     return command(DpptuText.command("TS", (int) Math.round(degPerSec / model.tiltDegPerStep)));
   }

@@ -8,10 +8,19 @@ import org.jaria.robot.ArRobot;
 /**
  * A pan-tilt(-zoom) unit (ARIA's {@code ArPTZ}): commands go out of the robot's AUX1 port (the TTY2
  * command carries their bytes) or, if a connection is set with {@link #setDeviceConnection},
- * straight to that serial port. Angles are degrees (pan positive to the right, tilt positive up, as
- * ARIA), clamped to the unit's limits; the last commanded position is remembered. Through the
- * robot, the unit's answers come back as SERAUXpacs (see {@link #requestPosition()}): a unit that
- * can say where it points reports that in {@link #getReportedPan()} and the like.
+ * straight to that serial port. Angles are degrees with ARIA's signs: <b>pan positive to the
+ * right</b> (clockwise seen from above), tilt positive up; 0, 0 looks straight ahead. Requests are
+ * clamped to the unit's limits ({@link #getMaxNegPan()}..{@link #getMaxPosPan()}, {@link
+ * #getMaxNegTilt()}..{@link #getMaxPosTilt()}); the last commanded position is remembered. Through
+ * the robot, the unit's answers come back as SERAUXpacs (see {@link #requestPosition()}): a unit
+ * that can say where it points reports that in {@link #getReportedPan()} and the like.
+ *
+ * <p>Every unit follows the same signs: the Sony ({@link ArSonyPTZ}), the Directed Perception
+ * ({@link ArDPPTU}) and the Canon VC-C4 ({@link ArVCC4}) drivers, the simulator's camera and the
+ * guiServer's camera requests (PtzSignTest in the simulator checks them against each other).
+ *
+ * <p>Safe to call from several threads: each request goes out whole, and the getters report the
+ * last one.
  */
 public abstract class ArPTZ {
 
@@ -126,15 +135,88 @@ public abstract class ArPTZ {
   /** Sets the unit up (modes, addresses). */
   public abstract boolean init();
 
-  /** Largest pan angle, degrees (the smallest is its negative). */
+  /** Sets the unit up again (ARIA's {@code reset()}: the same as {@link #init()} by default). */
+  public void reset() {
+    init();
+  }
+
+  /** A short name of the kind of unit ({@code "sony"}, {@code "dpptu"}, {@code "vcc4"}). */
+  public abstract String getTypeName();
+
+  /** Largest pan angle, degrees (the smallest is its negative unless the unit says otherwise). */
   public abstract double getMaxPan();
 
-  /** Largest tilt angle, degrees (the smallest is its negative). */
+  /** Largest tilt angle, degrees (the smallest is its negative unless the unit says otherwise). */
   public abstract double getMaxTilt();
+
+  /** Largest pan to the right, degrees. */
+  public double getMaxPosPan() {
+    return getMaxPan();
+  }
+
+  /** Largest pan to the left, degrees (negative). */
+  public double getMaxNegPan() {
+    return -getMaxPan();
+  }
+
+  /** Largest tilt up, degrees. */
+  public double getMaxPosTilt() {
+    return getMaxTilt();
+  }
+
+  /** Largest tilt down, degrees (negative). */
+  public double getMaxNegTilt() {
+    return -getMaxTilt();
+  }
 
   /** Largest zoom value (0 if the unit does not zoom). */
   public int getMaxZoom() {
     return 0;
+  }
+
+  /** Smallest zoom value. */
+  public int getMinZoom() {
+    return 0;
+  }
+
+  /** Whether the unit zooms. */
+  public boolean canZoom() {
+    return getMaxZoom() > getMinZoom();
+  }
+
+  /** Stops a pan or tilt under way; false if the unit cannot. */
+  public boolean haltPanTilt() {
+    return false;
+  }
+
+  /** Stops a zoom under way; false if the unit cannot. */
+  public boolean haltZoom() {
+    return false;
+  }
+
+  /** Whether the pan and tilt speeds can be set. */
+  public boolean canPanTiltSlew() {
+    return false;
+  }
+
+  /** Sets the pan speed, degrees per second; false if the unit cannot. */
+  public boolean panSlew(double degreesPerSecond) {
+    return false;
+  }
+
+  /** Sets the tilt speed, degrees per second; false if the unit cannot. */
+  public boolean tiltSlew(double degreesPerSecond) {
+    return false;
+  }
+
+  /**
+   * Records a position the unit was set to without {@link #panTilt} or {@link #zoom} (by its
+   * initialisation, say), so the getters report it.
+   */
+  protected void setCommanded(double panDeg, double tiltDeg, int zoomValue) {
+    pan = panDeg;
+    tilt = tiltDeg;
+    zoom = zoomValue;
   }
 
   /** Sends a pan and tilt already clamped to the limits. */
@@ -147,8 +229,8 @@ public abstract class ArPTZ {
 
   /** Pans and tilts to absolute angles (clamped to the unit's limits). */
   public boolean panTilt(double panDeg, double tiltDeg) {
-    double p = Math.max(-getMaxPan(), Math.min(getMaxPan(), panDeg));
-    double t = Math.max(-getMaxTilt(), Math.min(getMaxTilt(), tiltDeg));
+    double p = Math.max(getMaxNegPan(), Math.min(getMaxPosPan(), panDeg));
+    double t = Math.max(getMaxNegTilt(), Math.min(getMaxPosTilt(), tiltDeg));
     if (!panTiltClamped(p, t)) {
       return false;
     }
@@ -177,9 +259,19 @@ public abstract class ArPTZ {
     return panTilt(pan, tilt + deg);
   }
 
-  /** Zooms (0..{@link #getMaxZoom()}). */
+  /** Pans and tilts by {@code panDeg} and {@code tiltDeg} from the last commanded angles. */
+  public boolean panTiltRel(double panDeg, double tiltDeg) {
+    return panTilt(pan + panDeg, tilt + tiltDeg);
+  }
+
+  /** Zooms by {@code amount} from the last commanded zoom. */
+  public boolean zoomRel(int amount) {
+    return zoom(zoom + amount);
+  }
+
+  /** Zooms ({@link #getMinZoom()}..{@link #getMaxZoom()}). */
   public boolean zoom(int value) {
-    int z = Math.max(0, Math.min(getMaxZoom(), value));
+    int z = Math.max(getMinZoom(), Math.min(getMaxZoom(), value));
     if (!zoomClamped(z)) {
       return false;
     }

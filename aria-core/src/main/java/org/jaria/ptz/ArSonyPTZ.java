@@ -59,6 +59,11 @@ public class ArSonyPTZ extends ArPTZ {
   }
 
   @Override
+  public String getTypeName() {
+    return "sony";
+  }
+
+  @Override
   public double getMaxPan() {
     return MAX_PAN;
   }

@@ -91,25 +91,7 @@ class ArLocalizationTaskTest {
     // robot's odometry heading used to lose 0.94 degrees at each crossing of +-180 (the
     // simulator's THPOS did not wrap at 4096 units); the estimate's heading drifted with it, lap
     // after lap, to 53 mm RMS over three laps.
-    List<ArPose> lap =
-        List.of(
-            new ArPose(9000, 9500),
-            new ArPose(9000, 12000),
-            new ArPose(9000, 15000),
-            new ArPose(9000, 12000),
-            new ArPose(9000, 9500),
-            new ArPose(15000, 9500),
-            new ArPose(15000, 15000),
-            new ArPose(15000, 9500),
-            new ArPose(26000, 9500),
-            new ArPose(26250, 7000),
-            new ArPose(26250, 6000),
-            new ArPose(26250, 9500),
-            new ArPose(1500, 9500));
-    List<ArPose> laps = new java.util.ArrayList<>();
-    for (int i = 0; i < 3; i++) {
-      laps.addAll(lap);
-    }
+    List<ArPose> laps = TrueRoute.officeLaps(3);
     SimulatedRobot sim = SimSetup.start(OFFICE, 11);
     try {
       ArRobot robot = sim.robot();

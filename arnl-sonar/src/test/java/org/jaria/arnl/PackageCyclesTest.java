@@ -36,7 +36,8 @@ class PackageCyclesTest {
   void theAlgorithmsKnowNothingOfArnlsTasks() {
     noClasses()
         .that()
-        .resideInAnyPackage("org.jaria.arnl.grid..", "org.jaria.arnl.mcl..", "org.jaria.arnl.plan..")
+        .resideInAnyPackage(
+            "org.jaria.arnl.grid..", "org.jaria.arnl.mcl..", "org.jaria.arnl.plan..")
         .should()
         .dependOnClassesThat()
         .resideInAPackage("org.jaria.arnl")

@@ -42,7 +42,16 @@ import org.w3c.dom.NodeList;
 class LauncherTest {
 
   private static final String[] MODULES = {
-    "aria-core", "simulator", "arnl-sonar", "aria-net", "acts-vision", "classroom", "web", "tools"
+    "aria-core",
+    "simulator",
+    "jaria-testing",
+    "arnl-sonar",
+    "aria-net",
+    "arnl-net",
+    "acts-vision",
+    "classroom",
+    "web",
+    "tools"
   };
 
   /** What the apps are built from besides the command line's modules. */

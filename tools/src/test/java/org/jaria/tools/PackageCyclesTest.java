@@ -16,7 +16,8 @@ import org.junit.jupiter.api.Test;
  * every sub-package of org.jaria.tools is its own node): {@code cli} (jaria and its list of
  * commands) on top, each command's package below it, the shared option types ({@code options}), the
  * desktop apps' stand-ins ({@code desktop}) and the version at the bottom. And no class here names
- * JavaFX or OpenCV: those are the apps module's, so the command line builds and starts without them.
+ * JavaFX or OpenCV: those are the apps module's, so the command line builds and starts without
+ * them.
  */
 class PackageCyclesTest {
 

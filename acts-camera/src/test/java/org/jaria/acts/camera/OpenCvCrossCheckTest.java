@@ -1,7 +1,5 @@
 package org.jaria.acts.camera;
 
-import org.jaria.acts.blob.BlobTracker;
-import org.jaria.acts.blob.ChannelComponents;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -9,6 +7,8 @@ import java.io.IOException;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.SplittableRandom;
+import org.jaria.acts.blob.BlobTracker;
+import org.jaria.acts.blob.ChannelComponents;
 import org.jaria.acts.color.ChannelBank;
 import org.jaria.acts.color.LookupTables;
 import org.jaria.acts.color.Trainer;

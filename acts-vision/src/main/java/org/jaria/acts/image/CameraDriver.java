@@ -14,8 +14,8 @@ public interface CameraDriver {
    * Opens a camera or a video file, frames scaled to {@code width × height}.
    *
    * @param device a camera index ({@code -1} = the first camera) or a device or video file path
-   * @throws IOException if there is no such camera or file, or it cannot be opened (the message says
-   *     what to try instead)
+   * @throws IOException if there is no such camera or file, or it cannot be opened (the message
+   *     says what to try instead)
    */
   LiveCamera open(String device, int width, int height) throws IOException;
 

@@ -18,7 +18,6 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
-import org.jaria.acts.ActsProtocol;
 import org.jaria.acts.ArACTSBlob;
 import org.jaria.acts.ArACTS_1_2;
 import org.jaria.acts.blob.BlobFrame;

@@ -2,8 +2,8 @@ package org.jaria.apps.mapper;
 
 import javafx.scene.canvas.GraphicsContext;
 import javafx.scene.input.MouseEvent;
-import org.jaria.map.ArMapObject;
 import org.jaria.apps.fx.Viewport;
+import org.jaria.map.ArMapObject;
 
 /**
  * Draws a forbidden area by dragging a rectangle from corner to corner. The area is stored as
@@ -49,8 +49,7 @@ public final class AreaTool implements MapTool {
     double[] b = end;
     start = null;
     if (Math.abs(b[0] - a[0]) >= 1 && Math.abs(b[1] - a[1]) >= 1) {
-      c.document()
-          .execute(MapEdits.addObject(ArMapObject.forbiddenArea(a[0], a[1], b[0], b[1])));
+      c.document().execute(MapEdits.addObject(ArMapObject.forbiddenArea(a[0], a[1], b[0], b[1])));
     }
     c.redraw();
   }

@@ -67,8 +67,7 @@ public final class LineTool implements MapTool {
       return;
     }
     if (forbidden) {
-      c.document()
-          .execute(MapEdits.addObject(ArMapObject.forbiddenLine(a[0], a[1], b[0], b[1])));
+      c.document().execute(MapEdits.addObject(ArMapObject.forbiddenLine(a[0], a[1], b[0], b[1])));
     } else {
       c.document().execute(MapEdits.addLine(new ArLineSegment(a[0], a[1], b[0], b[1])));
     }

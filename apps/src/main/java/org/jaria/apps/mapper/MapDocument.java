@@ -11,8 +11,8 @@ import org.jaria.map.ArMap;
 
 /**
  * A map being edited: its current {@link MapContent}, the undo and redo history, the file it came
- * from and whether it has unsaved changes. Edits are {@link MapEdit}s run through {@link
- * #execute}; each one records the content before and after, so undo and redo are exact.
+ * from and whether it has unsaved changes. Edits are {@link MapEdit}s run through {@link #execute};
+ * each one records the content before and after, so undo and redo are exact.
  *
  * <p>Used on the JavaFX thread; saving hands an immutable content to {@link MapFile} on a worker
  * thread.

@@ -13,12 +13,12 @@ import javafx.scene.canvas.GraphicsContext;
 import javafx.scene.paint.Color;
 import javafx.scene.text.Font;
 import javafx.scene.text.TextAlignment;
-import org.jaria.geom.ArLineSegment;
-import org.jaria.map.ArMapObject;
 import org.jaria.apps.fx.LabelPlacer;
 import org.jaria.apps.fx.PointLayer;
 import org.jaria.apps.fx.TextWidths;
 import org.jaria.apps.fx.Viewport;
+import org.jaria.geom.ArLineSegment;
+import org.jaria.map.ArMapObject;
 
 /**
  * Draws a map on a canvas: grid, sensor points, wall lines, objects with their symbols and names,

@@ -5,10 +5,10 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import org.jaria.map.ArMapObject;
-import org.jaria.map.ArMapPoints;
 import org.jaria.apps.fx.PointLayer;
 import org.jaria.apps.mapper.MapProblem.Severity;
+import org.jaria.map.ArMapObject;
+import org.jaria.map.ArMapPoints;
 
 /**
  * Checks a map before it is saved, the way a navigation program will use it: the home and goals

@@ -14,10 +14,10 @@ import javafx.scene.input.MouseEvent;
 import javafx.scene.input.ScrollEvent;
 import javafx.scene.input.ZoomEvent;
 import javafx.scene.layout.Region;
-import org.jaria.geom.ArLineSegment;
-import org.jaria.map.ArMapPoints;
 import org.jaria.apps.fx.PointLayer;
 import org.jaria.apps.fx.Viewport;
+import org.jaria.geom.ArLineSegment;
+import org.jaria.map.ArMapPoints;
 
 /**
  * The map editor's drawing area: shows a {@link MapDocument} through a {@link Viewport}, zooms with

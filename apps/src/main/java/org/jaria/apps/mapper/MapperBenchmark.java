@@ -8,12 +8,12 @@ import java.util.Locale;
 import java.util.SplittableRandom;
 import java.util.concurrent.atomic.AtomicLong;
 import javafx.scene.image.WritableImage;
+import org.jaria.apps.fx.FxRuntime;
+import org.jaria.apps.fx.PointLayer;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.map.ArMap;
 import org.jaria.map.ArMapObject;
 import org.jaria.map.ArMapPoints;
-import org.jaria.apps.fx.FxRuntime;
-import org.jaria.apps.fx.PointLayer;
 
 /**
  * {@code jaria bench mapper}: how long the map editor takes to draw a frame of a big map while the

@@ -27,10 +27,6 @@ import javafx.scene.layout.Priority;
 import javafx.scene.layout.Region;
 import javafx.scene.layout.VBox;
 import javafx.stage.Stage;
-import org.jaria.map.ArMap;
-import org.jaria.map.ArMapObject;
-import org.jaria.map.ArMapPoints;
-import org.jaria.map.MapFormatException;
 import org.jaria.apps.fx.AppEnvironment;
 import org.jaria.apps.fx.AppPrefs;
 import org.jaria.apps.fx.BackgroundWork;
@@ -38,6 +34,10 @@ import org.jaria.apps.fx.DesktopApp;
 import org.jaria.apps.fx.PointLayer;
 import org.jaria.apps.fx.Prompts;
 import org.jaria.apps.fx.WindowState;
+import org.jaria.map.ArMap;
+import org.jaria.map.ArMapObject;
+import org.jaria.map.ArMapPoints;
+import org.jaria.map.MapFormatException;
 
 /**
  * The map editor's main window (a Mapper3-Basic analogue): menus, tool bar, the map view, the

@@ -9,8 +9,8 @@ import javafx.scene.control.TextField;
 import javafx.scene.layout.GridPane;
 import javafx.scene.layout.Region;
 import javafx.scene.layout.VBox;
-import org.jaria.map.ArMapObject;
 import org.jaria.apps.fx.Prompts;
+import org.jaria.map.ArMapObject;
 
 /**
  * The side panel showing the selected object: its type, position, and its name and heading, which

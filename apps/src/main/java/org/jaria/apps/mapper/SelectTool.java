@@ -8,10 +8,10 @@ import javafx.scene.Cursor;
 import javafx.scene.canvas.GraphicsContext;
 import javafx.scene.input.MouseEvent;
 import javafx.scene.paint.Color;
+import org.jaria.apps.fx.Viewport;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArMath;
 import org.jaria.map.ArMapObject;
-import org.jaria.apps.fx.Viewport;
 
 /**
  * Selects, moves and rotates. Click an item to select it (Shift adds or removes), drag a box over

@@ -5,10 +5,10 @@ import java.util.List;
 import java.util.Map;
 import javafx.scene.canvas.GraphicsContext;
 import javafx.scene.paint.Color;
+import org.jaria.apps.fx.Viewport;
 import org.jaria.net.data.ArDrawingData;
 import org.jaria.net.data.NamedDrawing;
 import org.jaria.net.data.Points;
-import org.jaria.apps.fx.Viewport;
 
 /**
  * Draws a server's drawings (ArServerInfoDrawings) as MobileEyes does, lowest layer first: {@code

@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.Consumer;
 import java.util.function.Function;
+import org.jaria.apps.fx.PointLayer;
 import org.jaria.map.ArMap;
 import org.jaria.map.ArMapPoints;
 import org.jaria.map.MapFormatException;
@@ -26,7 +27,6 @@ import org.jaria.net.data.PhysicalInfo;
 import org.jaria.net.data.RobotUpdate;
 import org.jaria.net.data.SensorReadings;
 import org.jaria.net.data.VideoFrame;
-import org.jaria.apps.fx.PointLayer;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

@@ -6,11 +6,11 @@ import javafx.scene.canvas.Canvas;
 import javafx.scene.input.MouseButton;
 import javafx.scene.input.MouseEvent;
 import javafx.scene.input.ScrollEvent;
+import org.jaria.apps.fx.Viewport;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
 import org.jaria.map.ArMapObject;
 import org.jaria.net.data.RobotUpdate;
-import org.jaria.apps.fx.Viewport;
 
 /**
  * The monitor's map view: draws the {@link MonitorState} and turns the mouse into commands. With

@@ -9,6 +9,9 @@ import javafx.scene.canvas.GraphicsContext;
 import javafx.scene.paint.Color;
 import javafx.scene.text.Font;
 import javafx.scene.text.TextAlignment;
+import org.jaria.apps.fx.LabelPlacer;
+import org.jaria.apps.fx.TextWidths;
+import org.jaria.apps.fx.Viewport;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMapObject;
@@ -17,9 +20,6 @@ import org.jaria.net.data.Points;
 import org.jaria.net.data.RangeReadings;
 import org.jaria.net.data.RobotUpdate;
 import org.jaria.net.data.SensorReadings;
-import org.jaria.apps.fx.LabelPlacer;
-import org.jaria.apps.fx.TextWidths;
-import org.jaria.apps.fx.Viewport;
 
 /**
  * Draws what the monitor knows: the map (points, lines, goals, forbidden areas), the localization's

@@ -3,6 +3,7 @@ package org.jaria.apps.monitor;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Predicate;
+import org.jaria.apps.fx.PointLayer;
 import org.jaria.map.ArMap;
 import org.jaria.net.data.ConfigSection;
 import org.jaria.net.data.InfoStrings;
@@ -16,7 +17,6 @@ import org.jaria.net.data.PopupLayout;
 import org.jaria.net.data.RobotUpdate;
 import org.jaria.net.data.SensorReadings;
 import org.jaria.net.data.VideoFrame;
-import org.jaria.apps.fx.PointLayer;
 
 /**
  * What the monitor knows about the robot: the latest value of everything it subscribed to. The

@@ -37,6 +37,11 @@ import javafx.scene.layout.Priority;
 import javafx.scene.layout.Region;
 import javafx.scene.layout.VBox;
 import javafx.stage.Stage;
+import org.jaria.apps.fx.AppEnvironment;
+import org.jaria.apps.fx.BackgroundWork;
+import org.jaria.apps.fx.DesktopApp;
+import org.jaria.apps.fx.Prompts;
+import org.jaria.apps.fx.WindowState;
 import org.jaria.geom.ArPose;
 import org.jaria.net.client.ArClientBase;
 import org.jaria.net.client.ConnectionListener;
@@ -45,11 +50,6 @@ import org.jaria.net.data.InfoStrings;
 import org.jaria.net.data.LocalizationSnapshot;
 import org.jaria.net.data.PathSnapshot;
 import org.jaria.net.data.RobotUpdate;
-import org.jaria.apps.fx.AppEnvironment;
-import org.jaria.apps.fx.BackgroundWork;
-import org.jaria.apps.fx.DesktopApp;
-import org.jaria.apps.fx.Prompts;
-import org.jaria.apps.fx.WindowState;
 
 /**
  * The robot monitor's window (MobileEyes): the map with the robot, its sonar, the localization's

@@ -1,11 +1,5 @@
 package org.jaria.apps.screenshot;
 
-import org.jaria.apps.fx.AppCommand;
-import org.jaria.apps.fx.AppEnvironment;
-import org.jaria.apps.fx.DesktopApp;
-import org.jaria.apps.fx.FxImages;
-import org.jaria.apps.fx.FxRuntime;
-import org.jaria.apps.fx.HeadlessPrompts;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -18,6 +12,12 @@ import java.util.concurrent.TimeoutException;
 import javafx.scene.image.WritableImage;
 import javafx.stage.Stage;
 import org.jaria.apps.eztrain.EzTrainCommand;
+import org.jaria.apps.fx.AppCommand;
+import org.jaria.apps.fx.AppEnvironment;
+import org.jaria.apps.fx.DesktopApp;
+import org.jaria.apps.fx.FxImages;
+import org.jaria.apps.fx.FxRuntime;
+import org.jaria.apps.fx.HeadlessPrompts;
 import org.jaria.apps.mapper.MapperCommand;
 import org.jaria.apps.simview.SimViewCommand;
 import picocli.CommandLine;

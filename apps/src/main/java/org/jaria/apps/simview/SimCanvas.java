@@ -15,6 +15,8 @@ import javafx.scene.input.MouseButton;
 import javafx.scene.input.MouseEvent;
 import javafx.scene.input.ScrollEvent;
 import javafx.scene.layout.Region;
+import org.jaria.apps.fx.PointLayer;
+import org.jaria.apps.fx.Viewport;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
@@ -24,8 +26,6 @@ import org.jaria.sim.SimSnapshot;
 import org.jaria.sim.camera.ColoredObject;
 import org.jaria.sim.camera.SimCamera;
 import org.jaria.sim.world.WorldMap;
-import org.jaria.apps.fx.PointLayer;
-import org.jaria.apps.fx.Viewport;
 
 /**
  * The simulator view's drawing area. With the Move tool, drag an obstacle, a coloured object (a

@@ -9,6 +9,8 @@ import javafx.scene.paint.Color;
 import javafx.scene.shape.ArcType;
 import javafx.scene.text.Font;
 import javafx.scene.text.TextAlignment;
+import org.jaria.apps.fx.PointLayer;
+import org.jaria.apps.fx.Viewport;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
 import org.jaria.sim.SimLaserScan;
@@ -16,8 +18,6 @@ import org.jaria.sim.SimObstacle;
 import org.jaria.sim.SimSnapshot;
 import org.jaria.sim.camera.ColoredObject;
 import org.jaria.sim.world.WorldMap;
-import org.jaria.apps.fx.PointLayer;
-import org.jaria.apps.fx.Viewport;
 
 /**
  * Draws a simulated world: the map's walls and points, injected obstacles, and every robot with its
@@ -44,7 +44,7 @@ public final class SimRenderer {
   /**
    * A camera on a robot, as drawn: where it looks relative to the robot and how wide it sees.
    *
-   * @param panDeg pan, degrees (+ left)
+   * @param panDeg pan, degrees (+ right, ARIA's sign)
    * @param fovDeg horizontal field of view, degrees
    */
   public record CameraView(double panDeg, double fovDeg) {
@@ -308,7 +308,7 @@ public final class SimRenderer {
     double y = vp.toScreenY(p.y());
     double r = CAMERA_RANGE_MM * vp.scale();
     double half = Math.toRadians(cam.fovDeg() / 2);
-    double headingDeg = p.th() + cam.panDeg();
+    double headingDeg = p.th() - cam.panDeg();
     double th = Math.toRadians(headingDeg);
     gc.setStroke(CAMERA);
     gc.setLineWidth(1.2);

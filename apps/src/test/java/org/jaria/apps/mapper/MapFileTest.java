@@ -15,11 +15,11 @@ import java.util.BitSet;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicLong;
+import org.jaria.apps.fx.TestFiles;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.map.ArMap;
 import org.jaria.map.ArMapObject;
 import org.jaria.map.MapFormatException;
-import org.jaria.apps.fx.TestFiles;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -63,8 +63,7 @@ class MapFileTest {
             .findFirst()
             .orElseThrow();
     d.execute(
-        MapEdits.replace(
-            "Rename", lobby.id(), MapGeometry.renamed(lobby.object(), "Front door")));
+        MapEdits.replace("Rename", lobby.id(), MapGeometry.renamed(lobby.object(), "Front door")));
     d.execute(MapEdits.delete(Set.of(goal1.id()), new BitSet()));
     save(d, file);
 

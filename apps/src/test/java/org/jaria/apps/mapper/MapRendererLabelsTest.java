@@ -7,10 +7,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
-import org.jaria.map.ArMap;
-import org.jaria.map.ArMapObject;
 import org.jaria.apps.fx.LabelPlacer;
 import org.jaria.apps.fx.Viewport;
+import org.jaria.map.ArMap;
+import org.jaria.map.ArMapObject;
 import org.junit.jupiter.api.Test;
 
 /** The editor's names on the README's map, fitted as the editor opens it. */

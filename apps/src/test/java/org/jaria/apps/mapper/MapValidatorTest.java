@@ -7,11 +7,11 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
+import org.jaria.apps.fx.TestFiles;
+import org.jaria.apps.mapper.MapProblem.Severity;
 import org.jaria.geom.ArLineSegment;
 import org.jaria.map.ArMapObject;
 import org.jaria.map.ArMapPoints;
-import org.jaria.apps.fx.TestFiles;
-import org.jaria.apps.mapper.MapProblem.Severity;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 

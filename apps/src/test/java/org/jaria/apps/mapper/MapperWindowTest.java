@@ -16,15 +16,15 @@ import javafx.scene.input.MouseButton;
 import javafx.stage.Stage;
 import org.jaria.acts.image.ImageFiles;
 import org.jaria.acts.image.RgbImage;
-import org.jaria.geom.ArLineSegment;
-import org.jaria.map.ArMap;
-import org.jaria.map.ArMapObject;
 import org.jaria.apps.fx.AppEnvironment;
 import org.jaria.apps.fx.AppPrefs;
 import org.jaria.apps.fx.FxRuntime;
 import org.jaria.apps.fx.Mouse;
 import org.jaria.apps.fx.ScriptedPrompts;
 import org.jaria.apps.fx.TestFiles;
+import org.jaria.geom.ArLineSegment;
+import org.jaria.map.ArMap;
+import org.jaria.map.ArMapObject;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
@@ -360,9 +360,7 @@ class MapperWindowTest {
           window
               .document()
               .execute(MapEdits.addObject(ArMapObject.forbiddenArea(0, 0, 3000, 3000)));
-          window
-              .document()
-              .execute(MapEdits.addObject(ArMapObject.robotHome("", 1500, 1500, 0)));
+          window.document().execute(MapEdits.addObject(ArMapObject.robotHome("", 1500, 1500, 0)));
           window.document().execute(MapEdits.addLine(new ArLineSegment(6000, 0, 6000, 5000)));
           window.document().execute(MapEdits.addObject(ArMapObject.goal("Wall", 6100, 2000)));
           window.view().fit();

@@ -4,10 +4,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import java.util.Optional;
-import org.jaria.map.ArMap;
-import org.jaria.map.ArMapObject;
 import org.jaria.apps.fx.LabelPlacer;
 import org.jaria.apps.fx.Viewport;
+import org.jaria.map.ArMap;
+import org.jaria.map.ArMapObject;
 import org.junit.jupiter.api.Test;
 
 /** The monitor's names on the office map, fitted to its map pane as the monitor opens it. */

@@ -13,7 +13,6 @@ import org.jaria.map.MapFormatException;
 import org.jaria.net.provider.ConfigRegistry;
 import org.jaria.net.provider.LocalizationInfo;
 import org.jaria.net.provider.PathPlanningInfo;
-import org.jaria.net.provider.PtzControl;
 import org.jaria.net.provider.VideoSource;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.CallPolicy;
@@ -41,6 +40,7 @@ import org.jaria.net.server.modes.ArServerModeRatioDrive;
 import org.jaria.net.server.modes.ArServerModeStop;
 import org.jaria.net.server.modes.ArServerModeWander;
 import org.jaria.net.server.modes.ArServerModes;
+import org.jaria.ptz.ArPTZ;
 import org.jaria.robot.ArRobot;
 
 /**
@@ -156,7 +156,8 @@ public final class GuiServer implements AutoCloseable {
     if (b.ptz != null) {
       // As serverDemo names its VC-C4, listed for clients by ArServerHandlerCameraCollection.
       ArCameraCollection cameras = new ArCameraCollection();
-      cameras.addCamera(CAMERA_NAME, b.ptz.getTypeName(), "Camera", b.ptz.getTypeName());
+      String type = b.ptz.getTypeName().toUpperCase(Locale.ROOT);
+      cameras.addCamera(CAMERA_NAME, type, "Camera", type);
       new ArServerHandlerCameraCollection(server, cameras);
       camera = new ArServerHandlerCamera(CAMERA_NAME, server, robot, b.ptz, cameras);
     } else {
@@ -333,7 +334,7 @@ public final class GuiServer implements AutoCloseable {
     private PathPlanningInfo pathPlanning;
     private ConfigRegistry config;
     private VideoSource video;
-    private PtzControl ptz;
+    private ArPTZ ptz;
     private MapFolder mapFolder;
     private Consumer<ArMap> mapChanged;
     private ArStringInfoGroup infoGroup;
@@ -395,7 +396,7 @@ public final class GuiServer implements AutoCloseable {
      * A pan-tilt-zoom camera (a VC-C4 on the robot's AUX port, say) that clients may point: served
      * as camera "Cam1" with ArNetworking's camera requests and listed by {@code getCameraList}.
      */
-    public Builder ptz(PtzControl p) {
+    public Builder ptz(ArPTZ p) {
       ptz = p;
       return this;
     }

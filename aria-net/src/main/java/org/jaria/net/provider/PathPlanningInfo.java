@@ -6,9 +6,9 @@ import org.jaria.net.data.PathSnapshot;
 
 /**
  * What the network server needs from a path planner (ARNL's {@code ArPathPlanningTask} via an
- * adapter such as {@link org.jaria.net.arnl.ArnlPathPlanning}): the path and search area to draw,
- * and goals to go to. The planner drives with its own action group, which the goto mode switches on
- * when it becomes active and off when another mode takes over.
+ * adapter such as {@code org.jaria.net.arnl.ArnlPathPlanning} in arnl-net): the path and search
+ * area to draw, and goals to go to. The planner drives with its own action group, which the goto
+ * mode switches on when it becomes active and off when another mode takes over.
  *
  * <p>Methods are called from the server's worker and publisher threads, and {@link
  * #getStatusString()} and {@link #cancelPathPlan()} also from the robot's cycle: all must be

@@ -13,7 +13,6 @@ import org.jaria.net.Eventually;
 import org.jaria.net.PeerRecording;
 import org.jaria.net.RawClient;
 import org.jaria.net.data.CameraInfo;
-import org.jaria.net.data.ConfigLayout;
 import org.jaria.net.data.DataInfo;
 import org.jaria.net.protocol.Protocol;
 import org.jaria.net.server.modes.ArServerModes;
@@ -37,8 +36,8 @@ class AriaClientControlReplayTest {
    * either order (two workers may answer one client's requests in either order), advancing the
    * robot while it has work waiting; the first of each by command.
    */
-  private static Map<Integer, ArNetPacket> readStepping(
-      GuiRig rig, RawClient aria, int command, int other) throws Exception {
+  static Map<Integer, ArNetPacket> readStepping(GuiRig rig, RawClient aria, int command, int other)
+      throws Exception {
     Map<Integer, ArNetPacket> got = new java.util.HashMap<>();
     long end = System.nanoTime() + Eventually.LIMIT.toNanos();
     while (System.nanoTime() < end) {
@@ -165,38 +164,6 @@ class AriaClientControlReplayTest {
         seen.add((int) pt[0] + "," + (int) pt[1]);
       }
       assertEquals(List.of("-98,0", "98,0", "0,0", "0,-30", "0,88", "0,0"), seen);
-    }
-  }
-
-  @Test
-  void changeMapOnServerChangesTheMap() throws Exception {
-    byte[] c2s = PeerRecording.bytes("changeMapOnServer.c2s.bin");
-    byte[] s2c = PeerRecording.bytes("changeMapOnServer.s2c.bin");
-    Map<Integer, String> then = PeerRecording.listedCommands(PeerRecording.packets(s2c));
-    List<ArNetPacket> sent = PeerRecording.packets(c2s);
-    ArNetPacket setConfig = sent.get(sent.size() - 1).toReader();
-    assertEquals("setConfig", then.get(setConfig.getCommand()));
-    // "Got configuration from server. Changing map to hall", "Saving...": Files/Map first.
-    assertEquals("Section", setConfig.bufToStr());
-    assertEquals("Files", setConfig.bufToStr());
-    assertEquals("Map", setConfig.bufToStr());
-    assertEquals("hall", setConfig.bufToStr());
-    try (GuiRig rig = GuiRig.arnl();
-        RawClient aria = new RawClient(rig.gui.getServer().getPort())) {
-      ArServerBase s = rig.gui.getServer();
-      aria.readIntroduction();
-      aria.send(PeerRecording.renumbered(c2s, s2c, s::findCommandFromName));
-      int bySections = s.findCommandFromName("getConfigBySections");
-      int set = s.findCommandFromName("setConfig");
-      Map<Integer, ArNetPacket> got = readStepping(rig, aria, bySections, set);
-      assertEquals(
-          "Files", ConfigLayout.readAll(got.get(bySections)).get(0).name(), "what it looks for");
-      ArNetPacket answer = got.get(set);
-      assertEquals("", answer.bufToStr(), "every value taken");
-      assertEquals("hall", rig.gui.getMapName());
-      assertEquals(
-          org.jaria.map.ArMap.loadBundled("hall").getLines().size(),
-          rig.nav.getPathPlanningTask().getAriaMap().getLines().size());
     }
   }
 

@@ -10,7 +10,6 @@ import java.util.function.UnaryOperator;
 import org.jaria.map.ArMap;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.Eventually;
-import org.jaria.net.arnl.ArnlNavigation;
 import org.jaria.net.client.ArClientBase;
 import org.jaria.net.guiserver.GuiServer;
 import org.jaria.range.ArSonarDevice;
@@ -24,18 +23,30 @@ import org.jaria.sim.client.SimulatedRobot;
  * time, the robot only when the test advances the world: {@link #await} waits for a reply and
  * advances the world only while the server has a command queued for the robot's cycle, so virtual
  * time does not run on while a request crosses the network.
+ *
+ * <p>Shared with arnl-net's tests through this module's test jar: they add SonARNL's services with
+ * {@link Services} (see {@code ArnlRig} there).
  */
-final class GuiRig implements AutoCloseable {
+class GuiRig implements AutoCloseable {
+
+  /** What a rig adds to the server before it opens: localization, path planning and the like. */
+  interface Services {
+    /**
+     * Sets the services up on the robot and hands them to the server's builder; returns what {@link
+     * GuiRig#close()} closes (null: nothing).
+     */
+    AutoCloseable install(SimulatedRobot sim, GuiServer.Builder b) throws Exception;
+  }
 
   static final ArMap OFFICE = ArMap.loadBundled("office");
 
   final SimulatedRobot sim;
   final ArRobot robot;
-  final ArnlNavigation nav;
+  final AutoCloseable services;
   final GuiServer gui;
   final ArClientBase client;
 
-  private GuiRig(boolean arnl, UnaryOperator<GuiServer.Builder> configure) throws Exception {
+  GuiRig(Services setup, UnaryOperator<GuiServer.Builder> configure) throws Exception {
     SimWorld world = SimWorld.bundled("office", SimOptions.builder().seed(3).build());
     sim = SimulatedRobot.connect(world, world.addRobot("p3dx-sh"));
     robot = sim.robot();
@@ -43,25 +54,7 @@ final class GuiRig implements AutoCloseable {
         GuiServer.builder(robot)
             .options(ServerOptions.builder().port(0).minInterval(Duration.ofMillis(20)).build())
             .map(OFFICE, "office.map");
-    if (arnl) {
-      nav = ArnlNavigation.create(robot, OFFICE, ArnlNavigation.Mode.SYNCHRONOUS, 1);
-      sim.runMillis(1500);
-      nav.localizeAtHome();
-      b.localization(nav.localization())
-          .pathPlanning(nav.pathPlanning())
-          .config(nav.configRegistry())
-          .mapChange(null, nav::setMap);
-    } else {
-      nav = null;
-      robot.lock();
-      try {
-        robot.addRangeDevice(new ArSonarDevice());
-        // Without a localizer, start the odometry where the robot really is (the map's home).
-        robot.moveTo(sim.sim().getTruePose());
-      } finally {
-        robot.unlock();
-      }
-    }
+    services = setup.install(sim, b);
     gui = configure.apply(b).build();
     gui.open();
     sim.runMillis(200);
@@ -71,17 +64,20 @@ final class GuiRig implements AutoCloseable {
 
   /** A guiServer without localization or planning (goto drives straight). */
   static GuiRig plain(UnaryOperator<GuiServer.Builder> configure) throws Exception {
-    return new GuiRig(false, configure);
+    return new GuiRig(GuiRig::sonarAtHome, configure);
   }
 
-  /** A guiServer with SonARNL localization and path planning, localized at home. */
-  static GuiRig arnl() throws Exception {
-    return new GuiRig(true, b -> b);
-  }
-
-  /** As {@link #arnl()}, configured further (a camera, say). */
-  static GuiRig arnl(UnaryOperator<GuiServer.Builder> configure) throws Exception {
-    return new GuiRig(true, configure);
+  /** Sonar only, and the odometry started where the robot really is (the map's home). */
+  private static AutoCloseable sonarAtHome(SimulatedRobot sim, GuiServer.Builder b) {
+    ArRobot robot = sim.robot();
+    robot.lock();
+    try {
+      robot.addRangeDevice(new ArSonarDevice());
+      robot.moveTo(sim.sim().getTruePose());
+    } finally {
+      robot.unlock();
+    }
+    return null;
   }
 
   /**
@@ -144,8 +140,12 @@ final class GuiRig implements AutoCloseable {
   public void close() {
     client.close();
     gui.close();
-    if (nav != null) {
-      nav.close();
+    if (services != null) {
+      try {
+        services.close();
+      } catch (Exception e) {
+        throw new IllegalStateException("the rig's services did not close", e);
+      }
     }
     sim.close();
     sim.world().close();

@@ -8,7 +8,7 @@ import java.util.List;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.data.CameraInfo;
 import org.jaria.net.guiserver.GuiServer;
-import org.jaria.net.provider.PtzControl;
+import org.jaria.ptz.ArVCC4;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -18,82 +18,21 @@ import org.junit.jupiter.api.Test;
  */
 class GuiServerCameraTest {
 
-  /** A VC-C4 as the guiServer sees it: the last position asked for, clamped to its limits. */
-  static final class FakeVcc4 implements PtzControl {
-    volatile double pan;
-    volatile double tilt;
-    volatile int zoom;
-    volatile int commands;
+  /**
+   * The real VC-C4 driver with its frames dropped, recording every pan and tilt it was asked to go
+   * to (after clamping to its limits).
+   */
+  static final class FakeVcc4 extends ArVCC4 {
     final java.util.List<double[]> history = new java.util.concurrent.CopyOnWriteArrayList<>();
 
-    @Override
-    public String getTypeName() {
-      return "VCC4";
+    FakeVcc4() {
+      super(frame -> {});
     }
 
     @Override
-    public synchronized boolean panTilt(double p, double t) {
-      pan = Math.max(-98, Math.min(98, p));
-      tilt = Math.max(-30, Math.min(88, t));
-      commands++;
-      history.add(new double[] {pan, tilt});
-      return true;
-    }
-
-    @Override
-    public synchronized boolean zoom(int z) {
-      zoom = Math.max(0, Math.min(1960, z));
-      return true;
-    }
-
-    @Override
-    public double getPan() {
-      return pan;
-    }
-
-    @Override
-    public double getTilt() {
-      return tilt;
-    }
-
-    @Override
-    public int getZoom() {
-      return zoom;
-    }
-
-    @Override
-    public boolean canZoom() {
-      return true;
-    }
-
-    @Override
-    public double getMaxPosPan() {
-      return 98;
-    }
-
-    @Override
-    public double getMaxNegPan() {
-      return -98;
-    }
-
-    @Override
-    public double getMaxPosTilt() {
-      return 88;
-    }
-
-    @Override
-    public double getMaxNegTilt() {
-      return -30;
-    }
-
-    @Override
-    public int getMinZoom() {
-      return 0;
-    }
-
-    @Override
-    public int getMaxZoom() {
-      return 1960;
+    protected boolean panTiltClamped(double p, double t) {
+      history.add(new double[] {p, t});
+      return super.panTiltClamped(p, t);
     }
   }
 
@@ -216,6 +155,38 @@ class GuiServerCameraTest {
       ArNetPacket old = rig.call("cameraInfo");
       assertEquals(-98, old.bufToByte2());
       assertEquals(98, old.bufToByte2());
+    }
+  }
+
+  @Test
+  void aClientsPanToTheRightTurnsTheSimulatedCameraRight() throws Exception {
+    // The whole chain with one sign (ARIA's, pan positive to the right): the client's request, the
+    // camera handler, the VC-C4 driver's frames through the robot's AUX port, the simulator's VC-C4
+    // and the simulated camera that follows it.
+    ArVCC4[] vcc4 = new ArVCC4[1];
+    try (GuiRig rig =
+        new GuiRig(
+            (sim, b) -> {
+              vcc4[0] = new ArVCC4(sim.robot());
+              vcc4[0].init();
+              b.ptz(vcc4[0]);
+              return null;
+            },
+            b -> b)) {
+      org.jaria.sim.camera.SimCamera view =
+          org.jaria.sim.camera.SimCamera.onTop(rig.sim.world(), rig.sim.sim());
+      view.setFollowAuxPtz(true);
+      call(rig, "setCameraAbsCam1", byte2s(3000, -1000)); // 30° right, 10° down
+      rig.run(2000); // the driver paces its frames 300 ms apart
+      assertEquals(30, vcc4[0].getPan(), 1e-9);
+      assertEquals(30, rig.sim.sim().getPtzPointing().panRightDeg(), 0.1, "the head turned right");
+      assertEquals(-10, rig.sim.sim().getPtzPointing().tiltUpDeg(), 0.1);
+      assertEquals(
+          rig.sim.sim().getTruePose().th() - 30,
+          view.getViewPose().th(),
+          0.1,
+          "the camera looks 30° right of the robot's heading");
+      assertEquals(3000, rig.call("getCameraDataCam1").bufToByte2(), "and says so to clients");
     }
   }
 }

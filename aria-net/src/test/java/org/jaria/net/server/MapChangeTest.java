@@ -6,15 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.jaria.map.ArMap;
-import org.jaria.net.ArNetPacket;
-import org.jaria.net.Eventually;
-import org.jaria.net.Futures;
-import org.jaria.net.client.ArClientBase;
-import org.jaria.net.data.ConfigLayout;
-import org.jaria.net.data.ConfigSection;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -24,35 +16,6 @@ import org.junit.jupiter.api.io.TempDir;
  * refused before anything is read.
  */
 class MapChangeTest {
-
-  @Test
-  void settingFilesMapChangesTheMapForNavigationAndClients() throws Exception {
-    try (GuiRig rig = GuiRig.arnl();
-        ArClientBase watcher = new ArClientBase("watcher")) {
-      watcher.connect("127.0.0.1", rig.gui.getServer().getPort(), "", "");
-      AtomicInteger updated = new AtomicInteger();
-      watcher.addHandler("mapUpdated", p -> updated.incrementAndGet());
-      Futures.get(watcher.request("mapUpdated", -1));
-      List<ConfigSection> sections = ConfigLayout.readAll(rig.call("getConfigBySections"));
-      ConfigSection files = sections.get(0);
-      assertEquals("Files", files.name(), "ARIA's section, first");
-      assertEquals("Map", files.params().get(0).name());
-      assertEquals("office.map", files.params().get(0).value());
-      assertEquals("", rig.call("setConfig", "Section", "Files", "Map", "hall").bufToStr());
-      assertEquals("hall", rig.call("getMapName").bufToStr());
-      assertEquals(
-          ArMap.loadBundled("hall").getLines().size(),
-          rig.nav.getPathPlanningTask().getAriaMap().getLines().size(),
-          "the planner plans on the new map");
-      assertEquals(
-          ArMap.loadBundled("hall").getGoals().stream().map(o -> o.name()).toList(),
-          GuiRig.stringsToEnd(rig.call("getGoals")));
-      Eventually.until("mapUpdated reached the other client", () -> updated.get() == 1);
-      assertEquals("Stop", rig.gui.getModes().getMode(), "the robot was stopped first");
-      ConfigSection after = ConfigLayout.readAll(rig.call("getConfigBySections")).get(0);
-      assertEquals("hall", after.params().get(0).value());
-    }
-  }
 
   @Test
   void namesOutsideTheMapFolderAreRefusedWithTheRule(@TempDir Path dir) throws Exception {
@@ -83,15 +46,5 @@ class MapChangeTest {
     IllegalArgumentException e =
         assertThrows(IllegalArgumentException.class, () -> bundledOnly.load("mine.map"));
     assertTrue(e.getMessage().contains("only its bundled maps"), e.getMessage());
-  }
-
-  @Test
-  void aClientAskingForAMapOutsideTheFolderIsAnsweredWithTheRefusal() throws Exception {
-    try (GuiRig rig = GuiRig.arnl()) {
-      ArNetPacket answer = rig.call("setConfig", "Section", "Files", "Map", "../../etc/passwd");
-      String why = answer.bufToStr();
-      assertTrue(why.startsWith("Map: "), why);
-      assertEquals("office.map", rig.call("getMapName").bufToStr(), "the map stayed");
-    }
   }
 }

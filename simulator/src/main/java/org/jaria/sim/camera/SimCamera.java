@@ -77,7 +77,10 @@ public final class SimCamera {
     return height;
   }
 
-  /** Points the camera: pan (+ left) and tilt (+ up), degrees; clamped to ±100 and −30..90. */
+  /**
+   * Points the camera: pan (+ right, ARIA's {@code ArPTZ} sign) and tilt (+ up), degrees; clamped
+   * to ±100 and −30..90.
+   */
   public void setPanTilt(double panDeg, double tiltDeg) {
     pan = Math.max(-100, Math.min(100, panDeg));
     tilt = Math.max(-30, Math.min(90, tiltDeg));
@@ -103,12 +106,12 @@ public final class SimCamera {
     }
     PtzHead.Pointing p = robot.getPtzPointing();
     if (p != null) {
-      setPanTilt(-p.panRightDeg(), p.tiltUpDeg()); // ARIA pans + right, this camera + left
+      setPanTilt(p.panRightDeg(), p.tiltUpDeg());
       setZoom((int) Math.round(p.zoomFraction() * MAX_ZOOM));
     }
   }
 
-  /** Pan, degrees. */
+  /** Pan, degrees, positive to the right. */
   public double getPan() {
     followAux();
     return pan;
@@ -136,7 +139,8 @@ public final class SimCamera {
     followAux();
     ArPose p = robot.getTruePose();
     double r = Math.toRadians(p.th());
-    return new ArPose(p.x() + mountX * Math.cos(r), p.y() + mountX * Math.sin(r), p.th() + pan);
+    // Headings grow counter-clockwise (to the left); the pan is positive to the right.
+    return new ArPose(p.x() + mountX * Math.cos(r), p.y() + mountX * Math.sin(r), p.th() - pan);
   }
 
   /**

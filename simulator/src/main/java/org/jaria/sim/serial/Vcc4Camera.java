@@ -233,15 +233,16 @@ public final class Vcc4Camera implements AuxSerialDevice, PtzHead {
   }
 
   /**
-   * {@inheritDoc} JAria's {@code ArVCC4} sends pan positive to the left, so the head's right is the
-   * negative of {@link #getPan()}.
+   * {@inheritDoc} The camera's pan units are positive to the right (Canon's manual: "pan right 90
+   * degrees" is {@code +800} units), as ARIA's {@code ArPTZ} pans, so {@link #getPan()} is the
+   * head's pan to the right.
    */
   @Override
   public Pointing pointing() {
-    return new Pointing(-getPan(), getTilt(), zoom / (double) MAX_ZOOM);
+    return new Pointing(getPan(), getTilt(), zoom / (double) MAX_ZOOM);
   }
 
-  /** Pan, degrees, with the sign the client commanded. */
+  /** Pan, degrees, positive to the right (the sign on the wire). */
   public double getPan() {
     return panUnits * DEGREES_PER_UNIT;
   }

@@ -102,8 +102,8 @@ class PtzOverTcpTest {
         assertEquals(0, ptz.getErrorCount());
         assertNull(ptz.getLastError());
 
-        // the simulated camera (+ left) looks 30° to the right of the robot's heading
-        assertEquals(-30, camera.getPan(), 0.06);
+        // the simulated camera looks 30° to the right of the robot's heading (ARIA's sign)
+        assertEquals(30, camera.getPan(), 0.06);
         double heading = sim.getTruePose().th();
         assertEquals(heading - 30, camera.getViewPose().th(), 0.06);
         assertEquals(512 * SimCamera.MAX_ZOOM / 1023.0, camera.getZoom(), 1);
@@ -113,7 +113,7 @@ class PtzOverTcpTest {
         await(w, () -> ptz.getReportedPan() < -90, "clamped pan reported");
         assertEquals(-95, ptz.getReportedPan(), 0.06);
         assertEquals(25, ptz.getReportedTilt(), 0.06);
-        assertEquals(95, camera.getPan(), 0.06);
+        assertEquals(-95, camera.getPan(), 0.06);
       } finally {
         robot.stopRunning();
         robot.disconnect();
@@ -143,7 +143,7 @@ class PtzOverTcpTest {
         assertEquals(6, ptu.getDoneCount(), "I, PP0, TP0, PP-875, TP389, PS584");
         assertEquals(0, ptu.getErrorCount());
         assertEquals(-45, sim.getPtzPointing().panRightDeg(), 0.05);
-        assertEquals(45, camera.getPan(), 0.05, "the camera looks 45° left");
+        assertEquals(-45, camera.getPan(), 0.05, "the camera looks 45° left");
         assertEquals(0, ptu.getRepliesOutstanding());
       } finally {
         robot.stopRunning();

@@ -62,7 +62,8 @@ class SimCameraTest {
       assertTrue(cols != null, "the ball is seen");
       double centre = (cols[0] + cols[1]) / 2.0;
       assertEquals(cam.getWidth() / 2.0, centre, 3, "straight ahead");
-      cam.setPanTilt(10, -10); // camera looks left: the ball moves right in the image
+      cam.setPanTilt(
+          -10, -10); // camera looks left (ARIA's sign): the ball moves right in the image
       cam.render(img);
       int[] panned = redColumns(img, cam.getWidth(), cam.getHeight());
       assertTrue((panned[0] + panned[1]) / 2.0 > centre + 10);

@@ -39,7 +39,9 @@ public final class Desktop {
               "EZ-Train: train ACTS color channels on a still image or live video, with the ACTS"
                   + " server running (port 5001) so robot programs see the channels as they are"
                   + " trained."),
-          new App("monitor", "The robot monitor (MobileEyes) for a guiServer (./jaria demo guiserver)."),
+          new App(
+              "monitor",
+              "The robot monitor (MobileEyes) for a guiServer (./jaria demo guiserver)."),
           new App(
               "simview",
               "The simulator with a window: map, robots, sonar, laser, camera field of view, true"
@@ -67,9 +69,9 @@ public final class Desktop {
   }
 
   /**
-   * What to say when {@code what} needs the desktop apps and they are not on the class path: how
-   * to get them (the launcher builds them on first use; a program of one's own adds the {@code
-   * apps} module).
+   * What to say when {@code what} needs the desktop apps and they are not on the class path: how to
+   * get them (the launcher builds them on first use; a program of one's own adds the {@code apps}
+   * module).
    */
   public static String missing(String what) {
     return what
@@ -107,7 +109,8 @@ public final class Desktop {
       cl.getCommandSpec().name(a.name());
       cl.getCommandSpec()
           .usageMessage()
-          .description(a.summary(), "(A desktop app: ./jaria builds it the first time it is used.)");
+          .description(
+              a.summary(), "(A desktop app: ./jaria builds it the first time it is used.)");
       out.add(cl);
     }
     return out;

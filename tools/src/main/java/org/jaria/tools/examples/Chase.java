@@ -5,7 +5,7 @@ import org.jaria.action.ArAction;
 import org.jaria.action.ArActionDesired;
 import org.jaria.acts.ArACTSBlob;
 import org.jaria.acts.ArACTS_1_2;
-import org.jaria.acts.ptz.ArPTZ;
+import org.jaria.ptz.ArPTZ;
 import org.jaria.robot.ArRobot;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;

@@ -13,7 +13,6 @@ import org.jaria.acts.image.Cameras;
 import org.jaria.acts.image.ImageSequenceSource;
 import org.jaria.acts.image.ImageSource;
 import org.jaria.acts.image.StillImageSource;
-import org.jaria.acts.ptz.ArVCC4;
 import org.jaria.clock.Clock;
 import org.jaria.connection.ArSerialConnection;
 import org.jaria.connection.RobotAddress;
@@ -22,17 +21,17 @@ import org.jaria.map.MapFormatException;
 import org.jaria.net.arnl.ArnlNavigation;
 import org.jaria.net.forward.ArHybridForwarderVideo;
 import org.jaria.net.forward.ForwarderStats;
+import org.jaria.net.guiserver.GuiServer;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ArServerUserInfo;
 import org.jaria.net.server.Authenticator;
-import org.jaria.net.guiserver.GuiServer;
 import org.jaria.net.server.MapFolder;
 import org.jaria.net.server.ServerOptions;
 import org.jaria.net.server.modes.ArServerModes;
-import org.jaria.tools.guiserver.sim.ActsPtz;
-import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
 import org.jaria.net.video.JpegVideo;
+import org.jaria.ptz.ArVCC4;
 import org.jaria.robot.ArRobot;
+import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
 import org.jaria.tools.options.Passwords;
 import org.jaria.tools.options.SecondsOption;
 import picocli.CommandLine.Command;
@@ -401,11 +400,10 @@ public final class GuiServerCommand implements Callable<Integer> {
         out.printf(Locale.ROOT, "Serving video: %s%n", cam.getName());
       }
       report(out, localized, robot, nav);
-      ActsPtz unit = null;
+      ArVCC4 unit = null;
       if (ptz != null) {
-        ArVCC4 vcc4 = new ArVCC4(robot);
-        vcc4.init();
-        unit = new ActsPtz(vcc4);
+        unit = new ArVCC4(robot);
+        unit.init();
         out.println("Serving the VC-C4 on the robot's AUX port as camera Cam1");
       }
       try (GuiServer gui =

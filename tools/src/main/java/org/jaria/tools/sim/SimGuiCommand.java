@@ -1,11 +1,11 @@
 package org.jaria.tools.sim;
 
-import org.jaria.tools.desktop.Desktop;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.util.Optional;
 import java.util.concurrent.Callable;
 import org.jaria.sim.SimWorld;
+import org.jaria.tools.desktop.Desktop;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;

@@ -1,21 +1,20 @@
 package org.jaria.tools.simvision;
 
-import org.jaria.acts.ptz.ArPTZ;
-import org.jaria.acts.ptz.PtzLimits;
+import org.jaria.ptz.ArPTZ;
 import org.jaria.sim.camera.SimCamera;
 
 /**
  * Pan, tilt and zoom of a simulated camera through the PTZ interface a program uses for a real
- * Canon VC-C4, so vision programs run unchanged on the simulator.
+ * Canon VC-C4, so vision programs run unchanged on the simulator. Same signs as every {@link
+ * ArPTZ}: pan positive to the right.
  */
-public final class SimCameraPtz implements ArPTZ {
-
-  private static final PtzLimits LIMITS = new PtzLimits(100, -100, 90, -30, SimCamera.MAX_ZOOM, 0);
+public final class SimCameraPtz extends ArPTZ {
 
   private final SimCamera camera;
 
   /** Controls {@code camera}. */
   public SimCameraPtz(SimCamera camera) {
+    super(null);
     this.camera = camera;
   }
 
@@ -23,6 +22,7 @@ public final class SimCameraPtz implements ArPTZ {
   public boolean init() {
     camera.setPanTilt(0, 0);
     camera.setZoom(0);
+    setCommanded(0, 0, 0);
     return true;
   }
 
@@ -32,22 +32,38 @@ public final class SimCameraPtz implements ArPTZ {
   }
 
   @Override
-  public boolean panTilt(double panDegrees, double tiltDegrees) {
-    camera.setPanTilt(panDegrees, tiltDegrees);
+  public double getMaxPan() {
+    return 100;
+  }
+
+  @Override
+  public double getMaxTilt() {
+    return 90;
+  }
+
+  @Override
+  public double getMaxNegTilt() {
+    return -30;
+  }
+
+  @Override
+  public int getMaxZoom() {
+    return SimCamera.MAX_ZOOM;
+  }
+
+  @Override
+  protected boolean panTiltClamped(double panDeg, double tiltDeg) {
+    camera.setPanTilt(panDeg, tiltDeg);
     return true;
   }
 
   @Override
-  public boolean canZoom() {
-    return true;
-  }
-
-  @Override
-  public boolean zoom(int value) {
+  protected boolean zoomClamped(int value) {
     camera.setZoom(value);
     return true;
   }
 
+  /** Where the camera points, which may differ from the last request if something else moved it. */
   @Override
   public double getPan() {
     return camera.getPan();
@@ -61,10 +77,5 @@ public final class SimCameraPtz implements ArPTZ {
   @Override
   public int getZoom() {
     return camera.getZoom();
-  }
-
-  @Override
-  public PtzLimits getLimits() {
-    return LIMITS;
   }
 }

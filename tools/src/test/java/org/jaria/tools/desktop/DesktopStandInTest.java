@@ -12,9 +12,9 @@ import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
 
 /**
- * The command line without the apps module (as {@code ./jaria} runs it for every command that
- * needs neither JavaFX nor OpenCV): it starts, lists every desktop app, and an app, a window or a
- * camera benchmark asked for says how to get it instead of failing on a missing class.
+ * The command line without the apps module (as {@code ./jaria} runs it for every command that needs
+ * neither JavaFX nor OpenCV): it starts, lists every desktop app, and an app, a window or a camera
+ * benchmark asked for says how to get it instead of failing on a missing class.
  */
 class DesktopStandInTest {
 

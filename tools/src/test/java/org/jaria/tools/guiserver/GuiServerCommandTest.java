@@ -179,8 +179,8 @@ class GuiServerCommandTest {
     java.util.Arrays.fill(px, 0x3366cc);
     try (SimWorld world =
             SimWorld.bundled("office", SimOptions.builder().basePort(0).seed(2).build());
-        org.jaria.acts.sav.SavServer sav =
-            org.jaria.acts.sav.SavServer.open(px::clone, () -> 1, 160, 120, "127.0.0.1", 0);
+        org.jaria.net.sav.SavServer sav =
+            org.jaria.net.sav.SavServer.open(px::clone, () -> 1, 160, 120, "127.0.0.1", 0);
         ArClientBase direct = new ArClientBase("direct")) {
       SimRobot r = world.addRobot("p3dx-sh");
       world.listen();

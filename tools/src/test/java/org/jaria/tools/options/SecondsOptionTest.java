@@ -4,10 +4,10 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import org.jaria.tools.cli.JariaCli;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.util.List;
+import org.jaria.tools.cli.JariaCli;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
 import picocli.CommandLine.TypeConversionException;

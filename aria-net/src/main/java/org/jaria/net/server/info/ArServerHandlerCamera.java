@@ -9,12 +9,12 @@ import org.jaria.geom.ArMath;
 import org.jaria.geom.ArPose;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.protocol.NetError;
-import org.jaria.net.provider.PtzControl;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.NetRequestException;
 import org.jaria.net.server.RequestHandler;
 import org.jaria.net.server.TextLimits;
 import org.jaria.net.server.Where;
+import org.jaria.ptz.ArPTZ;
 import org.jaria.robot.ArRobot;
 
 /**
@@ -41,9 +41,12 @@ import org.jaria.robot.ArRobot;
  * </ul>
  *
  * <p>Pointing by a percentage of the picture ({@code setCameraPct}, {@code cameraPct}) needs the
- * camera's field of view, which {@link PtzControl} does not give: {@code setCameraPct} is not
- * offered and {@code cameraPct} is refused, as ARIA does for such a camera. Commands run on the
- * robot's cycle; the camera's own class paces what it sends.
+ * camera's field of view, which {@link ArPTZ} does not give: {@code setCameraPct} is not offered
+ * and {@code cameraPct} is refused, as ARIA does for such a camera. Commands run on the robot's
+ * cycle; the camera's own class paces what it sends.
+ *
+ * <p>Angles pass through unchanged, in ARIA's signs on both sides: a client's pan to the right is
+ * positive, and so is {@link ArPTZ}'s.
  */
 public final class ArServerHandlerCamera {
 
@@ -64,7 +67,7 @@ public final class ArServerHandlerCamera {
   private final String cameraName;
   private final ArServerBase server;
   private final ArRobot robot;
-  private final PtzControl camera;
+  private final ArPTZ camera;
 
   /** ArCameraCommands name → this server's request, in the order ARIA registers them. */
   private final Map<String, String> requests = new LinkedHashMap<>();
@@ -72,7 +75,7 @@ public final class ArServerHandlerCamera {
   private volatile ArPose lookAt;
 
   /** A handler for a camera without a name (ARIA's first constructor). */
-  public ArServerHandlerCamera(ArServerBase server, ArRobot robot, PtzControl camera) {
+  public ArServerHandlerCamera(ArServerBase server, ArRobot robot, ArPTZ camera) {
     this("", server, robot, camera, null);
   }
 
@@ -84,7 +87,7 @@ public final class ArServerHandlerCamera {
       String cameraName,
       ArServerBase server,
       ArRobot robot,
-      PtzControl camera,
+      ArPTZ camera,
       ArCameraCollection collection) {
     this.cameraName = Objects.requireNonNullElse(cameraName, "");
     this.server = Objects.requireNonNull(server, "server");

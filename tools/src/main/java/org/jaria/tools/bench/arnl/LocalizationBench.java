@@ -7,6 +7,7 @@ import org.jaria.arnl.ArBaseLocalizationTask;
 import org.jaria.arnl.ArLocalizationTask;
 import org.jaria.arnl.ArSonarLocalizationTask;
 import org.jaria.arnl.LocalizationState;
+import org.jaria.arnl.TrueRoute;
 import org.jaria.arnl.mcl.LikelihoodField;
 import org.jaria.arnl.mcl.MclFilter;
 import org.jaria.arnl.mcl.PoseEstimate;
@@ -173,8 +174,7 @@ final class LocalizationBench {
       ArBaseLocalizationTask loc = sensor.task(sim, office, seed);
       sim.runMillis(1000);
       loc.localizeRobotAtHomeBlocking();
-      List<ArPose> route = BenchSupport.officeLaps(laps);
-      BenchSupport.TruthDriver driver = new BenchSupport.TruthDriver(sim.sim(), route, 500);
+      TrueRoute driver = TrueRoute.keepingSpeed(sim.sim(), TrueRoute.officeLaps(laps), 500);
       robot.addAction(driver, 50);
       List<Double> mm = new ArrayList<>();
       List<Double> deg = new ArrayList<>();
@@ -245,7 +245,7 @@ final class LocalizationBench {
         loc.getParams().setAdjustNumSamples(true);
         sim.runMillis(500);
         loc.startGlobalLocalization();
-        robot.addAction(new BenchSupport.TruthDriver(sim.sim(), route, 400), 50);
+        robot.addAction(TrueRoute.keepingSpeed(sim.sim(), route, 400), 50);
         double lastOut = 0;
         boolean ok = false;
         for (int s = 1; s <= 60; s++) {

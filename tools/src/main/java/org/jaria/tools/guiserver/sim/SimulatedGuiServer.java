@@ -3,12 +3,12 @@ package org.jaria.tools.guiserver.sim;
 import java.io.IOException;
 import java.util.Locale;
 import java.util.Objects;
-import org.jaria.acts.ptz.ArVCC4;
 import org.jaria.map.ArMap;
 import org.jaria.net.arnl.ArnlNavigation;
 import org.jaria.net.guiserver.GuiServer;
 import org.jaria.net.server.MapFolder;
 import org.jaria.net.server.ServerOptions;
+import org.jaria.ptz.ArVCC4;
 import org.jaria.robot.ArRobot;
 import org.jaria.sim.OdometryError;
 import org.jaria.sim.SimOptions;
@@ -123,16 +123,15 @@ public final class SimulatedGuiServer implements AutoCloseable {
       robot.enableMotors();
       sim.runMillis(1500);
       boolean localized = nav.localizeAtHome();
-      ActsPtz ptz = null;
+      ArVCC4 ptz = null;
       if (o.camera()) {
         // The simulated robot's VC-C4 on AUX1, which its camera follows: clients that pan and
         // tilt it (ptzCameraClientExample, the monitor) see the picture turn.
         SimCamera cam = SimCamera.onTop(world, r);
         cam.setFollowAuxPtz(true);
         video = new SimCameraVideo(cam, "Simulated camera", 5);
-        ArVCC4 vcc4 = new ArVCC4(robot);
-        vcc4.init();
-        ptz = new ActsPtz(vcc4);
+        ptz = new ArVCC4(robot);
+        ptz.init();
       }
       GuiServer gui =
           GuiServer.builder(robot)

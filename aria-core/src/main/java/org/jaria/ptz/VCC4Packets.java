@@ -1,4 +1,4 @@
-package org.jaria.acts.ptz;
+package org.jaria.ptz;
 
 import java.io.ByteArrayOutputStream;
 import java.util.Locale;

@@ -1,4 +1,4 @@
-package org.jaria.acts.sav;
+package org.jaria.net.sav;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

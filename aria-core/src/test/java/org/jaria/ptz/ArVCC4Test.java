@@ -1,4 +1,4 @@
-package org.jaria.acts.ptz;
+package org.jaria.ptz;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -98,8 +98,9 @@ class ArVCC4Test {
     assertEquals(0, camera.getZoom());
     camera.panSlew(500);
     assertEquals(90.0, camera.getPanSlew());
-    assertEquals(5, ArVCC4.LIMITS.clampZoom(5));
     assertEquals(98.0, camera.getMaxPosPan());
+    assertEquals(-98.0, camera.getMaxNegPan());
+    assertEquals(88.0, camera.getMaxPosTilt());
     assertEquals(-30.0, camera.getMaxNegTilt());
     assertEquals(1960, camera.getMaxZoom());
     assertEquals("vcc4", camera.getTypeName());
@@ -121,6 +122,6 @@ class ArVCC4Test {
     assertThrows(IllegalArgumentException.class, () -> VCC4Packets.ledControl(5));
     assertThrows(IllegalArgumentException.class, () -> VCC4Packets.digitalZoom(4));
     assertThrows(IllegalArgumentException.class, () -> VCC4Packets.zoom(-1));
-    assertThrows(IllegalArgumentException.class, () -> new PtzLimits(1, 2, 0, 0, 0, 0));
+    assertThrows(IllegalArgumentException.class, () -> new ArVCC4((org.jaria.robot.ArRobot) null));
   }
 }

@@ -1,4 +1,4 @@
-package org.jaria.acts.ptz;
+package org.jaria.ptz;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;

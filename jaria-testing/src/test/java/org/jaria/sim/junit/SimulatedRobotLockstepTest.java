@@ -1,4 +1,4 @@
-package org.jaria.sim.client;
+package org.jaria.sim.junit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -10,10 +10,13 @@ import org.jaria.range.ArSonarDevice;
 import org.jaria.robot.ArRobot;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
-import org.jaria.sim.junit.SimulatedRobotTest;
+import org.jaria.sim.client.SimulatedRobot;
 import org.junit.jupiter.api.Test;
 
-/** ArRobot and the simulator in lockstep on virtual time. */
+/**
+ * ArRobot and the simulator in lockstep on virtual time, through the JUnit extension a user writes
+ * such tests with.
+ */
 @SimulatedRobotTest(map = "hall", robot = "p3dx-sh", seed = 7)
 class SimulatedRobotLockstepTest {
 

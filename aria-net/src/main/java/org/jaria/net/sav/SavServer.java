@@ -1,4 +1,4 @@
-package org.jaria.acts.sav;
+package org.jaria.net.sav;
 
 import java.io.IOException;
 import java.util.function.LongSupplier;

@@ -29,7 +29,7 @@ class GuiServerArnlTest {
 
   @Test
   void localizationStateAndParticles() throws Exception {
-    try (GuiRig rig = GuiRig.arnl()) {
+    try (ArnlRig rig = ArnlRig.arnl()) {
       LocalizationSnapshot s = LocalizationSnapshot.read(rig.call("getLocalizationSnapshot"));
       assertEquals("LOCALIZATION_SUCCESS", s.state());
       // ARNL's layout of the same state: ubyte state, ubyte2 score 0..100.
@@ -50,7 +50,7 @@ class GuiServerArnlTest {
 
   @Test
   void aGoalIsPlannedFollowedAndReached() throws Exception {
-    try (GuiRig rig = GuiRig.arnl()) {
+    try (ArnlRig rig = ArnlRig.arnl()) {
       List<PathSnapshot> paths = new CopyOnWriteArrayList<>();
       AtomicReference<RobotUpdate> update = new AtomicReference<>();
       rig.client.addHandler("getPathSnapshot", p -> paths.add(PathSnapshot.read(p)));
@@ -92,7 +92,7 @@ class GuiServerArnlTest {
 
   @Test
   void stopCancelsTheGoal() throws Exception {
-    try (GuiRig rig = GuiRig.arnl()) {
+    try (ArnlRig rig = ArnlRig.arnl()) {
       rig.call("gotoPose", 27000, 9500);
       rig.run(3000);
       assertTrue(Math.abs(rig.robot.getVel()) > 50, "on its way");
@@ -106,7 +106,7 @@ class GuiServerArnlTest {
 
   @Test
   void aKidnappedRobotIsRelocalizedWhereTheOperatorSays() throws Exception {
-    try (GuiRig rig = GuiRig.arnl()) {
+    try (ArnlRig rig = ArnlRig.arnl()) {
       ArPose elsewhere = new ArPose(15000, 9500, 180);
       rig.sim.sim().setTruePose(elsewhere);
       rig.run(1000);
@@ -120,7 +120,7 @@ class GuiServerArnlTest {
 
   @Test
   void theLocalizationsParametersCanBeEdited() throws Exception {
-    try (GuiRig rig = GuiRig.arnl()) {
+    try (ArnlRig rig = ArnlRig.arnl()) {
       List<ConfigSection> sections = ConfigLayout.readAll(rig.call("getConfigBySections"));
       List<String> names = sections.stream().map(ConfigSection::name).toList();
       assertTrue(names.contains("Localization"), names.toString());
