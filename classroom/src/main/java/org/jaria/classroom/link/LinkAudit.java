@@ -4,6 +4,7 @@ import java.util.Collections;
 import java.util.Map;
 import java.util.Optional;
 import java.util.TreeMap;
+import java.util.function.IntPredicate;
 
 /**
  * What the grading world refused from one student's robot link, and whether the robot's true path
@@ -32,10 +33,33 @@ public final class LinkAudit {
   public record Jump(
       double seconds, double fromX, double fromY, double toX, double toY, double mm, double degrees) {}
 
+  private final IntPredicate accepted;
   private final Map<String, Long> dropped = new TreeMap<>();
   private long garbageBytes;
   private int jumps;
   private Jump firstJump;
+
+  /** An audit for a link that carries what a real Pioneer accepts ({@link RobotCommands}). */
+  public LinkAudit() {
+    this(RobotCommands::accepted);
+  }
+
+  private LinkAudit(IntPredicate accepted) {
+    this.accepted = accepted;
+  }
+
+  /**
+   * An audit for a link that carries the commands {@code accepted} lets through: only for testing
+   * the second line of defence (the jump of the true path) on its own. The grader never uses it.
+   */
+  public static LinkAudit accepting(IntPredicate accepted) {
+    return new LinkAudit(accepted);
+  }
+
+  /** Whether the link carries command {@code number} to the simulated robot. */
+  boolean carries(int number) {
+    return accepted.test(number);
+  }
 
   /** Counts one packet the link did not carry to the simulator, under {@code what}. */
   public void dropped(String what) {

@@ -55,7 +55,7 @@ final class RobotCommandFilter {
   }
 
   private void packet(ArRobotPacket p) {
-    if (!RobotCommands.accepted(p.getID())) {
+    if (!audit.carries(p.getID())) {
       audit.dropped(RobotCommands.name(p.getID()));
       return;
     }

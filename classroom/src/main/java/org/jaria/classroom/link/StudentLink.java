@@ -40,16 +40,19 @@ import org.jaria.sim.client.SimulatedRobot.ProgramResult;
  */
 public final class StudentLink implements AutoCloseable {
 
-  /** Faster than any robot the simulator models drives, mm/s: a true pose moving faster jumped. */
-  static final double MAX_MM_PER_S = 4000;
+  /**
+   * How much faster than its model's top speeds (the most its firmware allows) a robot's true pose
+   * may move before it counts as a jump.
+   */
+  static final double SPEED_MARGIN = 1.2;
 
-  /** Faster than any robot the simulator models turns, degrees/s. */
-  static final double MAX_DEG_PER_S = 720;
-
-  /** What a step may add to the limits above (rounding, a push at a collision), mm and degrees. */
+  /** What a step may add to that (rounding, a push at a collision), mm and degrees. */
   static final double SLACK_MM = 20;
 
   static final double SLACK_DEG = 5;
+
+  private final double maxMmPerS;
+  private final double maxDegPerS;
 
   private final SimWorld world;
   private final SimRobot robot;
@@ -81,6 +84,8 @@ public final class StudentLink implements AutoCloseable {
     this.t0 = world.getClock().nanoTime();
     this.lastPose = robot.getTruePose();
     this.lastPoseNanos = t0;
+    this.maxMmPerS = SPEED_MARGIN * robot.getModel().getTransVelTop();
+    this.maxDegPerS = SPEED_MARGIN * robot.getModel().getRotVelTop();
   }
 
   /**
@@ -253,7 +258,7 @@ public final class StudentLink implements AutoCloseable {
     double dt = Math.max(0, (now - lastPoseNanos) / 1e9);
     double mm = Math.hypot(p.x() - lastPose.x(), p.y() - lastPose.y());
     double deg = Math.abs(ArMath.subAngle(p.th(), lastPose.th()));
-    if (mm > MAX_MM_PER_S * dt + SLACK_MM || deg > MAX_DEG_PER_S * dt + SLACK_DEG) {
+    if (mm > maxMmPerS * dt + SLACK_MM || deg > maxDegPerS * dt + SLACK_DEG) {
       audit.jump(
           new LinkAudit.Jump(
               (now - t0) / 1e9, lastPose.x(), lastPose.y(), p.x(), p.y(), mm, deg));
