@@ -163,14 +163,16 @@ public final class ClassGrading {
             a,
             Grader.Options.of(r.timeout(), r.jobs(), sandbox).in(texts).scratchIn(r.scratchRoot()),
             students);
-    o.printf(
+    // on a platform, standard output is the student's feedback alone: progress goes to errors
+    PrintWriter progress = r.platform() == GradeRequest.Platform.LOCAL ? o : err;
+    progress.printf(
         Locale.ROOT,
         "Grading %d submission(s) of '%s', %d at a time%s...%n",
         toGrade.size(),
         a.id(),
         Math.min(r.jobs(), toGrade.size()),
         sandbox.isolated() ? ", each in a sandbox" : ", WITHOUT isolation (--unsafe)");
-    o.flush();
+    progress.flush();
     AtomicInteger done = new AtomicInteger();
     int total = toGrade.size();
     List<Grader.Result> graded =
@@ -178,7 +180,7 @@ public final class ClassGrading {
             toGrade,
             folders,
             g -> {
-              o.printf(
+              progress.printf(
                   Locale.ROOT,
                   "  [%d/%d] %-20s %3d/%d  %s (%.1f s)%n",
                   done.incrementAndGet(),
@@ -188,7 +190,7 @@ public final class ClassGrading {
                   g.grade().maxScore(),
                   g.status(),
                   g.seconds());
-              o.flush();
+              progress.flush();
             });
     List<Grader.Result> results = new ArrayList<>();
     if (r.only() == null) {
