@@ -45,8 +45,8 @@ public interface Assignment {
   List<String> checkNames(Texts t);
 
   /**
-   * The catalogue this assignment's checks speak in {@code lang} ("en" or "es"): the kit's, which
-   * a pack extends with its own sentences ({@link Texts#with}).
+   * The catalogue this assignment's checks speak in {@code lang} ("en" or "es"): the kit's, which a
+   * pack extends with its own sentences ({@link Texts#with}).
    */
   default Texts texts(String lang) {
     return Texts.of(lang);

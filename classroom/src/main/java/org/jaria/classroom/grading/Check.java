@@ -8,8 +8,8 @@ import java.util.Objects;
  *
  * <p>A check can fail on its own (its message is the diagnosis) or be <em>withheld</em>: it earns
  * nothing because of another check's problem ("fix corner 2 first", "earns nothing until the robot
- * reaches corner 1"). A withheld check says so and names the cause; the class statistics count
- * only checks that failed on their own, so one cause is one diagnosis.
+ * reaches corner 1"). A withheld check says so and names the cause; the class statistics count only
+ * checks that failed on their own, so one cause is one diagnosis.
  *
  * @param name short name, e.g. "corner 2 reached"
  * @param points what the check is worth

@@ -42,7 +42,8 @@ public final class ClassGrading {
   /** The JAria version of this classroom library, as its build wrote it. */
   public static String version() {
     Properties p = new Properties();
-    try (InputStream in = ClassGrading.class.getResourceAsStream("/org/jaria/classroom/version.properties")) {
+    try (InputStream in =
+        ClassGrading.class.getResourceAsStream("/org/jaria/classroom/version.properties")) {
       if (in != null) {
         p.load(in);
       }
@@ -63,14 +64,12 @@ public final class ClassGrading {
   public static int grade(GradeRequest r, PrintWriter o, PrintWriter err) throws IOException {
     String refused = refusal(r);
     if (refused != null) {
-      return refuse(
-          r, refused, o, err);
+      return refuse(r, refused, o, err);
     }
     try (Packs packs = Packs.load(r.packs(), r.scratchRoot())) {
       return grade(r, packs, o, err);
     } catch (IllegalArgumentException | IllegalStateException e) {
-      return refuse(
-          r, e.getMessage(), o, err);
+      return refuse(r, e.getMessage(), o, err);
     }
   }
 
@@ -108,8 +107,7 @@ public final class ClassGrading {
               ? SubmissionFolders.scan(r.submissions())
               : SubmissionFolders.single(r.submissions());
     } catch (IllegalArgumentException | IOException e) {
-      return refuse(
-          r, e.getMessage(), o, err);
+      return refuse(r, e.getMessage(), o, err);
     }
     if (scan.submissions().isEmpty()) {
       return refuse(
@@ -135,7 +133,7 @@ public final class ClassGrading {
         sandbox = Sandbox.bubblewrap(r.bwrap());
       } catch (IllegalStateException e) {
         return refuse(
-          r,
+            r,
             "cannot isolate the submissions: "
                 + e.getMessage()
                 + ". Refusing to grade; --unsafe grades anyway (only for code you trust).",
@@ -146,14 +144,14 @@ public final class ClassGrading {
     for (String s : scan.skipped()) {
       err.println("grade: warning: " + Neutral.line(s));
     }
-    List<String> names = scan.submissions().stream().map(SubmissionFolders.Submission::student).toList();
+    List<String> names =
+        scan.submissions().stream().map(SubmissionFolders.Submission::student).toList();
     Map<String, String> folders = SubmissionFolders.reportFolders(names);
     List<SubmissionFolders.Submission> toGrade = scan.submissions();
     if (r.only() != null) {
       toGrade = toGrade.stream().filter(s -> s.student().equals(r.only())).toList();
       if (toGrade.isEmpty()) {
-        return refuse(
-          r, "no submission called '" + r.only() + "' in " + r.submissions(), o, err);
+        return refuse(r, "no submission called '" + r.only() + "' in " + r.submissions(), o, err);
       }
     }
     Texts texts = a.texts(r.lang());
@@ -223,7 +221,8 @@ public final class ClassGrading {
             r.unsafe(),
             new GradeReport.RunInfo(
                 WHEN.format(r.clock().instant()), r.version(), r.timeout(), r.jobs()));
-    writeReports(report, r.out(), students, folders, o, r.platform() == GradeRequest.Platform.LOCAL);
+    writeReports(
+        report, r.out(), students, folders, o, r.platform() == GradeRequest.Platform.LOCAL);
     Platforms.graded(r, report, results.get(0), o);
     return GRADED;
   }

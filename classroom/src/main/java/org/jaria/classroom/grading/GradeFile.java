@@ -8,8 +8,8 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * A grade as a small text file in the student's folder of the report, written by the grader only:
- * a header line, then one tab-separated line per check (points, PASS, FAIL or HELD for a withheld
+ * A grade as a small text file in the student's folder of the report, written by the grader only: a
+ * header line, then one tab-separated line per check (points, PASS, FAIL or HELD for a withheld
  * check, name, message; tabs and line breaks escaped), then one line per note ({@code NOTE}, tab,
  * the note). Files of the first version (no HELD, no notes) are read too.
  */

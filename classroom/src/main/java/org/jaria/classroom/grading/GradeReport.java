@@ -121,7 +121,9 @@ public final class GradeReport {
     ClassStats s = stats();
     StringBuilder sb = new StringBuilder();
     String students =
-        s.students() == 1 ? w("1 student", "1 estudiante") : s.students() + w(" students", " estudiantes");
+        s.students() == 1
+            ? w("1 student", "1 estudiante")
+            : s.students() + w(" students", " estudiantes");
     sb.append(
         String.format(
             Locale.ROOT,
@@ -165,12 +167,7 @@ public final class GradeReport {
     for (Grader.Result r : results) {
       sb.append(
           String.format(
-              Locale.ROOT,
-              row,
-              Neutral.line(r.student()),
-              score(r),
-              r.status(),
-              firstProblem(r)));
+              Locale.ROOT, row, Neutral.line(r.student()), score(r), r.status(), firstProblem(r)));
     }
     sb.append('\n').append(statsText());
     for (Grader.Result r : results) {
@@ -321,10 +318,10 @@ public final class GradeReport {
   }
 
   /**
-   * The gradebook as CSV: student, score, max, status, then one column per check of the
-   * assignment (the points earned; empty where that check was not made, e.g. for a submission that
-   * did not compile). The columns are the assignment's, in the report's language, whatever the
-   * language each student was graded in and whoever ran.
+   * The gradebook as CSV: student, score, max, status, then one column per check of the assignment
+   * (the points earned; empty where that check was not made, e.g. for a submission that did not
+   * compile). The columns are the assignment's, in the report's language, whatever the language
+   * each student was graded in and whoever ran.
    */
   public String csv() {
     List<String> columns = assignment.checkNames(assignment.texts(lang));

@@ -94,77 +94,220 @@ public record GradeRequest(
   /** This request with {@code t} per student. */
   public GradeRequest withTimeout(Duration t) {
     return new GradeRequest(
-        assignment, submissions, out, t, jobs, only, lang, unsafe, bwrap, packs, platform,
-        platformOut, scratchRoot, clock, version);
+        assignment,
+        submissions,
+        out,
+        t,
+        jobs,
+        only,
+        lang,
+        unsafe,
+        bwrap,
+        packs,
+        platform,
+        platformOut,
+        scratchRoot,
+        clock,
+        version);
   }
 
   /** This request grading {@code n} students at once. */
   public GradeRequest withJobs(int n) {
     return new GradeRequest(
-        assignment, submissions, out, timeout, n, only, lang, unsafe, bwrap, packs, platform,
-        platformOut, scratchRoot, clock, version);
+        assignment,
+        submissions,
+        out,
+        timeout,
+        n,
+        only,
+        lang,
+        unsafe,
+        bwrap,
+        packs,
+        platform,
+        platformOut,
+        scratchRoot,
+        clock,
+        version);
   }
 
   /** This request re-grading only {@code student} into the existing report. */
   public GradeRequest onlyStudent(String student) {
     return new GradeRequest(
-        assignment, submissions, out, timeout, jobs, student, lang, unsafe, bwrap, packs,
-        platform, platformOut, scratchRoot, clock, version);
+        assignment,
+        submissions,
+        out,
+        timeout,
+        jobs,
+        student,
+        lang,
+        unsafe,
+        bwrap,
+        packs,
+        platform,
+        platformOut,
+        scratchRoot,
+        clock,
+        version);
   }
 
   /** This request writing reports and feedback in {@code language} (en or es). */
   public GradeRequest inLanguage(String language) {
     return new GradeRequest(
-        assignment, submissions, out, timeout, jobs, only, language, unsafe, bwrap, packs,
-        platform, platformOut, scratchRoot, clock, version);
+        assignment,
+        submissions,
+        out,
+        timeout,
+        jobs,
+        only,
+        language,
+        unsafe,
+        bwrap,
+        packs,
+        platform,
+        platformOut,
+        scratchRoot,
+        clock,
+        version);
   }
 
   /** This request grading without isolation where none is available. */
   public GradeRequest withoutIsolation() {
     return new GradeRequest(
-        assignment, submissions, out, timeout, jobs, only, lang, true, bwrap, packs, platform,
-        platformOut, scratchRoot, clock, version);
+        assignment,
+        submissions,
+        out,
+        timeout,
+        jobs,
+        only,
+        lang,
+        true,
+        bwrap,
+        packs,
+        platform,
+        platformOut,
+        scratchRoot,
+        clock,
+        version);
   }
 
   /** This request isolating the submissions with the bubblewrap program at {@code program}. */
   public GradeRequest withBwrap(Path program) {
     return new GradeRequest(
-        assignment, submissions, out, timeout, jobs, only, lang, unsafe, program, packs, platform,
-        platformOut, scratchRoot, clock, version);
+        assignment,
+        submissions,
+        out,
+        timeout,
+        jobs,
+        only,
+        lang,
+        unsafe,
+        program,
+        packs,
+        platform,
+        platformOut,
+        scratchRoot,
+        clock,
+        version);
   }
 
   /** This request with the assignment packs {@code p} loaded besides the kit's. */
   public GradeRequest withPacks(List<Path> p) {
     return new GradeRequest(
-        assignment, submissions, out, timeout, jobs, only, lang, unsafe, bwrap, p, platform,
-        platformOut, scratchRoot, clock, version);
+        assignment,
+        submissions,
+        out,
+        timeout,
+        jobs,
+        only,
+        lang,
+        unsafe,
+        bwrap,
+        p,
+        platform,
+        platformOut,
+        scratchRoot,
+        clock,
+        version);
   }
 
   /** This request reporting to {@code p} too, its results going to {@code where}. */
   public GradeRequest reportingTo(Platform p, Path where) {
     return new GradeRequest(
-        assignment, submissions, out, timeout, jobs, only, lang, unsafe, bwrap, packs, p, where,
-        scratchRoot, clock, version);
+        assignment,
+        submissions,
+        out,
+        timeout,
+        jobs,
+        only,
+        lang,
+        unsafe,
+        bwrap,
+        packs,
+        p,
+        where,
+        scratchRoot,
+        clock,
+        version);
   }
 
   /** This request making its scratch folders in {@code root}. */
   public GradeRequest withScratchRoot(Path root) {
     return new GradeRequest(
-        assignment, submissions, out, timeout, jobs, only, lang, unsafe, bwrap, packs, platform,
-        platformOut, root, clock, version);
+        assignment,
+        submissions,
+        out,
+        timeout,
+        jobs,
+        only,
+        lang,
+        unsafe,
+        bwrap,
+        packs,
+        platform,
+        platformOut,
+        root,
+        clock,
+        version);
   }
 
   /** This request dating its reports by {@code c}. */
   public GradeRequest withClock(Clock c) {
     return new GradeRequest(
-        assignment, submissions, out, timeout, jobs, only, lang, unsafe, bwrap, packs, platform,
-        platformOut, scratchRoot, c, version);
+        assignment,
+        submissions,
+        out,
+        timeout,
+        jobs,
+        only,
+        lang,
+        unsafe,
+        bwrap,
+        packs,
+        platform,
+        platformOut,
+        scratchRoot,
+        c,
+        version);
   }
 
   /** This request naming JAria version {@code v} in its reports. */
   public GradeRequest withVersion(String v) {
     return new GradeRequest(
-        assignment, submissions, out, timeout, jobs, only, lang, unsafe, bwrap, packs, platform,
-        platformOut, scratchRoot, clock, v);
+        assignment,
+        submissions,
+        out,
+        timeout,
+        jobs,
+        only,
+        lang,
+        unsafe,
+        bwrap,
+        packs,
+        platform,
+        platformOut,
+        scratchRoot,
+        clock,
+        v);
   }
 }

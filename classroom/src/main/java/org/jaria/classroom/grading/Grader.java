@@ -26,9 +26,9 @@ import org.jaria.classroom.sandbox.Sandbox;
  * graded from here over the robot link: the simulator, the ground truth, the checks and the grade
  * file all stay in this process, out of the student's reach.
  *
- * <p>This class runs the class: a pool of {@link Options#jobs()} grading slots, each student's copy,
- * and their files in the report. {@link StudentRun} runs and watches one student's JVM; {@link
- * SubmissionFolders} reads the submissions folder. Nothing here waits without a limit: each
+ * <p>This class runs the class: a pool of {@link Options#jobs()} grading slots, each student's
+ * copy, and their files in the report. {@link StudentRun} runs and watches one student's JVM;
+ * {@link SubmissionFolders} reads the submissions folder. Nothing here waits without a limit: each
  * student's grading is bounded by their time limit, and the class by the sum.
  */
 public final class Grader {
@@ -58,8 +58,8 @@ public final class Grader {
    * @param sandbox how student JVMs are contained
    * @param limits what each student JVM may use
    * @param texts the language of the checks
-   * @param scratchRoot where the students' scratch folders are made (the system's temporary
-   *     folder unless a test says otherwise)
+   * @param scratchRoot where the students' scratch folders are made (the system's temporary folder
+   *     unless a test says otherwise)
    */
   public record Options(
       Duration timeout, int jobs, Sandbox sandbox, Limits limits, Texts texts, Path scratchRoot) {
@@ -225,8 +225,9 @@ public final class Grader {
         } else if (copied.files() == 0) {
           r = notGraded(student, Status.NO_SUBMISSION, "nosub.name", "nosub.empty", t0, log);
         } else {
-          r = new StudentRun(assignment, options, cleanup.processes())
-              .run(student, scratch, log, slot, t0);
+          r =
+              new StudentRun(assignment, options, cleanup.processes())
+                  .run(student, scratch, log, slot, t0);
         }
         if (!copied.links().isEmpty()) {
           r =
@@ -235,9 +236,7 @@ public final class Grader {
                   r.status(),
                   r.grade()
                       .withNote(
-                          options
-                              .texts()
-                              .get("nosub.links", String.join(", ", copied.links()))),
+                          options.texts().get("nosub.links", String.join(", ", copied.links()))),
                   r.seconds(),
                   r.log());
         }

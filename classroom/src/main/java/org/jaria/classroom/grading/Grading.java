@@ -36,9 +36,9 @@ public final class Grading {
   }
 
   /**
-   * Grades the solution among the classes compiled into {@code classesDir}, in {@code t}, the
-   * robot link keeping its record in {@code audit} (a test may pass one that lets more through, to
-   * try the second line of defence on its own).
+   * Grades the solution among the classes compiled into {@code classesDir}, in {@code t}, the robot
+   * link keeping its record in {@code audit} (a test may pass one that lets more through, to try
+   * the second line of defence on its own).
    */
   public static Grade gradeClasses(Assignment a, Path classesDir, Texts t, LinkAudit audit)
       throws IOException {
@@ -78,8 +78,7 @@ public final class Grading {
                 new DataInputStream(
                     new BufferedInputStream(Channels.newInputStream(toGrader.source()), 1 << 16)),
                 new DataOutputStream(
-                    new BufferedOutputStream(
-                        Channels.newOutputStream(toStudent.sink()), 1 << 16)),
+                    new BufferedOutputStream(Channels.newOutputStream(toStudent.sink()), 1 << 16)),
                 audit);
         return Integrity.apply(a.grade(streams, t), audit, t);
       } finally {

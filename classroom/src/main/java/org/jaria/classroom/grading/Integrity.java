@@ -45,8 +45,7 @@ public final class Integrity {
       for (Check c : out.checks()) {
         checks.add(
             c.passed()
-                ? Check.withheld(
-                    c.name(), c.points(), t.get("integrity.notEarned", c.message()))
+                ? Check.withheld(c.name(), c.points(), t.get("integrity.notEarned", c.message()))
                 : c);
       }
       out = out.withChecks(checks).withNote(why);

@@ -43,8 +43,8 @@ public final class PoseTrace implements AutoCloseable {
   }
 
   /**
-   * A trace of the given samples (seconds, x and y in mm, heading in degrees, speed in mm/s; all
-   * of one length), never stalled: for testing checks as plain functions.
+   * A trace of the given samples (seconds, x and y in mm, heading in degrees, speed in mm/s; all of
+   * one length), never stalled: for testing checks as plain functions.
    */
   public static PoseTrace recorded(
       double[] seconds, double[] x, double[] y, double[] thDeg, double[] speed) {

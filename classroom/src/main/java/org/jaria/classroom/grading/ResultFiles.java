@@ -9,9 +9,8 @@ import java.util.Locale;
 
 /**
  * One student's result on disk, in their folder of the report: grade.txt (the checks) and
- * status.txt (status and seconds, then the student's name), written by the grader only.
- * Re-grading one student reads the others' back from here, and checks that each folder is still
- * the student's.
+ * status.txt (status and seconds, then the student's name), written by the grader only. Re-grading
+ * one student reads the others' back from here, and checks that each folder is still the student's.
  */
 final class ResultFiles {
 

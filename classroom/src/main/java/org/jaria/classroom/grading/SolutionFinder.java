@@ -19,8 +19,8 @@ public final class SolutionFinder {
   }
 
   /**
-   * A class loader for the classes compiled into {@code classesDir}, on top of {@code parent}
-   * (the loader of a pack's assignment, so a solution may use the pack's own types).
+   * A class loader for the classes compiled into {@code classesDir}, on top of {@code parent} (the
+   * loader of a pack's assignment, so a solution may use the pack's own types).
    */
   public static URLClassLoader loaderFor(Path classesDir, ClassLoader parent) {
     try {

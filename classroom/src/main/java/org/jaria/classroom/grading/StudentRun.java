@@ -24,9 +24,9 @@ import org.jaria.classroom.sandbox.ScratchFiles;
 
 /**
  * Runs one student's JVM and grades it over the robot link: starts it in the sandbox, where it
- * first compiles the student's sources and then runs them, stops it at the time limit (which
- * covers compiling and running) or when its scratch folder holds too many files or bytes, and
- * names how it ended.
+ * first compiles the student's sources and then runs them, stops it at the time limit (which covers
+ * compiling and running) or when its scratch folder holds too many files or bytes, and names how it
+ * ended.
  */
 final class StudentRun {
 
@@ -155,11 +155,7 @@ final class StudentRun {
       return run.result(
           Status.TOO_MANY_FILES,
           Outcomes.detail(
-              Status.TOO_MANY_FILES,
-              run.exit,
-              options.timeout(),
-              run.tail(400),
-              options.texts()),
+              Status.TOO_MANY_FILES, run.exit, options.timeout(), run.tail(400), options.texts()),
           "ended.name");
     }
     if (grade != null && lost == null) {
@@ -222,8 +218,7 @@ final class StudentRun {
           status,
           new Grade(
               assignment.id(),
-              List.of(
-                  Check.fail(options.texts().get(nameKey), assignment.points(), message))),
+              List.of(Check.fail(options.texts().get(nameKey), assignment.points(), message))),
           Grader.seconds(t0),
           log);
     }

@@ -72,8 +72,7 @@ public final class SubmissionFolders {
     }
     List<Path> entries;
     try (Stream<Path> s = Files.list(folder)) {
-      entries =
-          s.filter(p -> !p.getFileName().toString().startsWith(".")).sorted().toList();
+      entries = s.filter(p -> !p.getFileName().toString().startsWith(".")).sorted().toList();
     }
     boolean anyFolder = entries.stream().anyMatch(Files::isDirectory);
     if (!anyFolder
@@ -100,8 +99,8 @@ public final class SubmissionFolders {
   }
 
   /**
-   * {@code folder} as one student's submission, whatever it holds (where a platform hands over
-   * one submission at a time).
+   * {@code folder} as one student's submission, whatever it holds (where a platform hands over one
+   * submission at a time).
    *
    * @throws IOException if it is not a folder
    */
@@ -173,7 +172,11 @@ public final class SubmissionFolders {
               total[0] += a.size();
               if (a.size() > MAX_FILE_BYTES) {
                 tooLarge.add(
-                    rel + " is " + Fmt.bytes(a.size()) + " (at most " + Fmt.bytes(MAX_FILE_BYTES)
+                    rel
+                        + " is "
+                        + Fmt.bytes(a.size())
+                        + " (at most "
+                        + Fmt.bytes(MAX_FILE_BYTES)
                         + " per file)");
               }
             }
@@ -187,15 +190,18 @@ public final class SubmissionFolders {
         });
     if (entries[0] > MAX_ENTRIES) {
       tooLarge.add(
-          0, "it holds more than " + MAX_ENTRIES + " files and folders (only Java files are needed)");
+          0,
+          "it holds more than " + MAX_ENTRIES + " files and folders (only Java files are needed)");
     }
     if (sources.size() > MAX_FILES) {
       tooLarge.add(0, sources.size() + " .java files (at most " + MAX_FILES + ")");
     }
     if (total[0] > MAX_TOTAL_BYTES) {
       tooLarge.add(
-          Fmt.bytes(total[0]) + " of .java files together (at most "
-              + Fmt.bytes(MAX_TOTAL_BYTES) + ")");
+          Fmt.bytes(total[0])
+              + " of .java files together (at most "
+              + Fmt.bytes(MAX_TOTAL_BYTES)
+              + ")");
     }
     Files.createDirectories(to);
     if (tooLarge.size() > 12) {

@@ -31,7 +31,13 @@ public final class LinkAudit {
    * @param degrees how far it turned in the step
    */
   public record Jump(
-      double seconds, double fromX, double fromY, double toX, double toY, double mm, double degrees) {}
+      double seconds,
+      double fromX,
+      double fromY,
+      double toX,
+      double toY,
+      double mm,
+      double degrees) {}
 
   private final IntPredicate accepted;
   private final Map<String, Long> dropped = new TreeMap<>();

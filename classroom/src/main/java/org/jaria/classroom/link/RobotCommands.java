@@ -4,8 +4,8 @@ import org.jaria.protocol.ArCommands;
 
 /**
  * What a real Pioneer accepts from its client, as a plain decision over command numbers: the ARCOS
- * commands of a robot (the handshake, motion, sonar, I/O, the AUX ports...), and nothing that only a
- * simulator understands. MobileSim's SIM_* commands (set the robot's true pose, reset it, load a
+ * commands of a robot (the handshake, motion, sonar, I/O, the AUX ports...), and nothing that only
+ * a simulator understands. MobileSim's SIM_* commands (set the robot's true pose, reset it, load a
  * map, end the simulator, configure a simulated laser) move or change the world without driving, so
  * a student's link never carries them to the grading world; numbers ARCOS does not know are not
  * carried either.

@@ -260,8 +260,7 @@ public final class StudentLink implements AutoCloseable {
     double deg = Math.abs(ArMath.subAngle(p.th(), lastPose.th()));
     if (mm > maxMmPerS * dt + SLACK_MM || deg > maxDegPerS * dt + SLACK_DEG) {
       audit.jump(
-          new LinkAudit.Jump(
-              (now - t0) / 1e9, lastPose.x(), lastPose.y(), p.x(), p.y(), mm, deg));
+          new LinkAudit.Jump((now - t0) / 1e9, lastPose.x(), lastPose.y(), p.x(), p.y(), mm, deg));
     }
     lastPose = p;
     lastPoseNanos = now;

@@ -21,9 +21,9 @@ import org.jaria.classroom.grading.SubmissionCompiler;
  * the same limits as the run, annotation processing off, so no student code runs while compiling),
  * reports how that went as the link's first frame ({@link CompileReport}), then is the student's
  * side of the robot link over standard input and output. It knows only its assignment and the
- * student's own classes; the grade is made by the grader at the other end. Whatever the student's code prints goes to standard error, so it cannot
- * mix with the link (a program that writes to the link's descriptor directly only breaks its own
- * grading).
+ * student's own classes; the grade is made by the grader at the other end. Whatever the student's
+ * code prints goes to standard error, so it cannot mix with the link (a program that writes to the
+ * link's descriptor directly only breaks its own grading).
  */
 public final class StudentMain {
 

@@ -44,8 +44,8 @@ public final class Packs implements AutoCloseable {
    * The kit's assignments and those of {@code packs}; source packs are compiled into temporary
    * folders in {@code workRoot}.
    *
-   * @throws IllegalArgumentException saying what is wrong, if a path is not a pack, a pack does
-   *     not compile, or two assignments share an id
+   * @throws IllegalArgumentException saying what is wrong, if a path is not a pack, a pack does not
+   *     compile, or two assignments share an id
    * @throws IOException if a pack cannot be read or compiled into {@code workRoot}
    */
   public static Packs load(List<Path> packs, Path workRoot) throws IOException {
@@ -127,7 +127,8 @@ public final class Packs implements AutoCloseable {
     }
     Files.createDirectories(workRoot);
     Path out = cleanup.track(Files.createTempDirectory(workRoot, "jaria-pack-"));
-    SubmissionCompiler.Result r = SubmissionCompiler.compile(src, out, SubmissionCompiler.classPath());
+    SubmissionCompiler.Result r =
+        SubmissionCompiler.compile(src, out, SubmissionCompiler.classPath());
     if (!r.ok()) {
       throw new IllegalArgumentException(
           "the pack in " + pack + " does not compile:\n" + r.errors());

@@ -19,9 +19,7 @@ public final class GradescopeResults {
   public static String of(Grader.Result r, String feedback) {
     StringBuilder sb = new StringBuilder("{\n");
     sb.append("  \"score\": ").append(r.grade().score()).append(",\n");
-    sb.append("  \"execution_time\": ")
-        .append(Math.round(Math.ceil(r.seconds())))
-        .append(",\n");
+    sb.append("  \"execution_time\": ").append(Math.round(Math.ceil(r.seconds()))).append(",\n");
     sb.append("  \"output\": ").append(Json.string(feedback)).append(",\n");
     sb.append("  \"output_format\": \"text\",\n");
     sb.append("  \"test_output_format\": \"text\",\n");

@@ -19,12 +19,11 @@ public final class Platforms {
   private Platforms() {}
 
   /**
-   * Writes what {@code r}'s platform reads about {@code student}'s graded result, whose feedback
-   * is in {@code report}, printing the feedback on {@code o} for GitHub Classroom.
+   * Writes what {@code r}'s platform reads about {@code student}'s graded result, whose feedback is
+   * in {@code report}, printing the feedback on {@code o} for GitHub Classroom.
    */
   public static void graded(
-      GradeRequest r, GradeReport report, Grader.Result student, PrintWriter o)
-      throws IOException {
+      GradeRequest r, GradeReport report, Grader.Result student, PrintWriter o) throws IOException {
     switch (r.platform()) {
       case LOCAL -> {}
       case GRADESCOPE -> {

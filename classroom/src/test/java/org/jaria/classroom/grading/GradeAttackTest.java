@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.io.RandomAccessFile;
 import java.io.StringWriter;
 import java.net.ServerSocket;
 import java.net.SocketTimeoutException;
@@ -20,11 +21,10 @@ import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import org.jaria.classroom.sandbox.Sandbox;
 import org.jaria.classroom.square.SquareAssignment;
-import java.io.RandomAccessFile;
-import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
@@ -228,7 +228,9 @@ class GradeAttackTest {
                 + "\"/sandbox/tmp/big\" + i))) { for (int k = 0; k < 15; k++) { o.write(mb); } } }\n"
                 + "    System.out.println(\"wrote 120 MB\");"));
     // a short source that keeps the compiler busy for minutes (nested least upper bounds)
-    StringBuilder bomb = new StringBuilder("import java.util.*;\npublic class Square {\n  void g(boolean b) {\n    var x = ");
+    StringBuilder bomb =
+        new StringBuilder(
+            "import java.util.*;\npublic class Square {\n  void g(boolean b) {\n    var x = ");
     String a = "1";
     for (int i = 0; i < 7; i++) {
       a = "(b ? new ArrayList<>(List.of(" + a + ")) : new LinkedList<>(Set.of(" + a + ")))";
@@ -236,7 +238,8 @@ class GradeAttackTest {
     write("inference", "Square.java", bomb.append(a).append(";\n  }\n}\n").toString());
     // too much to hand in: a 50 MB source, and 10,000 sources
     Files.createDirectories(subs.resolve("hugefile"));
-    try (RandomAccessFile f = new RandomAccessFile(subs.resolve("hugefile/Square.java").toFile(), "rw")) {
+    try (RandomAccessFile f =
+        new RandomAccessFile(subs.resolve("hugefile/Square.java").toFile(), "rw")) {
       f.setLength(50L << 20);
     }
     for (int i = 0; i < 10_000; i++) {
@@ -275,11 +278,14 @@ class GradeAttackTest {
     stdout = o.toString();
     stderr = e.toString();
     assertEquals(0, exit, stderr);
-    List<String> names = SubmissionFolders.scan(subs).submissions().stream()
-        .map(SubmissionFolders.Submission::student).toList();
+    List<String> names =
+        SubmissionFolders.scan(subs).submissions().stream()
+            .map(SubmissionFolders.Submission::student)
+            .toList();
     Map<String, String> folders = SubmissionFolders.reportFolders(names);
     for (String name : names) {
-      byStudent.put(name, ResultFiles.read(out.resolve("students").resolve(folders.get(name)), name));
+      byStudent.put(
+          name, ResultFiles.read(out.resolve("students").resolve(folders.get(name)), name));
     }
   }
 

@@ -34,10 +34,10 @@ class NeutralTest {
 
   @Test
   void markdownAndHtmlGetNoRawMarkup() {
-    assertEquals("&lt;img src=x onerror=alert(1)&gt;", Neutral.html("<img src=x onerror=alert(1)>"));
+    assertEquals(
+        "&lt;img src=x onerror=alert(1)&gt;", Neutral.html("<img src=x onerror=alert(1)>"));
     String md = Neutral.markdown("<script>|x|</script> [a](javascript:1) *b*");
     assertFalse(md.contains("<"), md);
-    assertEquals(
-        "&lt;script&gt;\\|x\\|&lt;/script&gt; \\[a\\](javascript:1) \\*b\\*", md);
+    assertEquals("&lt;script&gt;\\|x\\|&lt;/script&gt; \\[a\\](javascript:1) \\*b\\*", md);
   }
 }

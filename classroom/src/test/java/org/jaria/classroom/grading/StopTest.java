@@ -62,7 +62,9 @@ class StopTest {
     for (Path p : StudentRun.studentClassPath(new SquareAssignment())) {
       cp.add(p.toString());
     }
-    cp.add(Path.of(StopTest.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString());
+    cp.add(
+        Path.of(StopTest.class.getProtectionDomain().getCodeSource().getLocation().toURI())
+            .toString());
     Process grader =
         new ProcessBuilder(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(),
@@ -86,7 +88,9 @@ class StopTest {
       assertEquals(List.of(), names(scratch), said);
       List<String> left =
           ProcessHandle.allProcesses()
-              .filter(p -> p.info().commandLine().map(c -> c.contains(scratch.toString())).orElse(false))
+              .filter(
+                  p ->
+                      p.info().commandLine().map(c -> c.contains(scratch.toString())).orElse(false))
               .map(p -> p.pid() + " " + p.info().commandLine().orElse(""))
               .toList();
       assertEquals(List.of(), left);

@@ -32,7 +32,8 @@ class SubmissionFoldersTest {
         List.of("ana", "bob"),
         s.submissions().stream().map(SubmissionFolders.Submission::student).toList());
     assertEquals(2, s.skipped().size(), s.skipped().toString());
-    assertTrue(s.skipped().get(0).startsWith("skipped Square.java: a file beside"), s.skipped().get(0));
+    assertTrue(
+        s.skipped().get(0).startsWith("skipped Square.java: a file beside"), s.skipped().get(0));
   }
 
   @Test
@@ -60,10 +61,12 @@ class SubmissionFoldersTest {
     assertEquals("a_b~2", f.get("a b"));
     assertEquals("Ana", f.get("Ana"));
     assertEquals("ana~2", f.get("ana"));
-    assertEquals(6, f.values().stream().map(v -> v.toLowerCase(java.util.Locale.ROOT)).distinct().count());
+    assertEquals(
+        6, f.values().stream().map(v -> v.toLowerCase(java.util.Locale.ROOT)).distinct().count());
     assertTrue(f.values().stream().noneMatch(v -> v.equals("..") || v.contains("/")), f.toString());
     // the same set of students always gets the same folders (a re-grade of one finds its own)
-    assertEquals(f, SubmissionFolders.reportFolders(List.of("x/y", "..", "ana", "Ana", "a_b", "a b")));
+    assertEquals(
+        f, SubmissionFolders.reportFolders(List.of("x/y", "..", "ana", "Ana", "a_b", "a b")));
   }
 
   @Test
@@ -76,7 +79,9 @@ class SubmissionFoldersTest {
     java(big, "Square.java");
     SubmissionFolders.Copied c = SubmissionFolders.copySources(big, tmp.resolve("out-big"));
     assertEquals(0, c.files());
-    assertTrue(c.tooLarge().get(0).startsWith("Huge.java is 50.0 MB (at most 1.0 MB per file)"), c.tooLarge().toString());
+    assertTrue(
+        c.tooLarge().get(0).startsWith("Huge.java is 50.0 MB (at most 1.0 MB per file)"),
+        c.tooLarge().toString());
     assertEquals(List.of(), Files.list(tmp.resolve("out-big")).toList());
 
     Path many = tmp.resolve("many");

@@ -43,7 +43,8 @@ class TeleportAttackTest {
   }
 
   static Stream<String> assignments() throws IOException {
-    try (Packs p = Packs.load(List.of(Path.of("packs", "dock")), Files.createTempDirectory("ids"))) {
+    try (Packs p =
+        Packs.load(List.of(Path.of("packs", "dock")), Files.createTempDirectory("ids"))) {
       return p.assignments().stream().map(Assignment::id).toList().stream();
     }
   }
@@ -69,7 +70,8 @@ class TeleportAttackTest {
       assertTrue(audit.dropped().getOrDefault("SIM_SET_POSE", 0L) > 0, audit.dropped().toString());
       assertEquals(0, audit.jumps(), "nothing moved the robot");
       assertTrue(
-          g.notes().stream().anyMatch(n -> n.contains("a real Pioneer does not accept (SIM_SET_POSE x")),
+          g.notes().stream()
+              .anyMatch(n -> n.contains("a real Pioneer does not accept (SIM_SET_POSE x")),
           g.describe());
     } finally {
       SubmissionFolders.deleteTree(work);
@@ -93,7 +95,10 @@ class TeleportAttackTest {
       assertTrue(g.notes().stream().anyMatch(n -> n.contains("true path jumped")), g.describe());
       assertTrue(
           g.checks().stream()
-              .anyMatch(c -> c.withheld() && c.message().endsWith("the robot's path jumped (see the note)")),
+              .anyMatch(
+                  c ->
+                      c.withheld()
+                          && c.message().endsWith("the robot's path jumped (see the note)")),
           id + ": a check the jump made pass is withheld:\n" + g.describe());
     } finally {
       SubmissionFolders.deleteTree(work);

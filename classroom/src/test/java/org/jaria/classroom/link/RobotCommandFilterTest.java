@@ -46,7 +46,8 @@ class RobotCommandFilterTest {
     pipe.b().open();
     LinkAudit audit = new LinkAudit();
     RobotCommandFilter f = new RobotCommandFilter(audit, "test");
-    byte[] move = packet(CommandCodec.comInt(new ArRobotPacket(), ArCommands.MOVE.getNumber(), 500));
+    byte[] move =
+        packet(CommandCodec.comInt(new ArRobotPacket(), ArCommands.MOVE.getNumber(), 500));
     ArRobotPacket pose = new ArRobotPacket(ArCommands.SIM_SET_POSE.getNumber());
     pose.uByteToBuf(0).byte4ToBuf(2000).byte4ToBuf(0).byte4ToBuf(0);
     byte[] teleport = packet(pose.finalizePacket());

@@ -16,9 +16,9 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.platform.launcher.listeners.TestExecutionSummary;
 
 /**
- * The example pack packs/dock ("park in the dock"), written only against the public API, loaded
- * the way {@code jaria grade --pack} loads it: its solution earns full marks, its starter less, and
- * its own JUnit test passes.
+ * The example pack packs/dock ("park in the dock"), written only against the public API, loaded the
+ * way {@code jaria grade --pack} loads it: its solution earns full marks, its starter less, and its
+ * own JUnit test passes.
  */
 @Tag("slow")
 class DockPackTest {

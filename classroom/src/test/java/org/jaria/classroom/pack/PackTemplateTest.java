@@ -28,7 +28,8 @@ class PackTemplateTest {
   void theTemplateIsAPackWhoseOwnTestPasses(@TempDir Path tmp) throws Exception {
     Path pack = tmp.resolve("packs").resolve("parking");
     List<Path> files = PackTemplate.write(pack);
-    assertTrue(files.contains(Path.of("test/parking/ParkingAssignmentTest.java")), files.toString());
+    assertTrue(
+        files.contains(Path.of("test/parking/ParkingAssignmentTest.java")), files.toString());
     assertTrue(Files.isRegularFile(pack.resolve("src/" + Packs.SERVICES)));
     try (Packs packs = Packs.load(List.of(pack), tmp)) {
       Assignment a = packs.byId("parking");
@@ -49,11 +50,13 @@ class PackTemplateTest {
   @Test
   void aPackNeedsANameThatIsAPackageAndANewFolder(@TempDir Path tmp) throws Exception {
     IllegalArgumentException bad =
-        assertThrows(IllegalArgumentException.class, () -> PackTemplate.write(tmp.resolve("My-Pack")));
+        assertThrows(
+            IllegalArgumentException.class, () -> PackTemplate.write(tmp.resolve("My-Pack")));
     assertTrue(bad.getMessage().contains("lowercase letters and digits"), bad.getMessage());
     Files.createDirectories(tmp.resolve("taken"));
     IllegalArgumentException exists =
-        assertThrows(IllegalArgumentException.class, () -> PackTemplate.write(tmp.resolve("taken")));
+        assertThrows(
+            IllegalArgumentException.class, () -> PackTemplate.write(tmp.resolve("taken")));
     assertTrue(exists.getMessage().contains("already exists"), exists.getMessage());
   }
 

@@ -130,8 +130,7 @@ class PlatformsTest {
     assertEquals(local, r.out(), "the step's log is the feedback, byte for byte");
     String line = Files.readString(output).strip();
     assertTrue(line.startsWith("result="), line);
-    String json =
-        new String(Base64.getDecoder().decode(line.substring(7)), StandardCharsets.UTF_8);
+    String json = new String(Base64.getDecoder().decode(line.substring(7)), StandardCharsets.UTF_8);
     assertTrue(json.startsWith("{\"version\":1,\"status\":\"fail\",\"max_score\":10,"), json);
     int sum = 0;
     Matcher m = Pattern.compile("\"score\":(\\d+)").matcher(json);

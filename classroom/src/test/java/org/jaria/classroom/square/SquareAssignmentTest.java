@@ -6,14 +6,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.file.Path;
-import org.jaria.classroom.grading.Check;
-import org.jaria.classroom.grading.Grade;
-import org.jaria.classroom.kit.Kit;
 import java.util.List;
 import java.util.Map;
+import org.jaria.classroom.grading.Check;
 import org.jaria.classroom.grading.ClassStats;
+import org.jaria.classroom.grading.Grade;
 import org.jaria.classroom.grading.Grader;
 import org.jaria.classroom.grading.Status;
+import org.jaria.classroom.kit.Kit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -128,8 +128,7 @@ class SquareAssignmentTest {
     assertTrue(find(g, "stops at the end").withheld(), g.describe());
     assertEquals(
         Map.of("program ends", 1),
-        ClassStats.of(
-                List.of(new Grader.Result("x", Status.GRADED, g, 1, null)), square.points())
+        ClassStats.of(List.of(new Grader.Result("x", Status.GRADED, g, 1, null)), square.points())
             .mostFailed());
   }
 

@@ -74,20 +74,22 @@ public final class GradeBenchmark {
               mix.hanging(),
               mix.busy(),
               TIMEOUT.toSeconds(),
-              isolated ? "each in a sandbox" : "WITHOUT a sandbox (bubblewrap is not usable here)"));
+              isolated
+                  ? "each in a sandbox"
+                  : "WITHOUT a sandbox (bubblewrap is not usable here)"));
       t.append(
           String.format(
               Locale.ROOT,
               "%d cores, load average %.1f before%n%n",
               Runtime.getRuntime().availableProcessors(),
               loadBefore));
-      t.append(String.format(Locale.ROOT, "%-6s %12s %20s%n", "jobs", "wall time", "load avg after"));
+      t.append(
+          String.format(Locale.ROOT, "%-6s %12s %20s%n", "jobs", "wall time", "load avg after"));
       double[] seconds = new double[3];
       for (int jobs : new int[] {2, 1}) {
-        seconds[jobs] = grade(subs, root.resolve("out" + jobs), root.resolve("scratch"), jobs, !isolated);
-        t.append(
-            String.format(
-                Locale.ROOT, "%-6d %10.1f s %20.1f%n", jobs, seconds[jobs], load()));
+        seconds[jobs] =
+            grade(subs, root.resolve("out" + jobs), root.resolve("scratch"), jobs, !isolated);
+        t.append(String.format(Locale.ROOT, "%-6d %10.1f s %20.1f%n", jobs, seconds[jobs], load()));
       }
       List<String> differ = differences(root.resolve("out1"), root.resolve("out2"));
       t.append('\n')

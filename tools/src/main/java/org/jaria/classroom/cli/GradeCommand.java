@@ -196,8 +196,13 @@ public final class GradeCommand implements Callable<Integer> {
       o.println("  " + f);
     }
     String id = newPack.toAbsolutePath().normalize().getFileName().toString();
-    o.println("Grade its solution: ./jaria grade --pack " + newPack + " -a " + id + " "
-        + newPack.resolve("solution"));
+    o.println(
+        "Grade its solution: ./jaria grade --pack "
+            + newPack
+            + " -a "
+            + id
+            + " "
+            + newPack.resolve("solution"));
     o.flush();
     return 0;
   }

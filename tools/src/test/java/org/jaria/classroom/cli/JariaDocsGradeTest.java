@@ -50,7 +50,9 @@ class JariaDocsGradeTest {
     return out;
   }
 
-  /** {@code line}'s arguments, its folders outside JAria (and /autograder) moved into {@code tmp}. */
+  /**
+   * {@code line}'s arguments, its folders outside JAria (and /autograder) moved into {@code tmp}.
+   */
   private String[] args(String line, Path tmp, int n) {
     List<String> words = new ArrayList<>(Arrays.asList(line.split("\\s+")));
     words.remove(0); // ./jaria, or jaria/jaria in the workflow
@@ -97,7 +99,8 @@ class JariaDocsGradeTest {
         assertTrue(r.out().contains("10/10  GRADED"), line + "\n" + r.out());
       }
     }
-    assertTrue(Files.isRegularFile(tmp.resolve("my-packs/parking/src/parking/ParkingAssignment.java")));
+    assertTrue(
+        Files.isRegularFile(tmp.resolve("my-packs/parking/src/parking/ParkingAssignment.java")));
   }
 
   @Test
@@ -130,7 +133,9 @@ class JariaDocsGradeTest {
     for (String script : List.of("setup.sh", "run_autograder")) {
       Process p =
           new ProcessBuilder(
-                  "bash", "-n", root.resolve("docs/classroom/gradescope").resolve(script).toString())
+                  "bash",
+                  "-n",
+                  root.resolve("docs/classroom/gradescope").resolve(script).toString())
               .redirectErrorStream(true)
               .start();
       assertTrue(p.waitFor(30, TimeUnit.SECONDS));
