@@ -129,24 +129,37 @@ public final class GradeBenchmark {
     put(subs, "good", mix.good(), solution);
     put(subs, "bad", mix.starters(), starter);
     put(subs, "broken", mix.broken(), solution.replaceFirst(";", ""));
-    put(
-        subs,
-        "hangctor",
-        mix.hanging(),
-        "import org.jaria.classroom.RobotProgram;\nimport org.jaria.robot.ArRobot;\n"
-            + "public class Square implements RobotProgram {\n  private long n;\n"
-            + "  public Square() { while (n >= 0) { n++; } }\n"
-            + "  public void run(ArRobot robot) {}\n}\n");
-    put(
-        subs,
-        "busywait",
-        mix.busy(),
-        "import org.jaria.classroom.RobotProgram;\nimport org.jaria.robot.ArRobot;\n"
-            + "public class Square implements RobotProgram {\n"
-            + "  public void run(ArRobot robot) {\n    robot.enableMotors();\n"
-            + "    robot.move(2000);\n    while (!robot.isMoveDone()) {\n"
-            + "      if (Thread.currentThread().isInterrupted()) return;\n    }\n  }\n}\n");
+    put(subs, "hangctor", mix.hanging(), HANGING);
+    put(subs, "busywait", mix.busy(), BUSY);
   }
+
+  /** Loops forever in its constructor. */
+  private static final String HANGING =
+      """
+      import org.jaria.classroom.RobotProgram;
+      import org.jaria.robot.ArRobot;
+      public class Square implements RobotProgram {
+        private long n;
+        public Square() { while (n >= 0) { n++; } }
+        public void run(ArRobot robot) {}
+      }
+      """;
+
+  /** Waits for the move without the robot's clock. */
+  private static final String BUSY =
+      """
+      import org.jaria.classroom.RobotProgram;
+      import org.jaria.robot.ArRobot;
+      public class Square implements RobotProgram {
+        public void run(ArRobot robot) {
+          robot.enableMotors();
+          robot.move(2000);
+          while (!robot.isMoveDone()) {
+            if (Thread.currentThread().isInterrupted()) return;
+          }
+        }
+      }
+      """;
 
   private static void put(Path subs, String kind, int n, String source) throws IOException {
     for (int i = 1; i <= n; i++) {
