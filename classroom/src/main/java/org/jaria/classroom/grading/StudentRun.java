@@ -146,6 +146,7 @@ final class StudentRun {
       lost = e;
     } catch (RuntimeException e) {
       // Whatever the student's side did to the grader's half, it costs only this student.
+      kill(run.process);
       run.end();
       return run.result(
           Status.CRASH, options.texts().get("ended.graderFailed", e.getMessage()), "ended.name");

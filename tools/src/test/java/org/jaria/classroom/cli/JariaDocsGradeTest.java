@@ -139,7 +139,10 @@ class JariaDocsGradeTest {
               .redirectErrorStream(true)
               .start();
       assertTrue(p.waitFor(30, TimeUnit.SECONDS));
-      assertEquals(0, p.exitValue(), script + ": " + new String(p.getInputStream().readAllBytes()));
+      assertEquals(
+          0,
+          p.exitValue(),
+          script + ": " + new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8));
     }
   }
 
