@@ -137,7 +137,7 @@ public final class Grader {
       }
       // Each student takes at most their time limit and the grace; the class at most its rounds.
       long perStudent = options.timeout().plus(GRACE).toNanos();
-      long rounds = (subs.size() + jobs - 1) / jobs;
+      long rounds = (subs.size() + jobs - 1L) / jobs;
       long deadline = System.nanoTime() + perStudent * rounds;
       List<Result> results = new ArrayList<>();
       for (int i = 0; i < futures.size(); i++) {
