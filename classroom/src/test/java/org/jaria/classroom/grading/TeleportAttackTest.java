@@ -43,9 +43,11 @@ class TeleportAttackTest {
   }
 
   static Stream<String> assignments() throws IOException {
-    try (Packs p =
-        Packs.load(List.of(Path.of("packs", "dock")), Files.createTempDirectory("ids"))) {
+    Path work = Files.createTempDirectory("ids");
+    try (Packs p = Packs.load(List.of(Path.of("packs", "dock")), work)) {
       return p.assignments().stream().map(Assignment::id).toList().stream();
+    } finally {
+      SubmissionFolders.deleteTree(work);
     }
   }
 
