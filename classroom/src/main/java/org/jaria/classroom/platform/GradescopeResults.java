@@ -56,8 +56,15 @@ public final class GradescopeResults {
             : "The autograder could not grade your submission: " + why + ". Tell your teacher.";
     return String.format(
         Locale.ROOT,
-        "{\n  \"score\": 0,\n  \"output\": %s,\n  \"output_format\": \"text\",\n"
-            + "  \"visibility\": \"visible\",\n  \"tests\": []\n}\n",
+        """
+        {
+          "score": 0,
+          "output": %s,
+          "output_format": "text",
+          "visibility": "visible",
+          "tests": []
+        }
+        """,
         Json.string(Neutral.text(output)));
   }
 }

@@ -37,7 +37,7 @@ class StopTest {
     PrintWriter o = new PrintWriter(System.out, true, StandardCharsets.UTF_8);
     ClassGrading.grade(
         GradeRequest.of("square", Path.of(args[0]), Path.of(args[1]))
-            .withTimeout(Duration.ofSeconds(300))
+            .withTimeout(Duration.ofMinutes(5))
             .withScratchRoot(Path.of(args[2])),
         o,
         o);
