@@ -21,7 +21,8 @@ import picocli.CommandLine.Spec;
       BenchCommand.Net.class,
       BenchCommand.Mapper.class,
       BenchCommand.Hostile.class,
-      BenchCommand.Web.class
+      BenchCommand.Web.class,
+      BenchCommand.Grade.class
     })
 final class BenchCommand implements Runnable {
 
@@ -169,6 +170,19 @@ final class BenchCommand implements Runnable {
     @Override
     String table() throws Exception {
       return org.jaria.tools.bench.HostileBenchmark.run(quick);
+    }
+  }
+
+  /** {@code jaria bench grade}. */
+  @Command(
+      name = "grade",
+      description =
+          "Grading a class of 60 square submissions (good, starters, not compiling, hanging,"
+              + " busy-waiting) with 2 jobs and with 1; the gradebooks must be the same.")
+  static final class Grade extends QuickBench {
+    @Override
+    String table() throws Exception {
+      return org.jaria.classroom.bench.GradeBenchmark.run(quick);
     }
   }
 }
