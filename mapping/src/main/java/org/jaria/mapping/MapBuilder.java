@@ -176,7 +176,7 @@ public final class MapBuilder {
         guess.th(),
         40 + 0.3 * moved,
         2 + 0.15 * turned);
-    icp.setPrior(15 + 0.05 * moved, 1 + 0.05 * turned);
+    icp.setPrior(30 + 0.1 * moved, 1 + 0.1 * turned);
     icp.match(local, pts.kx, pts.ky, pts.matchCount, nearby.x, nearby.y, nearby.thDeg);
     ArPose est = new ArPose(icp.x, icp.y, icp.thDeg);
     if (DEBUG) {

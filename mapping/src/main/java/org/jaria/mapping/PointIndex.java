@@ -9,8 +9,9 @@ import java.util.Arrays;
  * also estimates each point's surface normal from its neighbours within {@link #NORMAL_RADIUS_MM}
  * (a line fitted through them, so the many scans of a wall give a steady normal). Where they do
  * not lie on a line (a corner) {@link #nx} is NaN and the point is matched point to point; a point
- * with too few neighbours (far along a wall, where the readings are sparse) has NaN for both and
- * is not matched, as its along-the-wall position is mere sampling. Built anew for each match from primitive arrays that are reused, so a build allocates
+ * with too few neighbours (far along a wall, where the readings are sparse) takes the normal of
+ * the line to its nearest neighbour, as its position along the wall is mere sampling; with none
+ * within half a metre it has NaN for both and is not matched. Built anew for each match from primitive arrays that are reused, so a build allocates
  * nothing once the arrays have grown.
  *
  * <p>Not thread-safe.
@@ -138,6 +139,52 @@ final class PointIndex {
     }
   }
 
+  /**
+   * A lone point (far along a wall, where readings are sparse): the normal of the line to its
+   * nearest neighbour within {@link #PAIR_RADIUS_MM}, which lies on the same wall; NaN for both if
+   * it has none (then it is not matched).
+   */
+  private void pairNormal(int i) {
+    int j = nearestOther(i, PAIR_RADIUS_MM);
+    if (j < 0) {
+      return;
+    }
+    double dx = px[j] - px[i];
+    double dy = py[j] - py[i];
+    double len = Math.hypot(dx, dy);
+    pnx[i] = -dy / len;
+    pny[i] = dx / len;
+  }
+
+  private int nearestOther(int i, double maxDist) {
+    double x = px[i];
+    double y = py[i];
+    int cx = (int) ((x - minX) / cell);
+    int cy = (int) ((y - minY) / cell);
+    int r = (int) Math.ceil(maxDist / cell);
+    double best = maxDist * maxDist;
+    int found = -1;
+    for (int gy = Math.max(0, cy - r); gy <= Math.min(gh - 1, cy + r); gy++) {
+      for (int gx = Math.max(0, cx - r); gx <= Math.min(gw - 1, cx + r); gx++) {
+        int c = gy * gw + gx;
+        for (int q = start[c]; q < start[c + 1]; q++) {
+          int j = items[q];
+          double dx = px[j] - x;
+          double dy = py[j] - y;
+          double d = dx * dx + dy * dy;
+          if (j != i && d < best) {
+            best = d;
+            found = j;
+          }
+        }
+      }
+    }
+    return found;
+  }
+
+  /** A lone point's surface is the line to its nearest neighbour within this, mm. */
+  static final double PAIR_RADIUS_MM = 500;
+
   /** The normal of point i from its neighbours (NaN where they do not lie on a line). */
   private void normal(int i) {
     double x = px[i];
@@ -170,8 +217,9 @@ final class PointIndex {
       }
     }
     pnx[i] = Double.NaN;
-    pny[i] = Double.NaN; // too few neighbours: a lone far point, not matched at all
+    pny[i] = Double.NaN;
     if (k < 4) {
+      pairNormal(i);
       return;
     }
     pny[i] = 0; // a corner: matched point to point
