@@ -10,14 +10,14 @@ import org.jaria.geom.ArMath;
  * nearest points downhill and can settle in the wrong place where the view is poor (a doorway seen
  * while turning), this compares whole fits; ICP then polishes the winner. The loop closer searches
  * metres and tens of degrees (100 mm, 2 degrees, then 40 mm, 0.5 degrees); each scan's own match
- * searches a few centimetres (50 mm, 1 degree, then 10 mm, 0.25 degrees).
+ * searches a few centimetres (50 mm, 1 degree, then 20 mm, 0.5 degrees).
  *
  * <p>Scores are read from rasters of the reference (a cell holding a point scores 2, its
  * neighbours 1) of primitive arrays, reused between searches. Not thread-safe.
  */
 final class CorrelativeSearch {
 
-  private static final int KEEP = 4;
+  private static final int KEEP = 3;
   private final Raster coarse;
   private final Raster fine;
   private final double coarseStep;
@@ -39,18 +39,18 @@ final class CorrelativeSearch {
     this.fine = new Raster(fineCell);
     this.coarseStep = coarseCell;
     this.coarseAngle = coarseAngle;
-    this.fineStep = fineCell / 2;
+    this.fineStep = fineCell;
     this.fineAngle = fineAngle;
   }
 
   /** The loop closer's search: metres and tens of degrees. */
   static CorrelativeSearch wide() {
-    return new CorrelativeSearch(100, 2, 80, 0.5);
+    return new CorrelativeSearch(100, 2, 40, 0.5);
   }
 
   /** A scan's own match: centimetres and degrees. */
   static CorrelativeSearch narrow() {
-    return new CorrelativeSearch(50, 1, 20, 0.25);
+    return new CorrelativeSearch(50, 1, 20, 0.5);
   }
 
   /**
@@ -69,8 +69,29 @@ final class CorrelativeSearch {
       double angleWindow) {
     this.radius = Math.max(1, radius);
     this.window = angleWindow;
-    coarse.build(ref, x0, y0, radius + 21000);
-    fine.build(ref, x0, y0, radius + 21000);
+    // the rasters need to cover only where the scan can land
+    double cos = Math.cos(Math.toRadians(th0));
+    double sin = Math.sin(Math.toRadians(th0));
+    double reach = 0;
+    double bx0 = Double.POSITIVE_INFINITY;
+    double by0 = Double.POSITIVE_INFINITY;
+    double bx1 = Double.NEGATIVE_INFINITY;
+    double by1 = Double.NEGATIVE_INFINITY;
+    for (int i = 0; i < n; i++) {
+      double px = x0 + cos * sx[i] - sin * sy[i];
+      double py = y0 + sin * sx[i] + cos * sy[i];
+      bx0 = Math.min(bx0, px);
+      by0 = Math.min(by0, py);
+      bx1 = Math.max(bx1, px);
+      by1 = Math.max(by1, py);
+      reach = Math.max(reach, sx[i] * sx[i] + sy[i] * sy[i]);
+    }
+    double grow =
+        radius
+            + Math.sqrt(reach) * Math.toRadians(angleWindow + coarseAngle)
+            + 2 * coarseStep;
+    coarse.build(ref, bx0 - grow, by0 - grow, bx1 + grow, by1 + grow);
+    fine.build(ref, bx0 - grow, by0 - grow, bx1 + grow, by1 + grow);
     if (rx.length < n) {
       rx = new double[n];
       ry = new double[n];
@@ -180,21 +201,8 @@ final class CorrelativeSearch {
       this.cell = cell;
     }
 
-    void build(PointIndex ref, double cx, double cy, double reach) {
-      double x0 = Double.POSITIVE_INFINITY;
-      double y0 = Double.POSITIVE_INFINITY;
-      double x1 = Double.NEGATIVE_INFINITY;
-      double y1 = Double.NEGATIVE_INFINITY;
-      for (int i = 0; i < ref.size(); i++) {
-        x0 = Math.min(x0, ref.x(i));
-        y0 = Math.min(y0, ref.y(i));
-        x1 = Math.max(x1, ref.x(i));
-        y1 = Math.max(y1, ref.y(i));
-      }
-      x0 = Math.max(x0, cx - reach);
-      y0 = Math.max(y0, cy - reach);
-      x1 = Math.min(x1, cx + reach);
-      y1 = Math.min(y1, cy + reach);
+    /** Rasterises the reference points within the box (x0, y0)..(x1, y1). */
+    void build(PointIndex ref, double x0, double y0, double x1, double y1) {
       if (!(x1 >= x0 && y1 >= y0)) {
         w = 0;
         h = 0;

@@ -143,7 +143,7 @@ final class IcpMatcher {
       double ex = px - ref.x(q);
       double ey = py - ref.y(q);
       double nx = ref.nx(q);
-      err[k] = Double.isNaN(nx) ? Math.hypot(ex, ey) : Math.abs(nx * ex + ref.ny(q) * ey);
+      err[k] = Double.isNaN(nx) ? Math.sqrt(ex * ex + ey * ey) : Math.abs(nx * ex + ref.ny(q) * ey);
       sorted[paired++] = err[k];
     }
     // the worst fifth of the pairs are most likely points the reference never saw: left out

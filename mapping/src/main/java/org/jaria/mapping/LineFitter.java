@@ -91,8 +91,12 @@ final class LineFitter {
     for (int i = 1; i <= n; i++) {
       boolean cut = i == n;
       if (!cut) {
-        double gap = Math.hypot(x[i] - x[i - 1], y[i] - y[i - 1]);
-        double range = Math.hypot(x[i] - ox, y[i] - oy);
+        double gx = x[i] - x[i - 1];
+        double gy = y[i] - y[i - 1];
+        double gap = Math.sqrt(gx * gx + gy * gy);
+        double rx = x[i] - ox;
+        double ry = y[i] - oy;
+        double range = Math.sqrt(rx * rx + ry * ry);
         cut = gap > Math.max(150, 0.035 * range);
       }
       if (cut) {

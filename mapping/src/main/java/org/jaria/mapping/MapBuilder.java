@@ -71,6 +71,9 @@ public final class MapBuilder {
   private long matchFailures;
   private long pruned;
   private boolean matched;
+  private long timeMatch;
+  private long timeLoops;
+  private long timeLocal;
 
   /** A builder for scans of a log with {@code header} (the laser's mounting and view). */
   public MapBuilder(ScanLogHeader header, MapBuilderParams params) {
@@ -140,14 +143,18 @@ public final class MapBuilder {
       trajectory.add(s.id(), s.time(), odo, last, Poses.between(nodes.estimate(last), guess));
       return;
     }
+    long t0 = System.nanoTime();
     ArPose est = match(guess, pts, moved, turned);
+    timeMatch += System.nanoTime() - t0;
     int n = nodes.add(est, odo, travel, s.time(), pts);
     ArPose rel = Poses.between(nodes.estimate(last), est);
     double[] info = matched ? toGraphInfo(icp.info) : odometryInfo(moved, turned);
     nodes.graph.addEdge(last, n, rel.x(), rel.y(), rel.th(), info, false);
     trajectory.add(s.id(), s.time(), odo, n, ArPose.ORIGIN);
     scansUsed++;
+    long t1 = System.nanoTime();
     loops.tryClose(nodes, n, pts);
+    timeLoops += System.nanoTime() - t1;
     lastEstimate = nodes.estimate(n);
     prune(n);
   }
@@ -165,7 +172,9 @@ public final class MapBuilder {
     for (int k = newest; k >= 0 && nodes.travel(k) >= from; k--) {
       nodes.addPoints(k, local);
     }
+    long tl = System.nanoTime();
     local.build();
+    timeLocal += System.nanoTime() - tl;
     nearby.search(
         local,
         pts.kx,
@@ -179,7 +188,7 @@ public final class MapBuilder {
     icp.setPrior(30 + 0.1 * moved, 1 + 0.1 * turned);
     icp.match(local, pts.kx, pts.ky, pts.matchCount, nearby.x, nearby.y, nearby.thDeg);
     ArPose est = new ArPose(icp.x, icp.y, icp.thDeg);
-    if (DEBUG) {
+    if (DEBUG && scansRead < 0) {
       System.out.printf(
           "scan %d guess %s corr %.1f %.1f %.2f (%.2f) icp %s inl %.2f pairs %d/%d%n",
           scansRead - 1,
@@ -313,6 +322,11 @@ public final class MapBuilder {
               + " mm and "
               + (int) TURNED_DEG
               + " degrees of the first): drive it around the building with the laser on");
+    }
+    if (DEBUG) {
+      System.out.printf(
+          "match %.0f ms (local index %.0f ms), loops %.0f ms%n",
+          timeMatch / 1e6, timeLocal / 1e6, timeLoops / 1e6);
     }
     loops.optimize(nodes);
     return MapAssembler.assemble(

@@ -6,7 +6,7 @@ import java.util.Arrays;
  * Reference points bucketed in a uniform grid for nearest-neighbour look-ups: what a scan is
  * matched against. Points are added in the map frame; a point closer than {@link #DEDUP_MM} to one
  * already there is skipped, so overlapping scans of the same wall do not pile up. {@link #build()}
- * also estimates each point's surface normal from its neighbours within {@link #NORMAL_RADIUS_MM}
+ * also lets each point's surface normal be estimated (when first asked for) from its neighbours within {@link #NORMAL_RADIUS_MM}
  * (a line fitted through them, so the many scans of a wall give a steady normal). Where they do
  * not lie on a line (a corner) {@link #nx} is NaN and the point is matched point to point; a point
  * with too few neighbours (far along a wall, where the readings are sparse) takes the normal of
@@ -31,6 +31,7 @@ final class PointIndex {
   private double[] py = new double[4096];
   private double[] pnx = new double[4096];
   private double[] pny = new double[4096];
+  private boolean[] hasNormal = new boolean[4096];
   private int n;
   private final CellCounts dedup = new CellCounts(8192);
 
@@ -80,11 +81,19 @@ final class PointIndex {
     return py[i];
   }
 
+  /** The x of point i's normal (computed on first use: most points are never looked up). */
   double nx(int i) {
+    if (!hasNormal[i]) {
+      normal(i);
+    }
     return pnx[i];
   }
 
+  /** The y of point i's normal. */
   double ny(int i) {
+    if (!hasNormal[i]) {
+      normal(i);
+    }
     return pny[i];
   }
 
@@ -134,8 +143,10 @@ final class PointIndex {
       start[c] = start[c - 1];
     }
     start[0] = 0;
-    for (int i = 0; i < n; i++) {
-      normal(i);
+    if (hasNormal.length < n) {
+      hasNormal = new boolean[px.length];
+    } else {
+      Arrays.fill(hasNormal, 0, n, false);
     }
   }
 
@@ -187,6 +198,7 @@ final class PointIndex {
 
   /** The normal of point i from its neighbours (NaN where they do not lie on a line). */
   private void normal(int i) {
+    hasNormal[i] = true;
     double x = px[i];
     double y = py[i];
     int cx = (int) ((x - minX) / cell);

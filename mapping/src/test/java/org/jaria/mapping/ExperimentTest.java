@@ -46,6 +46,8 @@ class ExperimentTest {
         r.truth().size(), (System.nanoTime() - t0) / 1e9, r.mismatched());
     java.nio.file.Files.writeString(java.nio.file.Path.of("/tmp/office.2d"), r.log());
     long t1 = System.nanoTime();
+    java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+    long c1 = mx.getCurrentThreadCpuTime();
     BuiltMap m;
     try (ScanLogReader reader = new ScanLogReader(new StringReader(r.log()), "office")) {
       MapBuilder b = new MapBuilder(reader.header(), MapBuilderParams.DEFAULTS);
@@ -54,7 +56,8 @@ class ExperimentTest {
       }
       m = b.finish();
     }
-    System.out.printf("built in %.2f s: %s%n", (System.nanoTime() - t1) / 1e9, m.stats().summary());
+    System.out.printf("built in %.2f s (cpu %.2f s): %s%n", (System.nanoTime() - t1) / 1e9,
+        (mx.getCurrentThreadCpuTime() - c1) / 1e9, m.stats().summary());
     // trajectory error: map frame = odometry frame; truth frame related by the first pose
     Trajectory tr = m.trajectory();
     ArPose mount = new ArPose(21, 0, 0);

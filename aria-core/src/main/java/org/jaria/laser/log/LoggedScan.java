@@ -130,7 +130,9 @@ public final class LoggedScan implements ScanLogEntry {
 
   /** Distance of reading {@code i} from the laser, mm (0 for no echo, NaN if damaged). */
   public double range(int i) {
-    return Math.hypot(xs[i], ys[i]);
+    double x = xs[i];
+    double y = ys[i];
+    return Math.sqrt(x * x + y * y);
   }
 
   /** Whether reading {@code i} saw something: finite and not ARIA's {@code 0 0}. */
