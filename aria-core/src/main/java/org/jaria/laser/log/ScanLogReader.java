@@ -59,6 +59,8 @@ public final class ScanLogReader implements AutoCloseable {
   private double latVel;
   private int scanId = -1;
   private boolean blockHasScan;
+  private boolean tagBlock;
+  private boolean blockOpen;
   private int scansRead;
   private ArPose robot;
   private ArPose global;
@@ -240,7 +242,7 @@ public final class ScanLogReader implements AutoCloseable {
         boolean endLine = lines.is("# End of log");
         endMarker |= endLine;
         if (!endLine && !lines.isBlankOrComment()) {
-          truncated++;
+          blockOpen = true;
         }
         resetBlock();
         finish();
@@ -265,8 +267,8 @@ public final class ScanLogReader implements AutoCloseable {
   }
 
   private void finish() {
-    if (robot != null) {
-      truncated++; // a block with a pose but no readings: the file ended inside it
+    if (blockOpen) {
+      truncated++; // a block without its readings: the file ended inside it
     }
     resetBlock();
     done = true;
@@ -288,6 +290,8 @@ public final class ScanLogReader implements AutoCloseable {
     if (lines.tagIs(t, "logTime") || lines.tagIs(t, "time")) {
       resetBlock();
       blockHasScan = false;
+      tagBlock = lines.tagIs(t, "time");
+      blockOpen = true;
       time = lines.number(lines.tag(t) + ": needs seconds as a number");
       return null;
     }
@@ -320,13 +324,17 @@ public final class ScanLogReader implements AutoCloseable {
       resetBlock();
       return null;
     }
-    if (isPoseOrReadingTag(t) || robot == null) {
-      ignored++;
+    if (isPoseOrReadingTag(t)) {
+      return null; // robotRaw:, reflector1: ...: parts of a scan this reader does not need
+    }
+    if (robot == null || !tagBlock) {
+      ignored++; // an info line, or an unknown tag inside a scan block
       return null;
     }
     ArPose p = robot;
     ArPose g = global;
     resetBlock();
+    blockOpen = false;
     if (!usable(p) || (g != null && !usable(g))) {
       badPoseScans++;
       return null;
@@ -429,6 +437,7 @@ public final class ScanLogReader implements AutoCloseable {
     scansRead++;
     resetBlock();
     blockHasScan = true;
+    blockOpen = false;
     if (!usable(p) || (g != null && !usable(g))) {
       badPoseScans++;
       return null;
