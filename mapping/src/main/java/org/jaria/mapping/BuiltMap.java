@@ -33,7 +33,8 @@ public final class BuiltMap {
    * @param matchFailures scans whose match was not convincing (placed by odometry)
    * @param poses poses of the graph
    * @param loopClosures loop closure edges
-   * @param loopsRejected loop closure attempts whose match was not convincing
+   * @param loopsRejected loop closure attempts whose match was not convincing, and loop edges
+   *     dropped because they disagreed with the rest
    * @param optimizations graph optimisations
    * @param prunedPoses poses whose points were let go (an older pose shows the same place)
    * @param noEchoReadings readings dropped at the laser's no-echo range

@@ -16,8 +16,8 @@ final class IcpMatcher {
   /** Residuals up to this are weighted fully, larger ones less (Huber), mm. */
   static final double HUBER_MM = 20;
 
-  /** A scan point within this of its partner counts as an inlier, mm. */
-  static final double INLIER_MM = 60;
+  /** A scan point within this of a reference point overlaps the reference, mm. */
+  static final double OVERLAP_MM = 250;
 
   /** Standard deviation assumed for one point's distance, mm (for the information matrix). */
   static final double POINT_SIGMA_MM = 15;
@@ -41,6 +41,15 @@ final class IcpMatcher {
   double y;
   double thDeg;
   double inlierFraction;
+
+  /**
+   * The share of the scan points near the reference (within {@link #OVERLAP_MM}) that lie on it:
+   * how well the scan fits where it overlaps the reference, whatever else it sees.
+   */
+  double overlapInliers;
+
+  /** Scan points with a reference point within {@link #OVERLAP_MM} at the result. */
+  int partnered;
   int pairs;
   int rounds;
 
@@ -96,8 +105,9 @@ final class IcpMatcher {
     x = tx;
     y = ty;
     thDeg = Math.toDegrees(tt);
-    int inliers = accumulate(ref, sx, sy, count, tx, ty, tt, INLIER_MM, true);
+    int inliers = accumulate(ref, sx, sy, count, tx, ty, tt, OVERLAP_MM, true);
     inlierFraction = count == 0 ? 0 : (double) inliers / count;
+    overlapInliers = partnered == 0 ? 0 : (double) inliers / partnered;
     double scale = 1 / (POINT_SIGMA_MM * POINT_SIGMA_MM * Math.max(1, pairs / 20.0));
     for (int k = 0; k < 6; k++) {
       info[k] = h[k] * scale;
@@ -106,7 +116,8 @@ final class IcpMatcher {
 
   /**
    * Fills h (upper triangle of J'WJ) and g (J'Wr) for the pose; returns the pairs within {@code
-   * maxDist} (also in {@link #pairs}). With {@code inliersOnly}, unweighted, for the information.
+   * maxDist} (also in {@link #pairs}). With {@code inliersOnly}: unweighted, and only pairs within
+   * 1.5 Huber widths of their surface (the inliers), for the information and the fit's quality.
    */
   private int accumulate(
       PointIndex ref,
@@ -146,6 +157,7 @@ final class IcpMatcher {
       err[k] = Double.isNaN(nx) ? Math.sqrt(ex * ex + ey * ey) : Math.abs(nx * ex + ref.ny(q) * ey);
       sorted[paired++] = err[k];
     }
+    partnered = paired;
     // the worst fifth of the pairs are most likely points the reference never saw: left out
     double limit = HUBER_MM * 1.5;
     if (!inliersOnly && paired > 10) {

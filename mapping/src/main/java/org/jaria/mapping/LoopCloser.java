@@ -15,8 +15,14 @@ import org.jaria.geom.ArPose;
  */
 final class LoopCloser {
 
-  /** A scan fits a place when this share of its points lies on the place's surfaces. */
-  static final double MIN_INLIERS = 0.6;
+  /**
+   * A scan fits a place when this share of its points near the place's points lies on the place's
+   * surfaces (what the scan sees beyond the place, seen from elsewhere, does not count against it).
+   */
+  static final double MIN_INLIERS = 0.75;
+
+  /** ... and at least this share of all its points. */
+  static final double MIN_SHARE = 0.3;
 
   /** Fewer matched points than this prove nothing. */
   static final int MIN_PAIRS = 30;
@@ -40,6 +46,7 @@ final class LoopCloser {
   private int closures;
   private int optimizations;
   private int rejected;
+  private int dropped;
 
   LoopCloser(MapBuilderParams params) {
     this.params = params;
@@ -55,6 +62,11 @@ final class LoopCloser {
 
   int rejected() {
     return rejected;
+  }
+
+  /** Loop edges dropped because they disagreed with the rest of the graph. */
+  int dropped() {
+    return dropped;
   }
 
   /**
@@ -122,7 +134,8 @@ final class LoopCloser {
   }
 
   private boolean fits(ArPose est, double radius) {
-    return icp.inlierFraction >= MIN_INLIERS
+    return icp.overlapInliers >= MIN_INLIERS
+        && icp.inlierFraction >= MIN_SHARE
         && icp.pairs >= MIN_PAIRS
         && Math.hypot(icp.x - est.x(), icp.y - est.y()) <= radius;
   }
@@ -130,10 +143,7 @@ final class LoopCloser {
   /** Optimises the graph, dropping loop edges that disagree with everything else. */
   void optimize(Nodes nodes) {
     optimizations++;
-    nodes.graph.optimize(15);
-    if (nodes.graph.dropDisagreeingLoops(MAX_LOOP_CHI2) > 0) {
-      nodes.graph.optimize(15);
-    }
+    dropped += nodes.graph.optimizeDroppingOutliers(15, MAX_LOOP_CHI2);
   }
 
   /**

@@ -344,7 +344,7 @@ public final class MapBuilder {
             matchFailures,
             nodes.size(),
             loops.closures(),
-            loops.rejected(),
+            loops.rejected() + loops.dropped(),
             loops.optimizations(),
             pruned,
             noEcho.dropped(),

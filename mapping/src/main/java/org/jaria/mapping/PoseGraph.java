@@ -147,24 +147,45 @@ final class PoseGraph {
     return eloop[k];
   }
 
-  /** Removes loop edges whose weighted error exceeds {@code maxChi2}; returns how many. */
-  int dropDisagreeingLoops(double maxChi2) {
-    int kept = 0;
+  /**
+   * Optimises, then drops the loop edge that disagrees most with the rest (weighted squared error
+   * above {@code maxChi2}) and optimises again, until every loop edge agrees: one false
+   * recognition must not bend the whole map, and dropping the worst one first keeps the true
+   * edges it had bent.
+   *
+   * @return how many loop edges were dropped
+   */
+  int optimizeDroppingOutliers(int iterations, double maxChi2) {
     int dropped = 0;
-    for (int k = 0; k < edges; k++) {
-      if (eloop[k] && chi2(k) > maxChi2) {
-        dropped++;
-        continue;
+    optimize(iterations);
+    for (int round = 0; round < 20; round++) {
+      int worst = -1;
+      double worstChi2 = maxChi2;
+      for (int k = 0; k < edges; k++) {
+        double c = eloop[k] ? chi2(k) : 0;
+        if (c > worstChi2) {
+          worstChi2 = c;
+          worst = k;
+        }
       }
-      ei[kept] = ei[k];
-      ej[kept] = ej[k];
-      System.arraycopy(ez, k * 3, ez, kept * 3, 3);
-      System.arraycopy(einfo, k * 6, einfo, kept * 6, 6);
-      eloop[kept] = eloop[k];
-      kept++;
+      if (worst < 0) {
+        break;
+      }
+      removeEdge(worst);
+      dropped++;
+      optimize(iterations);
     }
-    edges = kept;
     return dropped;
+  }
+
+  private void removeEdge(int k) {
+    int last = edges - 1;
+    ei[k] = ei[last];
+    ej[k] = ej[last];
+    System.arraycopy(ez, last * 3, ez, k * 3, 3);
+    System.arraycopy(einfo, last * 6, einfo, k * 6, 6);
+    eloop[k] = eloop[last];
+    edges--;
   }
 
   static double wrap(double a) {

@@ -212,6 +212,53 @@ class ExperimentTest {
     }
   }
 
+  @Test
+  void recordFixture() throws Exception {
+    ArMap office = ArMap.loadBundled("office");
+    List<ArPose> route =
+        List.of(
+            new ArPose(9000, 9500),
+            new ArPose(9000, 12000),
+            new ArPose(9000, 9500),
+            new ArPose(2500, 9500));
+    SimDrive.Result r =
+        SimDrive.record(office, 3, OdometryError.random(0.02, 0.02),
+            office.findHomePose().orElseThrow(), route, 500);
+    java.nio.file.Path dir = java.nio.file.Path.of("src/test/resources/org/jaria/mapping");
+    java.nio.file.Files.writeString(dir.resolve("office-room.2d"), r.log());
+    StringBuilder sb = new StringBuilder("# scanId x y th: the true pose of the laser at each scan\n");
+    for (int i = 0; i < r.truth().size(); i++) {
+      ArPose t = r.truth().get(i);
+      sb.append(String.format(java.util.Locale.ROOT, "%d %.1f %.1f %.3f%n", i, t.x(), t.y(), t.th()));
+    }
+    java.nio.file.Files.writeString(dir.resolve("office-room.truth"), sb.toString());
+    System.out.println("fixture " + r.truth().size() + " scans, mismatched " + r.mismatched());
+  }
+
+  @Test
+  void fixture() throws Exception {
+    BuiltMap m = MapBuilderTest.build(MapBuilderTest.resource("office-room.2d"));
+    List<ArPose> truth = MapBuilderTest.truth("office-room.truth");
+    ArPose t = MapQuality.toTruth(m, truth, MapBuilderTest.MOUNT);
+    System.out.println(MapQuality.pathError(m, truth, MapBuilderTest.MOUNT) + " " + m.stats().summary());
+    ArMap office = ArMap.loadBundled("office");
+    int far = 0;
+    for (int i = 0; i < m.pointCount(); i++) {
+      ArPose p = Poses.compose(t, new ArPose(m.x(i), m.y(i)));
+      double best = Double.MAX_VALUE;
+      for (ArLineSegment l : office.getLines()) {
+        best = Math.min(best, dist(l, p.x(), p.y()));
+      }
+      for (int k = 0; k < office.getPoints().size(); k++) {
+        best = Math.min(best, Math.hypot(office.getPoints().x(k) - p.x(), office.getPoints().y(k) - p.y()));
+      }
+      if (best > 50 && far++ % 20 == 0) {
+        System.out.printf("far %.0f %.0f (%.0f)%n", p.x(), p.y(), best);
+      }
+    }
+    System.out.println("far " + far + " of " + m.pointCount());
+  }
+
   static double dist(ArLineSegment l, double x, double y) {
     double dx = l.x2() - l.x1();
     double dy = l.y2() - l.y1();
