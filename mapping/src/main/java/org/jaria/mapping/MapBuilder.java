@@ -38,6 +38,12 @@ public final class MapBuilder {
   /** A scan with fewer match points than this is not matched (its pose comes from odometry). */
   static final int MIN_MATCH_POINTS = 10;
 
+  /** A match from the guess this good (share of overlapping points on a surface) is kept. */
+  static final double GOOD_FIT = 0.85;
+
+  /** Less translation than this since the last pose is a turn on the spot, mm. */
+  static final double SPOT_MM = 40;
+
   /** The robot counts as having moved once it is this far from its first pose, mm. */
   static final double MOVED_MM = 100;
 
@@ -71,6 +77,7 @@ public final class MapBuilder {
   private long matchFailures;
   private long pruned;
   private boolean matched;
+  private long searches;
   private long timeMatch;
   private long timeLoops;
   private long timeLocal;
@@ -166,6 +173,9 @@ public final class MapBuilder {
    * window and the pull towards the guess follow the motion.
    */
   private ArPose match(ArPose guess, ScanPoints pts, double moved, double turned) {
+    // Turning on the spot: the wheels' error moves the robot by millimetres at most, while the
+    // view swings past doorways whose sides alone would place it; keep the position.
+    boolean spot = moved < SPOT_MM;
     local.clear();
     int newest = nodes.size() - 1;
     double from = nodes.travel(newest) - params.localWindowMm();
@@ -175,20 +185,25 @@ public final class MapBuilder {
     long tl = System.nanoTime();
     local.build();
     timeLocal += System.nanoTime() - tl;
-    nearby.search(
-        local,
-        pts.kx,
-        pts.ky,
-        pts.matchCount,
-        guess.x(),
-        guess.y(),
-        guess.th(),
-        40 + 0.3 * moved,
-        2 + 0.15 * turned);
-    icp.setPrior(30 + 0.1 * moved, 1 + 0.1 * turned);
-    icp.match(local, pts.kx, pts.ky, pts.matchCount, nearby.x, nearby.y, nearby.thDeg);
+    icp.setPrior(spot ? 5 : 30 + 0.1 * moved, 1 + 0.1 * turned);
+    icp.match(local, pts.kx, pts.ky, pts.matchCount, guess.x(), guess.y(), guess.th());
+    if (icp.overlapInliers < GOOD_FIT || icp.inlierFraction < 0.5) {
+      // a poor fit from the guess: search around it for a better start
+      nearby.search(
+          local,
+          pts.kx,
+          pts.ky,
+          pts.matchCount,
+          guess.x(),
+          guess.y(),
+          guess.th(),
+          spot ? 10 : 40 + 0.3 * moved,
+          2 + 0.15 * turned);
+      icp.match(local, pts.kx, pts.ky, pts.matchCount, nearby.x, nearby.y, nearby.thDeg);
+      searches++;
+    }
     ArPose est = new ArPose(icp.x, icp.y, icp.thDeg);
-    if (DEBUG && scansRead < 0) {
+    if (DEBUG) {
       System.out.printf(
           "scan %d guess %s corr %.1f %.1f %.2f (%.2f) icp %s inl %.2f pairs %d/%d%n",
           scansRead - 1,
