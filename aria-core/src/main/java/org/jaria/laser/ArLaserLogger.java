@@ -31,10 +31,10 @@ import org.slf4j.LoggerFactory;
 /**
  * Writes a laser scan log ({@code .2d}) while the robot drives (ARIA's {@code ArLaserLogger}, the
  * heart of {@code sickLogger}): every time the robot has moved {@code distDiff} mm or turned {@code
- * degDiff} degrees since the last logged scan, the latest sweep is written with the robot's pose, in
- * ARIA's format ({@link ScanLogWriter}), so ARIA's tools and JAria's map builder read it. Goals can
- * be placed on the way ({@link #addGoal()}, the {@code g} key, the robot's joystick button); they
- * become goals of the built map. Readings are written as {@code scan1:} points only (ARIA's
+ * degDiff} degrees since the last logged scan, the latest sweep is written with the robot's pose,
+ * in ARIA's format ({@link ScanLogWriter}), so ARIA's tools and JAria's map builder read it. Goals
+ * can be placed on the way ({@link #addGoal()}, the {@code g} key, the robot's joystick button);
+ * they become goals of the built map. Readings are written as {@code scan1:} points only (ARIA's
  * optional old {@code sick1:} range lines are not written; the reader reads them in old logs).
  *
  * <p>Three lines in a program whose robot has a laser:
@@ -413,7 +413,8 @@ public class ArLaserLogger implements AutoCloseable {
   static ArPose compose(ArPose a, ArPose b) {
     double c = Math.cos(a.getThRad());
     double s = Math.sin(a.getThRad());
-    return new ArPose(a.x() + c * b.x() - s * b.y(), a.y() + s * b.x() + c * b.y(), a.th() + b.th());
+    return new ArPose(
+        a.x() + c * b.x() - s * b.y(), a.y() + s * b.x() + c * b.y(), a.th() + b.th());
   }
 
   static ArPose inverse(ArPose a) {

@@ -15,11 +15,11 @@ import org.jaria.map.ArMapObject;
 import org.jaria.map.MapFormatException;
 
 /**
- * A map built from a scan log: points thinned to the resolution, lines along the walls, the
- * robot's start as RobotHome and the goals logged on the way, in the log's own frame; plus the
- * corrected path and what the build did ({@link Stats}). {@link #writeFile} writes an ARIA {@code
- * .map} ({@link MapFileWriter}); {@link #toArMap()} gives it as an {@link ArMap} for localization,
- * path planning or the editor.
+ * A map built from a scan log: points thinned to the resolution, lines along the walls, the robot's
+ * start as RobotHome and the goals logged on the way, in the log's own frame; plus the corrected
+ * path and what the build did ({@link Stats}). {@link #writeFile} writes an ARIA {@code .map}
+ * ({@link MapFileWriter}); {@link #toArMap()} gives it as an {@link ArMap} for localization, path
+ * planning or the editor.
  */
 public final class BuiltMap {
 

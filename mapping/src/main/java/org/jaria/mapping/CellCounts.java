@@ -3,9 +3,9 @@ package org.jaria.mapping;
 import java.util.Arrays;
 
 /**
- * Counts per grid cell in an open-addressing hash table of primitive arrays: which cells of a
- * fine grid were hit, and how often, without a grid spanning the whole (possibly huge) map and
- * without an object per cell. Keys are cell coordinates packed into a long.
+ * Counts per grid cell in an open-addressing hash table of primitive arrays: which cells of a fine
+ * grid were hit, and how often, without a grid spanning the whole (possibly huge) map and without
+ * an object per cell. Keys are cell coordinates packed into a long.
  *
  * <p>Not thread-safe.
  */

@@ -12,8 +12,8 @@ import org.jaria.geom.ArMath;
  * metres and tens of degrees (100 mm, 2 degrees, then 40 mm, 0.5 degrees); each scan's own match
  * searches a few centimetres (50 mm, 1 degree, then 20 mm, 0.5 degrees).
  *
- * <p>Scores are read from rasters of the reference (a cell holding a point scores 2, its
- * neighbours 1) of primitive arrays, reused between searches. Not thread-safe.
+ * <p>Scores are read from rasters of the reference (a cell holding a point scores 2, its neighbours
+ * 1) of primitive arrays, reused between searches. Not thread-safe.
  */
 final class CorrelativeSearch {
 
@@ -87,9 +87,7 @@ final class CorrelativeSearch {
       reach = Math.max(reach, sx[i] * sx[i] + sy[i] * sy[i]);
     }
     double grow =
-        radius
-            + Math.sqrt(reach) * Math.toRadians(angleWindow + coarseAngle)
-            + 2 * coarseStep;
+        radius + Math.sqrt(reach) * Math.toRadians(angleWindow + coarseAngle) + 2 * coarseStep;
     coarse.build(ref, bx0 - grow, by0 - grow, bx1 + grow, by1 + grow);
     fine.build(ref, bx0 - grow, by0 - grow, bx1 + grow, by1 + grow);
     if (rx.length < n) {

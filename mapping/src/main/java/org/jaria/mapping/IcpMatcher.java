@@ -50,6 +50,7 @@ final class IcpMatcher {
 
   /** Scan points with a reference point within {@link #OVERLAP_MM} at the result. */
   int partnered;
+
   int pairs;
   int rounds;
 

@@ -10,9 +10,8 @@ import org.jaria.geom.ArLineSegment;
 /**
  * Fits the map's LINES to the walls: each scan's points (in sweep order, placed by its corrected
  * pose) are cut where they jump, then split where they bend (split-and-merge) into straight runs;
- * runs of all scans that lie on one wall are merged into one line (a least-squares fit through
- * all their points, spanning all of them). What SonARNL's sonar model and the editor see as
- * walls.
+ * runs of all scans that lie on one wall are merged into one line (a least-squares fit through all
+ * their points, spanning all of them). What SonARNL's sonar model and the editor see as walls.
  */
 final class LineFitter {
 

@@ -3,12 +3,12 @@ package org.jaria.mapping;
 import org.jaria.geom.ArPose;
 
 /**
- * Recognises a place seen long before: when the robot comes within the search radius of a pose
- * it left at least {@code loopMinTravelMm} of driving ago, its scan is matched against the points
- * of the old poses around there. If the scan fits well, an edge "this pose, seen from that old
- * one" joins the graph, and when it disagrees with the current estimates the graph is optimised,
- * which straightens the whole loop. A fit is tried from the current estimate first (cheap, and
- * enough once the loop has been closed); otherwise by a correlative search over the radius.
+ * Recognises a place seen long before: when the robot comes within the search radius of a pose it
+ * left at least {@code loopMinTravelMm} of driving ago, its scan is matched against the points of
+ * the old poses around there. If the scan fits well, an edge "this pose, seen from that old one"
+ * joins the graph, and when it disagrees with the current estimates the graph is optimised, which
+ * straightens the whole loop. A fit is tried from the current estimate first (cheap, and enough
+ * once the loop has been closed); otherwise by a correlative search over the radius.
  *
  * <p>The search radius grows with the driving since the last closure, as odometry and matching
  * errors do. Not thread-safe.
@@ -80,7 +80,8 @@ final class LoopCloser {
     }
     double driven = nodes.travel(i) - travelAtLastClosure;
     double radius =
-        Math.min(MAX_RADIUS_MM, params.loopSearchMm() + params.loopSearchPerMetre() * driven / 1000);
+        Math.min(
+            MAX_RADIUS_MM, params.loopSearchMm() + params.loopSearchPerMetre() * driven / 1000);
     int best = -1;
     double bestD = radius * radius;
     double oldest = nodes.travel(i) - params.loopMinTravelMm();
@@ -112,8 +113,7 @@ final class LoopCloser {
     boolean ok = fits(est, radius);
     if (!ok) {
       double window = Math.min(20, 4 + 0.25 * driven / 1000);
-      search.search(
-          place, p.kx, p.ky, p.matchCount, est.x(), est.y(), est.th(), radius, window);
+      search.search(place, p.kx, p.ky, p.matchCount, est.x(), est.y(), est.th(), radius, window);
       icp.match(place, p.kx, p.ky, p.matchCount, search.x, search.y, search.thDeg);
       ok = fits(est, radius + 200);
     }
@@ -123,7 +123,8 @@ final class LoopCloser {
     }
     ArPose matched = new ArPose(icp.x, icp.y, icp.thDeg);
     ArPose rel = Poses.between(nodes.estimate(best), matched);
-    nodes.graph.addEdge(best, i, rel.x(), rel.y(), rel.th(), MapBuilder.toGraphInfo(icp.info), true);
+    nodes.graph.addEdge(
+        best, i, rel.x(), rel.y(), rel.th(), MapBuilder.toGraphInfo(icp.info), true);
     closures++;
     travelAtLastClosure = nodes.travel(i);
     if (matched.findDistanceTo(est) > OPTIMIZE_MM

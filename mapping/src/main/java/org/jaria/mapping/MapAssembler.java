@@ -9,9 +9,9 @@ import org.jaria.laser.log.LogTag;
 import org.jaria.map.ArMapObject;
 
 /**
- * Turns the optimised graph into a map: every pose's points placed by its estimate and thinned
- * to one per map cell (a cell hit by a single reading with no hit around it is dropped as noise),
- * the walls' lines, the start as RobotHome and the logged goals.
+ * Turns the optimised graph into a map: every pose's points placed by its estimate and thinned to
+ * one per map cell (a cell hit by a single reading with no hit around it is dropped as noise), the
+ * walls' lines, the start as RobotHome and the logged goals.
  */
 final class MapAssembler {
 

@@ -30,8 +30,8 @@ import org.jaria.laser.log.ScanLogHeader;
  * in a monitor). Memory grows with the area mapped, not with the log's length: once a pose leaves
  * the local window, its points are let go if an older pose shows the same place.
  *
- * <p>Not thread-safe: one thread adds scans; another thread that wants progress or a snapshot
- * must synchronise with it (or ask between scans).
+ * <p>Not thread-safe: one thread adds scans; another thread that wants progress or a snapshot must
+ * synchronise with it (or ask between scans).
  */
 public final class MapBuilder {
 
@@ -306,8 +306,8 @@ public final class MapBuilder {
   }
 
   /**
-   * Optimises the whole graph and assembles the map: points thinned to the resolution, lines
-   * fitted to the walls, the robot's start as RobotHome, goals logged on the way.
+   * Optimises the whole graph and assembles the map: points thinned to the resolution, lines fitted
+   * to the walls, the robot's start as RobotHome, goals logged on the way.
    *
    * @throws MapBuildException if the log had no usable laser scans or the robot never moved
    */

@@ -5,10 +5,10 @@ import org.jaria.laser.log.LoggedScan;
 /**
  * Recognises readings at a laser's "no echo" range. A laser that saw nothing reports its maximum
  * range (a simulator may too), and a logger that does not know that writes a phantom point there;
- * such points draw a false circle of walls around every scan. A real wall almost never gives
- * five readings of one sweep at the very same farthest range, so when at least {@link
- * #MIN_SAME} readings lie within {@link #TOLERANCE_MM} of the sweep's farthest one, that range is
- * taken as the laser's no-echo range, and from then on every reading at or beyond it is dropped.
+ * such points draw a false circle of walls around every scan. A real wall almost never gives five
+ * readings of one sweep at the very same farthest range, so when at least {@link #MIN_SAME}
+ * readings lie within {@link #TOLERANCE_MM} of the sweep's farthest one, that range is taken as the
+ * laser's no-echo range, and from then on every reading at or beyond it is dropped.
  *
  * <p>Not thread-safe: one per log.
  */
@@ -22,8 +22,8 @@ final class NoEchoFilter {
 
   /**
    * This many readings at the farthest range reveal a no-echo range. A flat wall cannot do that
-   * beyond 3 m: five beams 1 degree apart span 4 degrees, and the outer ones reach a wall 3 m
-   * away (beyond {@link #MIN_NO_ECHO_MM}) 7 mm farther than the middle one.
+   * beyond 3 m: five beams 1 degree apart span 4 degrees, and the outer ones reach a wall 3 m away
+   * (beyond {@link #MIN_NO_ECHO_MM}) 7 mm farther than the middle one.
    */
   static final int MIN_SAME = 5;
 

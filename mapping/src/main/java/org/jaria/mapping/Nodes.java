@@ -6,10 +6,10 @@ import java.util.List;
 import org.jaria.geom.ArPose;
 
 /**
- * The poses of the pose graph and what each keeps: the log's odometry pose, the distance driven
- * to it, and its scan's points (until they are let go as redundant). The pose estimates live in
- * the {@link PoseGraph}; this class adds what the builder needs beside them. Primitive arrays,
- * grown by doubling.
+ * The poses of the pose graph and what each keeps: the log's odometry pose, the distance driven to
+ * it, and its scan's points (until they are let go as redundant). The pose estimates live in the
+ * {@link PoseGraph}; this class adds what the builder needs beside them. Primitive arrays, grown by
+ * doubling.
  */
 final class Nodes {
 

@@ -6,13 +6,14 @@ import java.util.Arrays;
  * Reference points bucketed in a uniform grid for nearest-neighbour look-ups: what a scan is
  * matched against. Points are added in the map frame; a point closer than {@link #DEDUP_MM} to one
  * already there is skipped, so overlapping scans of the same wall do not pile up. {@link #build()}
- * also lets each point's surface normal be estimated (when first asked for) from its neighbours within {@link #NORMAL_RADIUS_MM}
- * (a line fitted through them, so the many scans of a wall give a steady normal). Where they do
- * not lie on a line (a corner) {@link #nx} is NaN and the point is matched point to point; a point
- * with too few neighbours (far along a wall, where the readings are sparse) takes the normal of
- * the line to its nearest neighbour, as its position along the wall is mere sampling; with none
- * within half a metre it has NaN for both and is not matched. Built anew for each match from primitive arrays that are reused, so a build allocates
- * nothing once the arrays have grown.
+ * also lets each point's surface normal be estimated (when first asked for) from its neighbours
+ * within {@link #NORMAL_RADIUS_MM} (a line fitted through them, so the many scans of a wall give a
+ * steady normal). Where they do not lie on a line (a corner) {@link #nx} is NaN and the point is
+ * matched point to point; a point with too few neighbours (far along a wall, where the readings are
+ * sparse) takes the normal of the line to its nearest neighbour, as its position along the wall is
+ * mere sampling; with none within half a metre it has NaN for both and is not matched. Built anew
+ * for each match from primitive arrays that are reused, so a build allocates nothing once the
+ * arrays have grown.
  *
  * <p>Not thread-safe.
  */

@@ -20,9 +20,9 @@ import org.ejml.sparse.csc.factory.LinearSolverFactory_DSCC;
  *
  * <p>Units inside are metres and radians, so position and angle errors have similar sizes; the
  * accessors take and give millimetres and degrees like the rest of ARIA. The first pose is held
- * fixed (the log's own frame). The normal equations are sparse (a pose touches only its
- * neighbours in the graph) and are solved with EJML's sparse Cholesky factorisation. Poses are
- * numbered in the order they are added, so the matrix is banded apart from the loop closures.
+ * fixed (the log's own frame). The normal equations are sparse (a pose touches only its neighbours
+ * in the graph) and are solved with EJML's sparse Cholesky factorisation. Poses are numbered in the
+ * order they are added, so the matrix is banded apart from the loop closures.
  *
  * <p>Not thread-safe.
  */
@@ -149,9 +149,8 @@ final class PoseGraph {
 
   /**
    * Optimises, then drops the loop edge that disagrees most with the rest (weighted squared error
-   * above {@code maxChi2}) and optimises again, until every loop edge agrees: one false
-   * recognition must not bend the whole map, and dropping the worst one first keeps the true
-   * edges it had bent.
+   * above {@code maxChi2}) and optimises again, until every loop edge agrees: one false recognition
+   * must not bend the whole map, and dropping the worst one first keeps the true edges it had bent.
    *
    * @return how many loop edges were dropped
    */

@@ -11,7 +11,8 @@ final class Poses {
   static ArPose compose(ArPose a, ArPose b) {
     double c = Math.cos(a.getThRad());
     double s = Math.sin(a.getThRad());
-    return new ArPose(a.x() + c * b.x() - s * b.y(), a.y() + s * b.x() + c * b.y(), a.th() + b.th());
+    return new ArPose(
+        a.x() + c * b.x() - s * b.y(), a.y() + s * b.x() + c * b.y(), a.th() + b.th());
   }
 
   /** The pose that undoes {@code a}. */

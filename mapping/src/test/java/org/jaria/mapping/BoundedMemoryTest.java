@@ -3,11 +3,11 @@ package org.jaria.mapping;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.SplittableRandom;
+import java.util.concurrent.TimeUnit;
 import org.jaria.geom.ArPose;
 import org.jaria.laser.log.LoggedScan;
 import org.jaria.laser.log.ScanLogHeader;
 import org.junit.jupiter.api.Tag;
-import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -22,9 +22,16 @@ class BoundedMemoryTest {
 
   /** The ring: outer walls 12 x 9 m, a central block 8 x 5 m; corridors 2 m wide. */
   private static final double[][] WALLS = {
-    {0, 0, 12000, 0}, {12000, 0, 12000, 9000}, {12000, 9000, 0, 9000}, {0, 9000, 0, 0},
-    {2000, 2000, 10000, 2000}, {10000, 2000, 10000, 7000}, {10000, 7000, 2000, 7000},
-    {2000, 7000, 2000, 2000}, {5000, 0, 5000, 600}, {7000, 9000, 7000, 8300}
+    {0, 0, 12000, 0},
+    {12000, 0, 12000, 9000},
+    {12000, 9000, 0, 9000},
+    {0, 9000, 0, 0},
+    {2000, 2000, 10000, 2000},
+    {10000, 2000, 10000, 7000},
+    {10000, 7000, 2000, 7000},
+    {2000, 7000, 2000, 2000},
+    {5000, 0, 5000, 600},
+    {7000, 9000, 7000, 8300}
   };
 
   /** The lap's corners, in the middle of the corridors. */

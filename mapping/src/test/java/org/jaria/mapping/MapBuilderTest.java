@@ -41,7 +41,8 @@ class MapBuilderTest {
       if (!line.startsWith("#") && !line.isBlank()) {
         String[] w = line.trim().split("\\s+");
         out.add(
-            new ArPose(Double.parseDouble(w[1]), Double.parseDouble(w[2]), Double.parseDouble(w[3])));
+            new ArPose(
+                Double.parseDouble(w[1]), Double.parseDouble(w[2]), Double.parseDouble(w[3])));
       }
     }
     return out;

@@ -7,9 +7,9 @@ import org.jaria.map.ArMap;
 import org.jaria.map.ArMapPoints;
 
 /**
- * How well a built map and path agree with the truth: the path's error against the true laser
- * poses (the built frame placed on the true one by the first pose, as the builder keeps the log's
- * frame), and the share of built points near a true wall.
+ * How well a built map and path agree with the truth: the path's error against the true laser poses
+ * (the built frame placed on the true one by the first pose, as the builder keeps the log's frame),
+ * and the share of built points near a true wall.
  */
 final class MapQuality {
 

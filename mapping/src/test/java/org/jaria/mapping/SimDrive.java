@@ -28,8 +28,8 @@ final class SimDrive {
 
   /**
    * A recorded log and the true pose of the laser at each of its scans (the laser's, not the
-   * robot's: the simulator may mount the laser elsewhere than the robot's parameter file says,
-   * as MobileSim does, and only the laser's pose is observed).
+   * robot's: the simulator may mount the laser elsewhere than the robot's parameter file says, as
+   * MobileSim does, and only the laser's pose is observed).
    */
   record Result(String log, List<ArPose> truth, int mismatched) {}
 

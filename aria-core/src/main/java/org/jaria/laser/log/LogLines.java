@@ -5,8 +5,8 @@ import java.io.Reader;
 
 /**
  * The lines of a scan log, one at a time, in a reused character buffer: no string or object per
- * line or per number, and a line longer than {@link #MAX_LINE} characters is an error rather than
- * a reason to fill the memory. Numbers are parsed straight from the buffer.
+ * line or per number, and a line longer than {@link #MAX_LINE} characters is an error rather than a
+ * reason to fill the memory. Numbers are parsed straight from the buffer.
  */
 final class LogLines {
 
@@ -163,8 +163,8 @@ final class LogLines {
   }
 
   /**
-   * The length of the current line's tag (the text before its first colon, with no space in it),
-   * or -1 if the line has none; the value position is set after the colon.
+   * The length of the current line's tag (the text before its first colon, with no space in it), or
+   * -1 if the line has none; the value position is set after the colon.
    */
   int tagLength() {
     for (int i = 0; i < len; i++) {
@@ -212,8 +212,8 @@ final class LogLines {
   }
 
   /**
-   * The next number of the line; NaN for {@code nan}, {@code inf} and their spellings (C's
-   * {@code printf} writes those for damaged values).
+   * The next number of the line; NaN for {@code nan}, {@code inf} and their spellings (C's {@code
+   * printf} writes those for damaged values).
    *
    * @throws ScanLogFormatException if the next word is no number ({@code what} says what was
    *     expected)

@@ -7,10 +7,10 @@ import java.util.Optional;
 import org.jaria.geom.ArPose;
 
 /**
- * A tag logged at a moment of the drive, with the robot's pose then: most often a goal placed
- * while driving ({@code cairn: GoalWithHeading "" ICON_GOALWITHHEADING "goal1"}), which a map
- * builder turns into a goal of the map; also {@code loop: start 1} and tags a program adds with
- * {@code addTagToLog}.
+ * A tag logged at a moment of the drive, with the robot's pose then: most often a goal placed while
+ * driving ({@code cairn: GoalWithHeading "" ICON_GOALWITHHEADING "goal1"}), which a map builder
+ * turns into a goal of the map; also {@code loop: start 1} and tags a program adds with {@code
+ * addTagToLog}.
  *
  * @param time seconds since logging started
  * @param robotPose the robot's odometry pose at the tag

@@ -6,8 +6,8 @@ import java.util.Optional;
 import org.jaria.geom.ArPose;
 
 /**
- * One laser sweep of a scan log with the robot's pose when it was taken. Readings are points in
- * the laser's own frame (x ahead of the laser, y to its left, mm) in sweep order; a reading with no
+ * One laser sweep of a scan log with the robot's pose when it was taken. Readings are points in the
+ * laser's own frame (x ahead of the laser, y to its left, mm) in sweep order; a reading with no
  * echo is {@code (0, 0)} as ARIA writes it, and a value the log spelled as {@code nan} or {@code
  * inf}, or beyond a kilometre, is kept as NaN so it counts as no echo too ({@link #hasEcho}).
  * Immutable.

@@ -3,8 +3,8 @@ package org.jaria.laser.log;
 import java.io.IOException;
 
 /**
- * A scan log that cannot be read as one: the message names the file, the line and what was
- * expected there, e.g. {@code lab.2d line 57: robot: needs X Y TH as numbers, found 'abc'}.
+ * A scan log that cannot be read as one: the message names the file, the line and what was expected
+ * there, e.g. {@code lab.2d line 57: robot: needs X Y TH as numbers, found 'abc'}.
  */
 public final class ScanLogFormatException extends IOException {
 

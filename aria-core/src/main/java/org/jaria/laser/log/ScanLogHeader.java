@@ -43,7 +43,8 @@ public record ScanLogHeader(
 
   /**
    * The header ARIA writes for a laser mounted at {@code laserPose} sweeping {@code firstAngle} to
-   * {@code lastAngle} in {@code readingCount} readings (version 4, poses {@code robot robotGlobal}).
+   * {@code lastAngle} in {@code readingCount} readings (version 4, poses {@code robot
+   * robotGlobal}).
    */
   public static ScanLogHeader of(
       ArPose laserPose, double firstAngle, double lastAngle, int readingCount, String laserName) {

@@ -30,10 +30,10 @@ import org.jaria.geom.ArPose;
  *
  * <p>What is wrong in a log is either an error that names the line and what was expected ({@link
  * ScanLogFormatException}: a value that is no number, a scan with an odd number of coordinates, a
- * scan before any robot pose, binary data, a line of megabytes) or a counted skip ({@link #stats()}:
- * {@code nan} and {@code inf} readings, a damaged pose, time going backwards, a scan cut off by the
- * end of the file, a second laser's scans, unknown tags). Tags the reader does not know are
- * ignored, as ARIA's documentation of the format asks.
+ * scan before any robot pose, binary data, a line of megabytes) or a counted skip ({@link
+ * #stats()}: {@code nan} and {@code inf} readings, a damaged pose, time going backwards, a scan cut
+ * off by the end of the file, a second laser's scans, unknown tags). Tags the reader does not know
+ * are ignored, as ARIA's documentation of the format asks.
  *
  * <p>Not thread-safe: one thread reads.
  */

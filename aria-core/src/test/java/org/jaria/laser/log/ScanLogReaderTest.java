@@ -160,7 +160,9 @@ class ScanLogReaderTest {
   @Test
   void aScanWithADamagedPoseIsSkippedAndCounted() throws IOException {
     String log =
-        HEADER + scan(0, 0.1, 0, "1 2  ").replace("robot: 0 0", "robot: nan 0") + scan(1, 0.2, 5, "3 4  ");
+        HEADER
+            + scan(0, 0.1, 0, "1 2  ").replace("robot: 0 0", "robot: nan 0")
+            + scan(1, 0.2, 5, "3 4  ");
     try (ScanLogReader r = reader(log)) {
       LoggedScan s = assertInstanceOf(LoggedScan.class, r.next());
       assertEquals(1, s.id());
@@ -182,7 +184,9 @@ class ScanLogReaderTest {
     String whole = HEADER + scan(0, 0.1, 0, "1 2  3 4  ") + scan(1, 0.2, 5, "5 6  7 8  ");
     // cut inside the last readings line (no line feed after it), and inside the last block
     for (String cut :
-        List.of(whole.substring(0, whole.length() - 4), whole.substring(0, whole.indexOf("scanId: 1")))) {
+        List.of(
+            whole.substring(0, whole.length() - 4),
+            whole.substring(0, whole.indexOf("scanId: 1")))) {
       try (ScanLogReader r = reader(cut)) {
         assertEquals(1, r.readAll().size(), cut);
         assertEquals(1, r.stats().truncatedScans(), cut);
@@ -197,7 +201,8 @@ class ScanLogReaderTest {
         HEADER
             + "loop: start 1\n"
             + scan(0, 0.1, 0, "1 2  ").replace("scan1:", "scan2:")
-            + scan(1, 0.2, 0, "1 2  ").replace("robotGlobal", "robotRaw: 1 2 3\nfoo: bar\nrobotGlobal");
+            + scan(1, 0.2, 0, "1 2  ")
+                .replace("robotGlobal", "robotRaw: 1 2 3\nfoo: bar\nrobotGlobal");
     try (ScanLogReader r = reader(log)) {
       assertEquals(1, r.readAll().size());
       assertEquals(1, r.stats().otherLaserScans());
@@ -224,7 +229,8 @@ class ScanLogReaderTest {
 
   @Test
   void numbersParseAsCPrintfWritesThem() throws IOException {
-    LogLines l = new LogLines(new StringReader("x: 12 -3.25 1e3 +0.5 .5 -0 nan -nan inf 7.000001\n"), "t");
+    LogLines l =
+        new LogLines(new StringReader("x: 12 -3.25 1e3 +0.5 .5 -0 nan -nan inf 7.000001\n"), "t");
     assertTrue(l.next());
     l.tagLength();
     double[] want = {12, -3.25, 1000, 0.5, 0.5, -0.0, Double.NaN, Double.NaN, Double.NaN, 7.000001};

@@ -92,11 +92,25 @@ class ScanLogWriterTest {
     ScanLogHeader h = ScanLogHeader.of(new ArPose(160, 7, 0), -90, 90, 2, "sim_lms2xx_1");
     LoggedScan a =
         new LoggedScan(
-            0, 0.1, 0, 0, 0, new ArPose(1, 2, 3), new ArPose(4, 5, 6), new double[] {1, 2},
+            0,
+            0.1,
+            0,
+            0,
+            0,
+            new ArPose(1, 2, 3),
+            new ArPose(4, 5, 6),
+            new double[] {1, 2},
             new double[] {3, 4});
     LoggedScan b =
         new LoggedScan(
-            1, 0.4, 100, 5, 0, new ArPose(301, 2, 3), new ArPose(304, 5, 6), new double[] {7, 8},
+            1,
+            0.4,
+            100,
+            5,
+            0,
+            new ArPose(301, 2, 3),
+            new ArPose(304, 5, 6),
+            new double[] {7, 8},
             new double[] {-3, 4});
     String text = write(h, a, b);
     try (ScanLogReader r = new ScanLogReader(new StringReader(text), "t")) {
@@ -109,8 +123,7 @@ class ScanLogWriterTest {
   @Test
   void aScanBeforeTheHeaderIsRefused() {
     ScanLogWriter w = new ScanLogWriter(new StringWriter());
-    LoggedScan s =
-        new LoggedScan(0, 0, 0, 0, 0, ArPose.ORIGIN, null, new double[0], new double[0]);
+    LoggedScan s = new LoggedScan(0, 0, 0, 0, 0, ArPose.ORIGIN, null, new double[0], new double[0]);
     assertThrows(IllegalStateException.class, () -> w.writeScan(s));
   }
 }

@@ -18,7 +18,8 @@ public final class MappingSample {
   private MappingSample() {}
 
   /** Logs while {@code drive} drives the robot; returns the scans logged. */
-  public static int logWhileDriving(ArRobot robot, ArSimulatedLaser laser, Path file, Runnable drive) {
+  public static int logWhileDriving(
+      ArRobot robot, ArSimulatedLaser laser, Path file, Runnable drive) {
     // tag::log[]
     ArLaserLogger logger = new ArLaserLogger(robot, laser, 300, 25, file.toString());
     drive.run(); // your program drives; a scan is logged every 300 mm or 25 degrees

@@ -168,9 +168,8 @@ class SamplesTest {
   }
 
   @Test
-  void theMappingSampleLogsWhileDrivingAndBuildsTheLog(@org.junit.jupiter.api.io.TempDir
-          java.nio.file.Path tmp)
-      throws Exception {
+  void theMappingSampleLogsWhileDrivingAndBuildsTheLog(
+      @org.junit.jupiter.api.io.TempDir java.nio.file.Path tmp) throws Exception {
     try (SimWorld world = SimWorld.bundled("hall", SimOptions.builder().seed(4).build())) {
       SimRobot r = world.addRobot("p3dx-sh");
       try (SimulatedRobot sim = SimulatedRobot.connect(world, r)) {

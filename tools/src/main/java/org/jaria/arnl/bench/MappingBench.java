@@ -25,12 +25,11 @@ import org.jaria.sim.SimRobot;
 import org.jaria.sim.client.SimulatedRobot;
 
 /**
- * {@code jaria bench mapping}: drives the simulator (odometry error on, the true path and map
- * known exactly) through a map with the laser logging as sickLogger does, builds the map from the
- * log, and compares: the path with the true one, the map's points with the true walls, the true
- * walls the laser saw with the map; build time against the log's duration, and memory. Then the
- * robot localizes with the laser on the built map and drives to five goals ({@link
- * MappingNavigation}).
+ * {@code jaria bench mapping}: drives the simulator (odometry error on, the true path and map known
+ * exactly) through a map with the laser logging as sickLogger does, builds the map from the log,
+ * and compares: the path with the true one, the map's points with the true walls, the true walls
+ * the laser saw with the map; build time against the log's duration, and memory. Then the robot
+ * localizes with the laser on the built map and drives to five goals ({@link MappingNavigation}).
  */
 public final class MappingBench {
 
@@ -166,7 +165,8 @@ public final class MappingBench {
     for (int i = 0; i < n; i++) {
       for (int tries = 0; tries < 200; tries++) {
         ArPose next = BenchSupport.freePose(nav, 600, rng);
-        List<ArPose> leg = next.findDistanceTo(at) > 4000 ? BenchSupport.route(nav, at, next) : null;
+        List<ArPose> leg =
+            next.findDistanceTo(at) > 4000 ? BenchSupport.route(nav, at, next) : null;
         if (leg != null) {
           route.addAll(leg);
           at = next;

@@ -144,7 +144,8 @@ final class TruthCompare {
     Map<Long, List<double[]>> built = new HashMap<>();
     for (int i = 0; i < m.pointCount(); i++) {
       ArPose p = compose(toTruth, new ArPose(m.x(i), m.y(i)));
-      built.computeIfAbsent(key(p.x(), p.y()), c -> new ArrayList<>())
+      built
+          .computeIfAbsent(key(p.x(), p.y()), c -> new ArrayList<>())
           .add(new double[] {p.x(), p.y()});
     }
     int seen = 0;
@@ -155,7 +156,8 @@ final class TruthCompare {
       int steps = Math.max(1, (int) Math.round(len / 50));
       for (int k = 0; k <= steps; k++) {
         double t = (double) k / steps;
-        samples.add(new double[] {l.x1() + t * (l.x2() - l.x1()), l.y1() + t * (l.y2() - l.y1()), 0});
+        samples.add(
+            new double[] {l.x1() + t * (l.x2() - l.x1()), l.y1() + t * (l.y2() - l.y1()), 0});
       }
     }
     for (int k = 0; k < points.size(); k++) {
@@ -192,7 +194,8 @@ final class TruthCompare {
   static ArPose compose(ArPose a, ArPose b) {
     double c = Math.cos(a.getThRad());
     double s = Math.sin(a.getThRad());
-    return new ArPose(a.x() + c * b.x() - s * b.y(), a.y() + s * b.x() + c * b.y(), a.th() + b.th());
+    return new ArPose(
+        a.x() + c * b.x() - s * b.y(), a.y() + s * b.x() + c * b.y(), a.th() + b.th());
   }
 
   static ArPose inverse(ArPose a) {

@@ -9,8 +9,8 @@ import org.jaria.map.MapFormatException;
 
 /**
  * A floor plan no test has seen, generated from a seed for the mapping benchmark: a building whose
- * corridor runs round a central block (so a drive closes loops), with rooms of random widths on
- * the outside, each with a door onto the corridor at a random place.
+ * corridor runs round a central block (so a drive closes loops), with rooms of random widths on the
+ * outside, each with a door onto the corridor at a random place.
  */
 final class UnseenMap {
 

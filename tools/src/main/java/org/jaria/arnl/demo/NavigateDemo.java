@@ -49,9 +49,9 @@ public final class NavigateDemo {
    *     simulated seconds per real second
    * @param seed seed of the simulator and the localization
    * @param goalTimeout how long to wait for one goal
-   * @param world for the embedded simulator: the world the robot drives in, if not {@code map}
-   *     (a map built from a scan log of that world: the robot starts at the world's home, which is
-   *     the built map's RobotHome, and localizes and plans on the built map), or null
+   * @param world for the embedded simulator: the world the robot drives in, if not {@code map} (a
+   *     map built from a scan log of that world: the robot starts at the world's home, which is the
+   *     built map's RobotHome, and localizes and plans on the built map), or null
    */
   public record Options(
       String map,
@@ -157,8 +157,7 @@ public final class NavigateDemo {
       double speedUp) {
     try {
       return run(
-              new Options(map, goals, robotAddress, speedUp, 1, Duration.ofMinutes(10), world),
-              out)
+              new Options(map, goals, robotAddress, speedUp, 1, Duration.ofMinutes(10), world), out)
           .exitCode();
     } catch (IllegalArgumentException | IllegalStateException | UncheckedIOException e) {
       out.println("navigate: " + e.getMessage());

@@ -127,5 +127,4 @@ final class MapBuildCommand implements Callable<Integer> {
     Path file = Path.of(base + ".map");
     return parent == null ? file : parent.resolve(file);
   }
-
 }

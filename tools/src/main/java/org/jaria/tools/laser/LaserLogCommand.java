@@ -128,7 +128,10 @@ public final class LaserLogCommand implements Callable<Integer> {
     SimWorld world =
         SimWorld.create(
             map,
-            SimOptions.builder().seed(seed).odometryError(OdometryError.parse(odometryError)).build());
+            SimOptions.builder()
+                .seed(seed)
+                .odometryError(OdometryError.parse(odometryError))
+                .build());
     SimRobot r = world.addRobot(RobotOptions.of("p3dx-sh"));
     SimulatedRobot s = SimulatedRobot.connect(world, r);
     try {
