@@ -158,10 +158,10 @@ final class LineFitter {
       if (!r.dead && r.hi - r.lo >= MIN_LENGTH_MM && r.n >= 2 * MIN_POINTS) {
         out.add(
             new ArLineSegment(
-                Math.round(r.x(r.lo)),
-                Math.round(r.y(r.lo)),
-                Math.round(r.x(r.hi)),
-                Math.round(r.y(r.hi))));
+                Math.rint(r.x(r.lo)),
+                Math.rint(r.y(r.lo)),
+                Math.rint(r.x(r.hi)),
+                Math.rint(r.y(r.hi))));
       }
     }
     out.sort(

@@ -66,7 +66,7 @@ final class MapAssembler {
     int[][] sorted = sort(Arrays.copyOf(xs, n), Arrays.copyOf(ys, n));
     List<ArMapObject> objects = new ArrayList<>();
     ArPose home = nodes.estimate(0);
-    objects.add(ArMapObject.robotHome("", Math.round(home.x()), Math.round(home.y()), home.th()));
+    objects.add(ArMapObject.robotHome("", Math.rint(home.x()), Math.rint(home.y()), home.th()));
     for (int t = 0; t < tags.size(); t++) {
       LogTag tag = tags.get(t);
       ArPose p = Poses.compose(nodes.estimate(tagNodes.get(t)[0]), tagOffsets.get(t));
@@ -74,7 +74,7 @@ final class MapAssembler {
       objects.add(
           new ArMapObject(
               type,
-              new ArPose(Math.round(p.x()), Math.round(p.y()), Math.round(p.th() * 100) / 100.0),
+              new ArPose(Math.rint(p.x()), Math.rint(p.y()), Math.rint(p.th() * 100) / 100.0),
               "",
               tag.cairnName()));
     }

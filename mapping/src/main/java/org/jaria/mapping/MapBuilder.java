@@ -203,20 +203,6 @@ public final class MapBuilder {
       searches++;
     }
     ArPose est = new ArPose(icp.x, icp.y, icp.thDeg);
-    if (DEBUG) {
-      System.out.printf(
-          "scan %d guess %s corr %.1f %.1f %.2f (%.2f) icp %s inl %.2f pairs %d/%d%n",
-          scansRead - 1,
-          guess,
-          nearby.x,
-          nearby.y,
-          nearby.thDeg,
-          nearby.score,
-          est,
-          icp.inlierFraction,
-          icp.pairs,
-          pts.matchCount);
-    }
     if (icp.inlierFraction < 0.3
         || icp.pairs < MIN_MATCH_POINTS
         || est.findDistanceTo(guess) > 1000
@@ -340,8 +326,11 @@ public final class MapBuilder {
     }
     if (DEBUG) {
       System.out.printf(
-          "match %.0f ms (local index %.0f ms), loops %.0f ms%n",
-          timeMatch / 1e6, timeLocal / 1e6, timeLoops / 1e6);
+          "match %.0f ms (local index %.0f ms, %d searches), loops %.0f ms%n",
+          timeMatch / 1e6,
+          timeLocal / 1e6,
+          searches,
+          timeLoops / 1e6);
     }
     loops.optimize(nodes);
     return MapAssembler.assemble(

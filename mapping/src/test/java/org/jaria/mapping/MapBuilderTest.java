@@ -37,9 +37,9 @@ class MapBuilderTest {
 
   static List<ArPose> truth(String name) throws IOException {
     List<ArPose> out = new ArrayList<>();
-    for (String line : resource(name).split("\n")) {
+    for (String line : resource(name).split("\n", -1)) {
       if (!line.startsWith("#") && !line.isBlank()) {
-        String[] w = line.trim().split("\\s+");
+        String[] w = line.trim().split("\\s+", -1);
         out.add(
             new ArPose(
                 Double.parseDouble(w[1]), Double.parseDouble(w[2]), Double.parseDouble(w[3])));
@@ -93,8 +93,12 @@ class MapBuilderTest {
     int at = log.indexOf("logTime: 30.");
     int block = log.lastIndexOf("logTime:", at - 1);
     String goal =
-        "time: 30.000\nrobot: 5000 0 0.00\nrobotGlobal: 5000 0 0.00\n"
-            + "cairn: GoalWithHeading \"\" ICON_GOALWITHHEADING \"goal1\"\n";
+        """
+        time: 30.000
+        robot: 5000 0 0.00
+        robotGlobal: 5000 0 0.00
+        cairn: GoalWithHeading "" ICON_GOALWITHHEADING "goal1"
+        """;
     BuiltMap m = build(log.substring(0, block) + goal + log.substring(block));
     ArMapObject g = m.toArMap().findMapObject("goal1").orElseThrow();
     assertEquals("GoalWithHeading", g.type());
@@ -140,7 +144,7 @@ class MapBuilderTest {
         continue;
       }
       sb.append("scan1: ");
-      String[] w = line.substring(7).trim().split("\\s+");
+      String[] w = line.substring(7).trim().split("\\s+", -1);
       for (int i = 0; i + 1 < w.length; i += 2) {
         double x = Double.parseDouble(w[i]);
         double y = Double.parseDouble(w[i + 1]);

@@ -17,16 +17,18 @@ import org.junit.jupiter.api.Test;
 class ScanLogReaderTest {
 
   static final String HEADER =
-      "LaserOdometryLog\n"
-          + "#Created by ArLaserLogger\n"
-          + "version: 4\n"
-          + "sick1pose: 18 0 0.00\n"
-          + "sick1conf: -90.00 90.00 3\n"
-          + "sick1name: sim_lms2xx_1\n"
-          + "scan1pose: 18 0 0 0.00\n"
-          + "scan1conf: -90.00 90.00 3\n"
-          + "scan1name: sim_lms2xx_1\n"
-          + "locationTypes: robot robotGlobal\n";
+      """
+      LaserOdometryLog
+      #Created by ArLaserLogger
+      version: 4
+      sick1pose: 18 0 0.00
+      sick1conf: -90.00 90.00 3
+      sick1name: sim_lms2xx_1
+      scan1pose: 18 0 0 0.00
+      scan1conf: -90.00 90.00 3
+      scan1name: sim_lms2xx_1
+      locationTypes: robot robotGlobal
+      """;
 
   static String scan(int id, double t, int x, String readings) {
     return "logTime: "
@@ -85,9 +87,16 @@ class ScanLogReaderTest {
   @Test
   void readsOldLogsWithRangesAndTime() throws IOException {
     String log =
-        "LaserOdometryLog\n#Created by ARIA's ArSickLogger\nversion: 1\n"
-            + "sick1pose: 0 0 0.00\nsick1conf: -90 90 3\n"
-            + "time: 0.5\nrobot: 10 20 0.00 0 0\nsick1: 1000 0 2000\n";
+        """
+        LaserOdometryLog
+        #Created by ARIA's ArSickLogger
+        version: 1
+        sick1pose: 0 0 0.00
+        sick1conf: -90 90 3
+        time: 0.5
+        robot: 10 20 0.00 0 0
+        sick1: 1000 0 2000
+        """;
     try (ScanLogReader r = reader(log)) {
       LoggedScan s = assertInstanceOf(LoggedScan.class, r.next());
       assertEquals(0, s.x(0), 1e-9);

@@ -45,27 +45,29 @@ class ScanLogWriterTest {
             null,
             "cairn: GoalWithHeading \"\" ICON_GOALWITHHEADING \"goal1\"");
     assertEquals(
-        "LaserOdometryLog\n"
-            + "#Created by ArLaserLogger\n"
-            + "version: 4\n"
-            + "sick1pose: 21 0 0.00\n"
-            + "sick1conf: -90.00 90.00 3\n"
-            + "sick1name: lms2xx_1\n"
-            + "scan1pose: 21 0 0 0.00\n"
-            + "scan1conf: -90.00 90.00 3\n"
-            + "scan1name: lms2xx_1\n"
-            + "locationTypes: robot robotGlobal\n"
-            + "logTime: 1.591\n"
-            + "velocities: 450.00 -2.12 0.00\n"
-            + "scanId: 0\n"
-            + "robot: 326 -0 1.00\n"
-            + "robotGlobal: 326 -0 1.00\n"
-            + "scan1: 0 -956  1000 0  2 0  \n"
-            + "time: 2.250\n"
-            + "robot: 400 10 90.00\n"
-            + "robotGlobal: 400 10 90.00\n"
-            + "cairn: GoalWithHeading \"\" ICON_GOALWITHHEADING \"goal1\"\n"
-            + "# End of log\n",
+        """
+        LaserOdometryLog
+        #Created by ArLaserLogger
+        version: 4
+        sick1pose: 21 0 0.00
+        sick1conf: -90.00 90.00 3
+        sick1name: lms2xx_1
+        scan1pose: 21 0 0 0.00
+        scan1conf: -90.00 90.00 3
+        scan1name: lms2xx_1
+        locationTypes: robot robotGlobal
+        logTime: 1.591
+        velocities: 450.00 -2.12 0.00
+        scanId: 0
+        robot: 326 -0 1.00
+        robotGlobal: 326 -0 1.00
+        scan1: 0 -956  1000 0  2 0 \s
+        time: 2.250
+        robot: 400 10 90.00
+        robotGlobal: 400 10 90.00
+        cairn: GoalWithHeading "" ICON_GOALWITHHEADING "goal1"
+        # End of log
+        """,
         write(h, s, goal));
   }
 

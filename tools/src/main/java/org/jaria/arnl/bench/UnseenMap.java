@@ -63,9 +63,19 @@ final class UnseenMap {
     String map =
         String.format(
             Locale.ROOT,
-            "2D-Map\nMinPos: 0 0\nMaxPos: %d %d\nNumPoints: 0\nResolution: 20\nLineMinPos: 0 0\n"
-                + "LineMaxPos: %d %d\nNumLines: %d\n"
-                + "Cairn: RobotHome %d %d 0.000000 \"\" ICON \"\"\nLINES\n%sDATA\n",
+            """
+            2D-Map
+            MinPos: 0 0
+            MaxPos: %d %d
+            NumPoints: 0
+            Resolution: 20
+            LineMinPos: 0 0
+            LineMaxPos: %d %d
+            NumLines: %d
+            Cairn: RobotHome %d %d 0.000000 "" ICON ""
+            LINES
+            %sDATA
+            """,
             w,
             h,
             w,
