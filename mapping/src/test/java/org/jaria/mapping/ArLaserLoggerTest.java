@@ -61,7 +61,7 @@ class ArLaserLoggerTest {
             "scan " + s.id());
         prev = s;
       }
-      assertTrue(all.size() >= 20, "scans: " + all.size());
+      assertTrue(all.size() >= 15, "scans: " + all.size());
     }
   }
 }
