@@ -327,10 +327,7 @@ public final class MapBuilder {
     if (DEBUG) {
       System.out.printf(
           "match %.0f ms (local index %.0f ms, %d searches), loops %.0f ms%n",
-          timeMatch / 1e6,
-          timeLocal / 1e6,
-          searches,
-          timeLoops / 1e6);
+          timeMatch / 1e6, timeLocal / 1e6, searches, timeLoops / 1e6);
     }
     loops.optimize(nodes);
     return MapAssembler.assemble(

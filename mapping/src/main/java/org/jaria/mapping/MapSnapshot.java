@@ -3,9 +3,9 @@ package org.jaria.mapping;
 import org.jaria.geom.ArPose;
 
 /**
- * The map while it is being built, for drawing it live: the points seen so far (one per 50 mm
- * cell, placed by the current pose estimates) and the path driven. A snapshot does not change when
- * the builder goes on.
+ * The map while it is being built, for drawing it live: the points seen so far (one per 50 mm cell,
+ * placed by the current pose estimates) and the path driven. A snapshot does not change when the
+ * builder goes on.
  */
 public final class MapSnapshot {
 

@@ -137,7 +137,7 @@ public final class MappingBench {
     double[] near = walls.nearShares(m, toTruth);
     double covered = walls.coverage(m, toTruth, d.trueHits());
     MappingNavigation.Result nav =
-        navigate ? MappingNavigation.run(truth, m.toArMap(), toTruth, 5, 77) : null;
+        navigate ? MappingNavigation.run(truth, m.toArMap(), toTruth, d.trueLaser(), 5, 77) : null;
     return new Row(
         name,
         m.trajectory().size(),
@@ -215,7 +215,8 @@ public final class MappingBench {
             + " has a point within 50 mm of. Build: thread CPU time (wall time on this busy"
             + " machine) against the log's duration; memory: scan points held, and heap growth"
             + " over the build. Navigation: laser localization (ArLocalizationTask) on the built"
-            + " map, in the true world, to 5 random goals (ArPathPlanningTask).\n\n");
+            + " map, in the true world, to 5 random places the logging drive passed"
+            + " (ArPathPlanningTask).\n\n");
     sb.append(
         "| map | scans | log s | path RMS / max mm | points within 50 mm | 50-300 mm off |"
             + " walls covered | build CPU s (wall) | log/build | points held, heap | loops |"

@@ -18,7 +18,8 @@ import org.jaria.sim.client.SimulatedRobot;
  * Localization and navigation on a built map: the simulated robot lives in the true world, but
  * localizes (laser, {@link ArLocalizationTask}) and plans ({@link ArPathPlanningTask}) on the map
  * built from its log. It starts at home (the built map's RobotHome, the log's first pose) and is
- * sent to random goals of the true world's free space, given in the built map's frame.
+ * sent to random places the logging drive passed (so they are on the map), given in the built map's
+ * frame.
  */
 final class MappingNavigation {
 
@@ -27,7 +28,8 @@ final class MappingNavigation {
   /** Goals reached and the mean distance from the true pose to the goal at arrival, mm. */
   record Result(int goals, int reached, double meanErrorMm, List<String> failures) {}
 
-  static Result run(ArMap truth, ArMap built, ArPose builtToTruth, int goals, long seed) {
+  static Result run(
+      ArMap truth, ArMap built, ArPose builtToTruth, List<ArPose> visited, int goals, long seed) {
     NavigationMap nav = NavigationMap.build(truth, 100, 300, 1000, 4);
     ArPose home = truth.findHomePose().orElse(ArPose.ORIGIN);
     ArPose truthToBuilt = TruthCompare.inverse(builtToTruth);
@@ -55,7 +57,7 @@ final class MappingNavigation {
       for (int g = 0; g < goals; g++) {
         ArPose goal = null;
         for (int tries = 0; tries < 500 && goal == null; tries++) {
-          ArPose p = BenchSupport.freePose(nav, 700, rng);
+          ArPose p = visited.get(rng.nextInt(visited.size()));
           if (p.findDistanceTo(at) > 4000 && BenchSupport.route(nav, at, p) != null) {
             goal = p;
           }
