@@ -88,7 +88,7 @@ public final class LaserLogCommand implements Callable<Integer> {
   @Option(
       names = "--deg",
       paramLabel = "DEG",
-      description = "... or every DEG of turning (default: ${DEFAULT-VALUE}).")
+      description = "Or every DEG of turning, whichever comes first (default: ${DEFAULT-VALUE}).")
   double deg = 25;
 
   @Option(
