@@ -142,6 +142,7 @@ public final class LaserLogCommand implements Callable<Integer> {
       if (logger == null) {
         return 1;
       }
+      wander(robot);
       out.printf(Locale.ROOT, "logging %s on %s for %.0f s (simulated)%n", output, sim, seconds);
       out.flush();
       long step = 1000;
@@ -174,6 +175,7 @@ public final class LaserLogCommand implements Callable<Integer> {
       if (logger == null) {
         return 1;
       }
+      wander(robot);
       out.printf(Locale.ROOT, "logging %s on %s for %.0f s%n", output, remote, seconds);
       out.flush();
       long step = 1000;
@@ -190,19 +192,31 @@ public final class LaserLogCommand implements Callable<Integer> {
     }
   }
 
-  /** The simulator's laser, sonar for avoiding, ARIA's wander group, motors on. */
+  /** The simulator's laser, and sonar for avoiding obstacles. */
   private static ArSimulatedLaser prepare(ArRobot robot) {
     ArSimulatedLaser laser = new ArSimulatedLaser();
     robot.lock();
     try {
       robot.addRangeDevice(laser);
       robot.addRangeDevice(new ArSonarDevice());
+    } finally {
+      robot.unlock();
+    }
+    return laser;
+  }
+
+  /**
+   * ARIA's wander group, motors on: once the logger is open, so the log starts where the robot
+   * starts (the map's home).
+   */
+  private static void wander(ArRobot robot) {
+    robot.lock();
+    try {
       new ArActionGroupWander(robot).activateExclusive();
       robot.enableMotors();
     } finally {
       robot.unlock();
     }
-    return laser;
   }
 
   private ArLaserLogger open(ArRobot robot, ArSimulatedLaser laser, PrintWriter err) {
