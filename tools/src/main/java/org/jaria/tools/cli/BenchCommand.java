@@ -20,6 +20,7 @@ import picocli.CommandLine.Spec;
       BenchCommand.Actions.class,
       BenchCommand.Net.class,
       BenchCommand.Mapper.class,
+      BenchCommand.Mapping.class,
       BenchCommand.Hostile.class,
       BenchCommand.Web.class,
       BenchCommand.Grade.class
@@ -157,6 +158,21 @@ final class BenchCommand implements Runnable {
     @Override
     String table() throws Exception {
       return org.jaria.tools.mapper.MapperBenchmark.run(map, quick ? 40 : 200);
+    }
+  }
+
+  /** {@code jaria bench mapping}. */
+  @Command(
+      name = "mapping",
+      description =
+          "Maps built from laser logs on the simulator (odometry error on): path and wall"
+              + " accuracy, coverage, build time against the log's duration, memory; then laser"
+              + " localization and navigation on the built map (office 3 laps, hall, columbia, a"
+              + " generated map).")
+  static final class Mapping extends QuickBench {
+    @Override
+    String table() {
+      return org.jaria.arnl.bench.MappingBench.run(quick);
     }
   }
 
