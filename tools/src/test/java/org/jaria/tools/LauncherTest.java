@@ -46,6 +46,7 @@ class LauncherTest {
     "simulator",
     "jaria-testing",
     "arnl-sonar",
+    "mapping",
     "aria-net",
     "arnl-net",
     "acts-vision",

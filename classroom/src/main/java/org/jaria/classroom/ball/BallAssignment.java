@@ -75,6 +75,16 @@ public final class BallAssignment implements Assignment {
   }
 
   @Override
+  public List<String> checkNames(Texts t) {
+    return List.of(
+        t.get("ball.approach.name"),
+        t.get("ball.follow.name"),
+        t.get("ball.stops.name"),
+        t.get("fire.name"),
+        t.get("collisions.name"));
+  }
+
+  @Override
   public StudentSide studentSide() {
     return new StudentSide() {
       private GuardedAction guarded;
@@ -155,7 +165,7 @@ public final class BallAssignment implements Assignment {
   private static Check follow(boolean close, BallScene scene, StudentLink sim, Texts t) {
     String name = t.get("ball.follow.name");
     if (!close) {
-      return Check.fail(name, 3, t.get("ball.follow.notTried"));
+      return Check.withheld(name, 3, t.get("ball.follow.notTried"));
     }
     double x = scene.ball().x();
     double y = scene.ball().y();

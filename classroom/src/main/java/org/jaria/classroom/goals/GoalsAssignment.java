@@ -87,6 +87,17 @@ public final class GoalsAssignment implements Assignment {
   }
 
   @Override
+  public List<String> checkNames(Texts t) {
+    List<String> names = new ArrayList<>();
+    names.add(t.get("program.name"));
+    for (int k = 0; k < GOALS.size(); k++) {
+      names.add(t.get("goals.goal.name", k + 1, GOALS.get(k)));
+    }
+    names.add(t.get("collisions.name"));
+    return names;
+  }
+
+  @Override
   public StudentSide studentSide() {
     return new StudentSide() {
       private ArSonarLocalizationTask loc;
@@ -157,7 +168,10 @@ public final class GoalsAssignment implements Assignment {
           checks.add(end.check());
           sim.runMillis(5000);
           int interrupted = sim.call("interrupted").matches("0*") ? 0 : 1;
-          List<Check> goals = goals(map, trace, interrupted, t);
+          List<Check> goals = new ArrayList<>();
+          for (Check c : goals(map, trace, interrupted, t)) {
+            goals.add(end.judged(c, t));
+          }
           checks.addAll(goals);
           checks.add(
               Check.of(

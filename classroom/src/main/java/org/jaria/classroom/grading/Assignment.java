@@ -1,5 +1,6 @@
 package org.jaria.classroom.grading;
 
+import java.util.List;
 import org.jaria.classroom.link.StudentSide;
 import org.jaria.classroom.link.StudentStreams;
 
@@ -7,6 +8,11 @@ import org.jaria.classroom.link.StudentStreams;
  * One assignment of the classroom kit: what a solution must be, and how it is graded on the
  * simulator. Grading is deterministic (a seeded world on virtual time), so a solution gets the same
  * grade on every run, on every computer.
+ *
+ * <p>Assignments come in packs and are found with {@link java.util.ServiceLoader}: a pack (the
+ * kit's own four, or a teacher's folder or jar given to {@code jaria grade --pack}) lists its
+ * classes in {@code META-INF/services/org.jaria.classroom.grading.Assignment}. Each needs a public
+ * constructor without arguments, which both the grader and the student's JVM call.
  */
 public interface Assignment {
 
@@ -32,6 +38,21 @@ public interface Assignment {
   int points();
 
   /**
+   * The names of the checks a graded run makes, in order, in the language of {@code t}: the
+   * gradebook's columns. (A run that could not grade, e.g. one that did not compile, has one check
+   * of its own instead, which has no column.)
+   */
+  List<String> checkNames(Texts t);
+
+  /**
+   * The catalogue this assignment's checks speak in {@code lang} ("en" or "es"): the kit's, which a
+   * pack extends with its own sentences ({@link Texts#with}).
+   */
+  default Texts texts(String lang) {
+    return Texts.of(lang);
+  }
+
+  /**
    * Grades the student whose process is at the other end of {@code student} on the simulator: the
    * world, its ground truth and the checks live here, the student's object lives in their process
    * ({@link #studentSide()}), joined by a {@link org.jaria.classroom.link.StudentLink}. Never
@@ -44,7 +65,7 @@ public interface Assignment {
 
   /** {@link #grade(StudentStreams, Texts)} in English. */
   default Grade grade(StudentStreams student) {
-    return grade(student, Texts.english());
+    return grade(student, texts("en"));
   }
 
   /** The half that runs in the student's process: makes their object and hooks it up. */

@@ -1,22 +1,30 @@
 package org.jaria.classroom.grading;
 
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.ZoneOffset;
+import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import java.util.Properties;
 import java.util.concurrent.atomic.AtomicInteger;
+import org.jaria.classroom.pack.Packs;
+import org.jaria.classroom.platform.Platforms;
 import org.jaria.classroom.sandbox.Sandbox;
 
 /**
- * A teacher's whole grading run ({@code jaria grade}): checks the {@link GradeRequest}, chooses the
- * sandbox, grades every submission with a {@link Grader} while printing progress, and writes
- * report.txt, report.md, report.html, gradebook.csv and students/NAME/feedback.txt. A request that
- * cannot be carried out is refused with a line on the error stream that says what to change, and
- * nothing is graded.
+ * A teacher's whole grading run ({@code jaria grade}): checks the {@link GradeRequest}, loads the
+ * assignment packs, chooses the sandbox, grades every submission with a {@link Grader} while
+ * printing progress, and writes report.txt, report.md, report.html, gradebook.csv and
+ * students/NAME/feedback.txt (and, for Gradescope or GitHub Classroom, what those read). A request
+ * that cannot be carried out is refused with a line on the error stream that says what to change,
+ * and nothing is graded.
  */
 public final class ClassGrading {
 
@@ -26,7 +34,25 @@ public final class ClassGrading {
   /** The request was refused (the error stream says why); nothing was graded. */
   public static final int REFUSED = 2;
 
+  private static final DateTimeFormatter WHEN =
+      DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm 'UTC'", Locale.ROOT).withZone(ZoneOffset.UTC);
+
   private ClassGrading() {}
+
+  /** The JAria version of this classroom library, as its build wrote it. */
+  public static String version() {
+    Properties p = new Properties();
+    try (InputStream in =
+        ClassGrading.class.getResourceAsStream("/org/jaria/classroom/version.properties")) {
+      if (in != null) {
+        p.load(in);
+      }
+    } catch (IOException e) {
+      // unknown
+    }
+    String v = p.getProperty("version", "unknown");
+    return v.startsWith("$") ? "unknown" : v;
+  }
 
   /**
    * Carries out {@code r}, printing progress and the class's report on {@code o} and problems on
@@ -36,35 +62,67 @@ public final class ClassGrading {
    * @throws IOException if a report cannot be written
    */
   public static int grade(GradeRequest r, PrintWriter o, PrintWriter err) throws IOException {
+    String refused = refusal(r);
+    if (refused != null) {
+      return refuse(r, refused, o, err);
+    }
+    try (Packs packs = Packs.load(r.packs(), r.scratchRoot())) {
+      return grade(r, packs, o, err);
+    } catch (IllegalArgumentException | IllegalStateException e) {
+      return refuse(r, e.getMessage(), o, err);
+    }
+  }
+
+  /** Why {@code r} cannot be carried out whatever the packs, or null. */
+  private static String refusal(GradeRequest r) {
     if (r.timeout().isNegative() || r.timeout().isZero() || r.jobs() <= 0) {
-      err.println("grade: --timeout and --jobs must be positive");
-      return REFUSED;
+      return "--timeout and --jobs must be positive";
     }
     if (!Texts.LANGUAGES.contains(r.lang())) {
-      err.println("grade: --lang is en or es");
-      return REFUSED;
+      return "--lang is en or es";
     }
+    if (r.platform() != GradeRequest.Platform.LOCAL && r.only() != null) {
+      return "--only re-grades one student of a class; Gradescope and GitHub Classroom grade one"
+          + " submission at a time";
+    }
+    return null;
+  }
+
+  private static int refuse(GradeRequest r, String why, PrintWriter o, PrintWriter err)
+      throws IOException {
+    err.println("grade: " + why);
+    err.flush();
+    Platforms.refused(r, why, o);
+    return REFUSED;
+  }
+
+  private static int grade(GradeRequest r, Packs packs, PrintWriter o, PrintWriter err)
+      throws IOException {
     Assignment a;
-    List<Path> found;
+    SubmissionFolders.Scan scan;
     try {
-      a = Assignments.byId(r.assignment());
-      found = SubmissionFolders.submissions(r.submissions());
+      a = packs.byId(r.assignment());
+      scan =
+          r.platform() == GradeRequest.Platform.LOCAL
+              ? SubmissionFolders.scan(r.submissions())
+              : SubmissionFolders.single(r.submissions());
     } catch (IllegalArgumentException | IOException e) {
-      err.println("grade: " + e.getMessage());
-      return REFUSED;
+      return refuse(r, e.getMessage(), o, err);
     }
-    if (found.isEmpty()) {
-      err.println(
-          "grade: no submissions in "
+    if (scan.submissions().isEmpty()) {
+      return refuse(
+          r,
+          "no submissions in "
               + r.submissions()
-              + ": put each student's .java files in a folder of their own inside it");
-      return REFUSED;
+              + ": put each student's .java files in a folder of their own inside it",
+          o,
+          err);
     }
     Path subsReal = r.submissions().toAbsolutePath().normalize();
     Path outAbs = r.out().toAbsolutePath().normalize();
     if (outAbs.startsWith(subsReal)) {
-      err.println("grade: put --out outside the submissions folder (students must not see it)");
-      return REFUSED;
+      return refuse(
+          r, "put --out outside the submissions folder (students must not see it)", o, err);
     }
     Sandbox sandbox;
     if (r.unsafe()) {
@@ -74,80 +132,108 @@ public final class ClassGrading {
       try {
         sandbox = Sandbox.bubblewrap(r.bwrap());
       } catch (IllegalStateException e) {
-        err.println(
-            "grade: cannot isolate the submissions: "
+        return refuse(
+            r,
+            "cannot isolate the submissions: "
                 + e.getMessage()
-                + ". Refusing to grade; --unsafe grades anyway (only for code you trust).");
-        return REFUSED;
+                + ". Refusing to grade; --unsafe grades anyway (only for code you trust).",
+            o,
+            err);
       }
     }
-    List<Path> toGrade = found;
+    for (String s : scan.skipped()) {
+      err.println("grade: warning: " + Neutral.line(s));
+    }
+    List<String> names =
+        scan.submissions().stream().map(SubmissionFolders.Submission::student).toList();
+    Map<String, String> folders = SubmissionFolders.reportFolders(names);
+    List<SubmissionFolders.Submission> toGrade = scan.submissions();
     if (r.only() != null) {
-      toGrade =
-          found.stream().filter(p -> SubmissionFolders.studentOf(p).equals(r.only())).toList();
+      toGrade = toGrade.stream().filter(s -> s.student().equals(r.only())).toList();
       if (toGrade.isEmpty()) {
-        err.println("grade: no submission called '" + r.only() + "' in " + r.submissions());
-        return REFUSED;
+        return refuse(r, "no submission called '" + r.only() + "' in " + r.submissions(), o, err);
       }
     }
+    Texts texts = a.texts(r.lang());
     Path students = r.out().resolve("students");
     Grader grader =
         new Grader(
-            a, Grader.Options.of(r.timeout(), r.jobs(), sandbox).in(Texts.of(r.lang())), students);
-    o.printf(
+            a,
+            Grader.Options.of(r.timeout(), r.jobs(), sandbox).in(texts).scratchIn(r.scratchRoot()),
+            students);
+    // on a platform, standard output is the student's feedback alone: progress goes to errors
+    PrintWriter progress = r.platform() == GradeRequest.Platform.LOCAL ? o : err;
+    progress.printf(
         Locale.ROOT,
         "Grading %d submission(s) of '%s', %d at a time%s...%n",
         toGrade.size(),
         a.id(),
         Math.min(r.jobs(), toGrade.size()),
         sandbox.isolated() ? ", each in a sandbox" : ", WITHOUT isolation (--unsafe)");
-    o.flush();
+    progress.flush();
     AtomicInteger done = new AtomicInteger();
     int total = toGrade.size();
     List<Grader.Result> graded =
         grader.gradeAll(
             toGrade,
+            folders,
             g -> {
-              o.printf(
+              progress.printf(
                   Locale.ROOT,
                   "  [%d/%d] %-20s %3d/%d  %s (%.1f s)%n",
                   done.incrementAndGet(),
                   total,
-                  g.student(),
+                  Neutral.line(g.student()),
                   g.grade().score(),
                   g.grade().maxScore(),
                   g.status(),
                   g.seconds());
-              o.flush();
+              progress.flush();
             });
     List<Grader.Result> results = new ArrayList<>();
     if (r.only() == null) {
       results.addAll(graded);
     } else {
       // the others as graded before, from their files in the report
-      for (Path p : found) {
-        String name = SubmissionFolders.studentOf(p);
+      for (String name : names) {
         if (name.equals(r.only())) {
           results.add(graded.get(0));
           continue;
         }
         try {
-          results.add(ResultFiles.read(students.resolve(SubmissionFolders.safeName(name)), name));
+          results.add(ResultFiles.read(students.resolve(folders.get(name)), name));
         } catch (IOException e) {
           err.println(
               "grade: "
-                  + name
+                  + Neutral.line(name)
                   + " has no earlier result in "
                   + r.out()
-                  + " (grade the class first)");
+                  + " (grade the class first): "
+                  + Neutral.line(String.valueOf(e.getMessage())));
         }
       }
     }
-    writeReports(new GradeReport(a, results, r.lang(), r.unsafe()), r.out(), students, o);
+    GradeReport report =
+        new GradeReport(
+            a,
+            results,
+            r.lang(),
+            r.unsafe(),
+            new GradeReport.RunInfo(
+                WHEN.format(r.clock().instant()), r.version(), r.timeout(), r.jobs()));
+    writeReports(
+        report, r.out(), students, folders, o, r.platform() == GradeRequest.Platform.LOCAL);
+    Platforms.graded(r, report, results.get(0), o);
     return GRADED;
   }
 
-  private static void writeReports(GradeReport report, Path out, Path students, PrintWriter o)
+  private static void writeReports(
+      GradeReport report,
+      Path out,
+      Path students,
+      Map<String, String> folders,
+      PrintWriter o,
+      boolean printReport)
       throws IOException {
     Files.createDirectories(out);
     Files.writeString(out.resolve("report.txt"), report.text(), StandardCharsets.UTF_8);
@@ -155,17 +241,19 @@ public final class ClassGrading {
     Files.writeString(out.resolve("report.html"), report.html(), StandardCharsets.UTF_8);
     Files.writeString(out.resolve("gradebook.csv"), report.csv(), StandardCharsets.UTF_8);
     for (Grader.Result r : report.results()) {
-      Path dir = students.resolve(SubmissionFolders.safeName(r.student()));
+      Path dir = students.resolve(folders.get(r.student()));
       Files.createDirectories(dir);
       Files.writeString(dir.resolve("feedback.txt"), report.feedback(r), StandardCharsets.UTF_8);
     }
-    o.println();
-    o.print(report.text());
-    o.println();
-    o.println(
-        "Reports written to "
-            + out.toAbsolutePath().normalize()
-            + " (report.md, .html, .txt, gradebook.csv, students/NAME/feedback.txt)");
-    o.flush();
+    if (printReport) {
+      o.println();
+      o.print(report.text());
+      o.println();
+      o.println(
+          "Reports written to "
+              + out.toAbsolutePath().normalize()
+              + " (report.md, .html, .txt, gradebook.csv, students/NAME/feedback.txt)");
+      o.flush();
+    }
   }
 }

@@ -17,7 +17,8 @@ import java.util.TreeMap;
  * @param maxScore the points available
  * @param byScore how many students got each score, highest first
  * @param byStatus how many students ended with each status
- * @param mostFailed check name to how many students failed it, most first (at most five)
+ * @param mostFailed check name to how many students failed it on its own (not only withheld for
+ *     another check's problem), most first (at most five)
  */
 public record ClassStats(
     int students,
@@ -40,7 +41,9 @@ public record ClassStats(
       byScore.merge(s, 1, Integer::sum);
       byStatus.merge(r.status(), 1, Integer::sum);
       for (Check c : r.grade().failures()) {
-        failed.merge(c.name(), 1, Integer::sum);
+        if (!c.withheld()) {
+          failed.merge(c.name(), 1, Integer::sum);
+        }
       }
     }
     scores.sort(null);

@@ -15,7 +15,7 @@ public final class FirstStep {
   private FirstStep() {}
 
   /**
-   * {@code checks} as they are if {@code done}; otherwise every passed check becomes a failed one
+   * {@code checks} as they are if {@code done}; otherwise every passed check becomes a withheld one
    * whose message adds that it earns nothing until {@code step} ("the robot reaches corner 1",
    * already in the language of {@code t}).
    */
@@ -27,7 +27,7 @@ public final class FirstStep {
     for (Check c : checks) {
       out.add(
           c.passed()
-              ? Check.fail(c.name(), c.points(), t.get("gate.notEarned", c.message(), step))
+              ? Check.withheld(c.name(), c.points(), t.get("gate.notEarned", c.message(), step))
               : c);
     }
     return out;

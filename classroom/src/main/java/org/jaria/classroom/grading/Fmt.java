@@ -28,4 +28,14 @@ public final class Fmt {
   public static String num(double v, int decimals) {
     return String.format(Locale.ROOT, "%." + decimals + "f", v);
   }
+
+  /** "1.5 MB", "800 KB" or "12 bytes": a size, in the unit easiest to read. */
+  public static String bytes(long n) {
+    if (n >= 1 << 20) {
+      return String.format(Locale.ROOT, "%.1f MB", n / (double) (1 << 20));
+    }
+    return n >= 1 << 10
+        ? String.format(Locale.ROOT, "%.0f KB", n / 1024.0)
+        : n + (n == 1 ? " byte" : " bytes");
+  }
 }

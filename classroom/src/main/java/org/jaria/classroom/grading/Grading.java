@@ -1,5 +1,7 @@
 package org.jaria.classroom.grading;
 
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
@@ -9,6 +11,7 @@ import java.nio.channels.Channels;
 import java.nio.channels.Pipe;
 import java.nio.file.Path;
 import java.util.List;
+import org.jaria.classroom.link.LinkAudit;
 import org.jaria.classroom.link.StudentHarness;
 import org.jaria.classroom.link.StudentStreams;
 
@@ -24,15 +27,26 @@ public final class Grading {
 
   /** Grades the solution among the classes compiled into {@code classesDir}, in English. */
   public static Grade gradeClasses(Assignment a, Path classesDir) throws IOException {
-    return gradeClasses(a, classesDir, Texts.english());
+    return gradeClasses(a, classesDir, a.texts("en"));
   }
 
   /** Grades the solution among the classes compiled into {@code classesDir}, in {@code t}. */
   public static Grade gradeClasses(Assignment a, Path classesDir, Texts t) throws IOException {
+    return gradeClasses(a, classesDir, t, new LinkAudit());
+  }
+
+  /**
+   * Grades the solution among the classes compiled into {@code classesDir}, in {@code t}, the robot
+   * link keeping its record in {@code audit} (a test may pass one that lets more through, to try
+   * the second line of defence on its own).
+   */
+  public static Grade gradeClasses(Assignment a, Path classesDir, Texts t, LinkAudit audit)
+      throws IOException {
     List<String> names = SubmissionCompiler.classNames(classesDir);
     Pipe toStudent = Pipe.open();
     Pipe toGrader = Pipe.open();
-    try (URLClassLoader loader = SolutionFinder.loaderFor(classesDir)) {
+    try (URLClassLoader loader =
+        SolutionFinder.loaderFor(classesDir, a.getClass().getClassLoader())) {
       StudentHarness harness =
           new StudentHarness(
               a,
@@ -59,11 +73,14 @@ public final class Grading {
       student.setDaemon(true);
       student.start();
       try {
-        return a.grade(
-            StudentStreams.of(
-                Channels.newInputStream(toGrader.source()),
-                Channels.newOutputStream(toStudent.sink())),
-            t);
+        StudentStreams streams =
+            new StudentStreams(
+                new DataInputStream(
+                    new BufferedInputStream(Channels.newInputStream(toGrader.source()), 1 << 16)),
+                new DataOutputStream(
+                    new BufferedOutputStream(Channels.newOutputStream(toStudent.sink()), 1 << 16)),
+                audit);
+        return Integrity.apply(a.grade(streams, t), audit, t);
       } finally {
         toStudent.sink().close();
         try {
@@ -83,14 +100,14 @@ public final class Grading {
    */
   public static Grade compileAndGrade(Assignment a, Path sourceDir, Path workDir)
       throws IOException {
-    return compileAndGrade(a, sourceDir, workDir, Texts.english());
+    return compileAndGrade(a, sourceDir, workDir, a.texts("en"));
   }
 
   /** {@link #compileAndGrade(Assignment, Path, Path)} with the checks in {@code t}'s language. */
   public static Grade compileAndGrade(Assignment a, Path sourceDir, Path workDir, Texts t)
       throws IOException {
     SubmissionCompiler.Result r =
-        SubmissionCompiler.compile(sourceDir, workDir, SubmissionCompiler.classPath());
+        SubmissionCompiler.compile(sourceDir, workDir, SubmissionCompiler.classPath(a));
     if (!r.ok()) {
       return compileFailure(a, r.errors(), t);
     }

@@ -61,6 +61,27 @@ final class Outcomes {
     return exitCode == OOM_EXIT ? Status.OUT_OF_MEMORY : Status.CRASH;
   }
 
+  /**
+   * The status of a JVM that ended (or was stopped) while it compiled the submission: the compiler
+   * ran out of time or memory (or of processor time), or the JVM crashed.
+   */
+  static Status compileStatus(boolean timedOut, int exitCode, String log) {
+    boolean memory = exitCode == OOM_EXIT || log.contains("OutOfMemoryError");
+    return timedOut || exitCode == CPU_LIMIT_EXIT || memory ? Status.COMPILE_LIMIT : Status.CRASH;
+  }
+
+  /** What the student reads about a compile that did not finish, in {@code t}'s language. */
+  static String compileDetail(
+      boolean timedOut, int exitCode, Duration timeout, String lastOutput, Texts t) {
+    if (timedOut || exitCode == CPU_LIMIT_EXIT) {
+      return t.get("compile.limit.time", timeout.toSeconds());
+    }
+    if (exitCode == OOM_EXIT || lastOutput.contains("OutOfMemoryError")) {
+      return t.get("compile.limit.memory");
+    }
+    return t.get("outcome.crash", exitCode, lastOutput);
+  }
+
   /** What the teacher and the student read about it, in {@code t}'s language. */
   static String detail(Status s, int exitCode, Duration timeout, String lastOutput, Texts t) {
     return switch (s) {

@@ -7,7 +7,9 @@ import org.jaria.sim.SimWorld;
 
 /**
  * The simulated robot's true path, one sample per world step: where it really was (not where its
- * odometry thought), when, and whether it was stalled against something.
+ * odometry thought), which way it faced, when, and whether it was stalled against something. An
+ * assignment's checks are plain functions over it; {@link #recorded} makes one from values, to test
+ * them as values.
  */
 public final class PoseTrace implements AutoCloseable {
 
@@ -18,6 +20,7 @@ public final class PoseTrace implements AutoCloseable {
   private double[] ys = new double[1024];
   private double[] ts = new double[1024];
   private double[] vs = new double[1024];
+  private double[] ths = new double[1024];
   private int size;
   private double firstStallSeconds = Double.NaN;
   private double firstStallX;
@@ -33,18 +36,46 @@ public final class PoseTrace implements AutoCloseable {
     world.addStepListener(listener);
   }
 
+  private PoseTrace() {
+    this.world = null;
+    this.robot = null;
+    this.t0 = 0;
+  }
+
+  /**
+   * A trace of the given samples (seconds, x and y in mm, heading in degrees, speed in mm/s; all of
+   * one length), never stalled: for testing checks as plain functions.
+   */
+  public static PoseTrace recorded(
+      double[] seconds, double[] x, double[] y, double[] thDeg, double[] speed) {
+    int n = seconds.length;
+    if (x.length != n || y.length != n || thDeg.length != n || speed.length != n) {
+      throw new IllegalArgumentException("every sample needs a time, x, y, heading and speed");
+    }
+    PoseTrace t = new PoseTrace();
+    t.ts = Arrays.copyOf(seconds, Math.max(1, n));
+    t.xs = Arrays.copyOf(x, Math.max(1, n));
+    t.ys = Arrays.copyOf(y, Math.max(1, n));
+    t.ths = Arrays.copyOf(thDeg, Math.max(1, n));
+    t.vs = Arrays.copyOf(speed, Math.max(1, n));
+    t.size = n;
+    return t;
+  }
+
   private void sample() {
     if (size == xs.length) {
       xs = Arrays.copyOf(xs, size * 2);
       ys = Arrays.copyOf(ys, size * 2);
       ts = Arrays.copyOf(ts, size * 2);
       vs = Arrays.copyOf(vs, size * 2);
+      ths = Arrays.copyOf(ths, size * 2);
     }
     ArPose p = robot.getTruePose();
     xs[size] = p.x();
     ys[size] = p.y();
     ts[size] = (world.getClock().nanoTime() - t0) / 1e9;
     vs[size] = Math.abs(robot.getVel());
+    ths[size] = p.th();
     if (Double.isNaN(firstStallSeconds) && robot.isStalled()) {
       firstStallSeconds = ts[size];
       firstStallX = p.x();
@@ -66,6 +97,11 @@ public final class PoseTrace implements AutoCloseable {
   /** Y of sample i, mm. */
   public double y(int i) {
     return ys[i];
+  }
+
+  /** The heading of sample i, degrees (-180 to 180). */
+  public double th(int i) {
+    return ths[i];
   }
 
   /** Seconds since recording began, of sample i. */
@@ -137,6 +173,8 @@ public final class PoseTrace implements AutoCloseable {
 
   @Override
   public void close() {
-    world.removeStepListener(listener);
+    if (world != null) {
+      world.removeStepListener(listener);
+    }
   }
 }

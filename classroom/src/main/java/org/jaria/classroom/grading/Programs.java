@@ -21,7 +21,36 @@ public final class Programs {
   }
 
   /** How the program ended, and the check that says so. */
-  public record Ending(ProgramResult result, Check check) {}
+  public record Ending(ProgramResult result, Check check) {
+
+    /** Whether the program returned by itself. */
+    public boolean finished() {
+      return result == ProgramResult.FINISHED;
+    }
+
+    /**
+     * {@code c} as it stands if the program finished or {@code c} passed; otherwise {@code c}
+     * withheld: it was not judged, because the program did not end by itself (which {@link #check}
+     * already diagnoses), so the student reads one diagnosis for one cause.
+     */
+    public Check judged(Check c, Texts t) {
+      if (finished() || c.passed()) {
+        return c;
+      }
+      return Check.withheld(c.name(), c.points(), notJudged(t));
+    }
+
+    /** "not judged: your program ... (see 'program ends')", in {@code t}'s language. */
+    public String notJudged(Texts t) {
+      String why =
+          switch (result) {
+            case STUCK -> t.get("program.why.stuck");
+            case TIMED_OUT -> t.get("program.why.timedOut");
+            case FAILED, FINISHED -> t.get("program.why.failed");
+          };
+      return t.get("program.notJudged", why, check.name());
+    }
+  }
 
   /**
    * Runs the student's program (set up on their side of {@code link}) for at most {@code max} of

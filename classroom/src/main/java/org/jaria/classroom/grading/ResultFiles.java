@@ -4,12 +4,13 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 
 /**
  * One student's result on disk, in their folder of the report: grade.txt (the checks) and
- * status.txt (status and seconds), written by the grader only. Re-grading one student reads the
- * others' back from here.
+ * status.txt (status and seconds, then the student's name), written by the grader only. Re-grading
+ * one student reads the others' back from here, and checks that each folder is still the student's.
  */
 final class ResultFiles {
 
@@ -20,7 +21,12 @@ final class ResultFiles {
     GradeFile.write(r.grade(), studentDir.resolve("grade.txt"));
     Files.writeString(
         studentDir.resolve("status.txt"),
-        String.format(Locale.ROOT, "%s %.2f%n", r.status(), r.seconds()),
+        String.format(
+            Locale.ROOT,
+            "%s %.2f%nstudent %s%n",
+            r.status(),
+            r.seconds(),
+            GradeFile.escape(r.student())),
         StandardCharsets.UTF_8);
   }
 
@@ -31,8 +37,15 @@ final class ResultFiles {
    */
   static Grader.Result read(Path studentDir, String student) throws IOException {
     Grade g = GradeFile.read(studentDir.resolve("grade.txt"));
-    String status =
-        Files.readString(studentDir.resolve("status.txt"), StandardCharsets.UTF_8).strip();
+    List<String> lines =
+        Files.readAllLines(studentDir.resolve("status.txt"), StandardCharsets.UTF_8);
+    String status = lines.isEmpty() ? "" : lines.get(0).strip();
+    if (lines.size() > 1
+        && lines.get(1).startsWith("student ")
+        && !GradeFile.unescape(lines.get(1).substring(8)).equals(student)) {
+      throw new IOException(
+          studentDir + " holds the result of another student: grade the class again");
+    }
     int space = status.indexOf(' ');
     String[] f =
         space < 0

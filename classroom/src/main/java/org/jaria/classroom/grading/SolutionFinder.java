@@ -15,11 +15,16 @@ public final class SolutionFinder {
 
   /** A class loader for the classes compiled into {@code classesDir}, on top of JAria's. */
   public static URLClassLoader loaderFor(Path classesDir) {
+    return loaderFor(classesDir, SolutionFinder.class.getClassLoader());
+  }
+
+  /**
+   * A class loader for the classes compiled into {@code classesDir}, on top of {@code parent} (the
+   * loader of a pack's assignment, so a solution may use the pack's own types).
+   */
+  public static URLClassLoader loaderFor(Path classesDir, ClassLoader parent) {
     try {
-      return new URLClassLoader(
-          "submission",
-          new URL[] {classesDir.toUri().toURL()},
-          SolutionFinder.class.getClassLoader());
+      return new URLClassLoader("submission", new URL[] {classesDir.toUri().toURL()}, parent);
     } catch (MalformedURLException e) {
       throw new IllegalArgumentException("not a folder: " + classesDir, e);
     }
@@ -60,6 +65,11 @@ public final class SolutionFinder {
     if (!fits.isEmpty()) {
       return fits.get(0);
     }
-    throw new Solutions.SolutionException(null, "setup.noSolution." + a.id(), seen.toString());
+    String own = "setup.noSolution." + a.id();
+    if (Texts.english().has(own)) {
+      throw new Solutions.SolutionException(null, own, seen.toString());
+    }
+    throw new Solutions.SolutionException(
+        null, "setup.noSolution", seen.toString(), a.solutionShape());
   }
 }

@@ -4,15 +4,21 @@ package org.jaria.classroom.grading;
 public enum Status {
   /** Compiled, ran and was graded (the grade says how well it did). */
   GRADED,
-  /** No Java files, or they do not compile. */
+  /** The student's folder holds no Java file to grade (or is a link, which is not followed). */
+  NO_SUBMISSION,
+  /** The submission is larger than a submission may be (files, bytes); nothing was compiled. */
+  TOO_LARGE,
+  /** The Java files do not compile. */
   COMPILE_ERROR,
+  /** Compiling took more time or memory than allowed (or the compiler gave up); it was stopped. */
+  COMPILE_LIMIT,
   /** Still running at the time limit (real or processor time); it was stopped. */
   TIMEOUT,
   /** Its Java machine ran out of memory. */
   OUT_OF_MEMORY,
   /** It started more threads or processes than allowed. */
   TOO_MANY_THREADS,
-  /** It wrote more files into its scratch folder than allowed; it was stopped. */
+  /** It wrote more files, or more data, into its scratch folder than allowed; it was stopped. */
   TOO_MANY_FILES,
   /** It called System.exit, which ended its Java machine before grading was done. */
   EXIT,
@@ -27,6 +33,24 @@ public enum Status {
           es
               ? "Tu programa se ejecutó y se evaluó en el simulador."
               : "Your program ran and was graded on the simulator.";
+      case NO_SUBMISSION ->
+          es
+              ? "No hay ningún archivo .java que evaluar en tu carpeta: entrega tus archivos .java"
+                  + " (no enlaces a ellos)."
+              : "There is no .java file to grade in your folder: hand in your .java files"
+                  + " themselves (not links to them).";
+      case TOO_LARGE ->
+          es
+              ? "Tu entrega es más grande de lo permitido y no se compiló: entrega solo tus"
+                  + " propios archivos fuente."
+              : "Your submission is larger than allowed and was not compiled: hand in only your"
+                  + " own source files.";
+      case COMPILE_LIMIT ->
+          es
+              ? "Compilar tu código necesitó más tiempo o memoria de lo permitido y se detuvo:"
+                  + " simplifica las expresiones muy largas o las llamadas genéricas muy anidadas."
+              : "Compiling your code took more time or memory than allowed and was stopped:"
+                  + " simplify very long expressions or deeply nested generic calls.";
       case COMPILE_ERROR ->
           es
               ? "Tu código no compila: corrige los errores indicados y vuelve a entregarlo."
@@ -53,10 +77,12 @@ public enum Status {
                   + " threads of your own, the robot already runs your code on its cycle.";
       case TOO_MANY_FILES ->
           es
-              ? "Tu programa creó más archivos de los permitidos y se detuvo: un programa del robot"
-                  + " no necesita escribir archivos; si guardas datos, usa uno solo."
-              : "Your program created more files than allowed and was stopped: a robot program"
-                  + " needs to write no files; if you log data, use a single file.";
+              ? "Tu programa creó más archivos, o escribió más datos, de los permitidos y se"
+                  + " detuvo: un programa del robot no necesita escribir archivos; si guardas datos,"
+                  + " usa uno solo y pequeño."
+              : "Your program created more files, or wrote more data, than allowed and was"
+                  + " stopped: a robot program needs to write no files; if you log data, use a"
+                  + " single small file.";
       case EXIT ->
           es
               ? "Tu programa llamó a System.exit, que termina todo el programa Java (robot"

@@ -52,6 +52,14 @@ public final class SubmissionCompiler {
    * runner and an IDE alike.
    */
   public static String classPath() {
+    return classPath(null);
+  }
+
+  /**
+   * {@link #classPath()} and where {@code a}'s classes come from (a pack's folder or jar), so a
+   * solution may use the pack's own types; {@code a} may be null.
+   */
+  public static String classPath(Assignment a) {
     Set<String> parts = new LinkedHashSet<>();
     String own = System.getProperty("java.class.path", "");
     for (int from = 0; from <= own.length(); ) {
@@ -62,14 +70,19 @@ public final class SubmissionCompiler {
       }
       from = to + 1;
     }
-    for (Class<?> anchor :
-        List.of(
-            SubmissionCompiler.class,
-            org.jaria.robot.ArRobot.class,
-            org.jaria.sim.SimWorld.class,
-            org.jaria.arnl.ArPathPlanningTask.class,
-            org.jaria.acts.ArACTS_1_2.class,
-            org.slf4j.LoggerFactory.class)) {
+    List<Class<?>> anchors =
+        new ArrayList<>(
+            List.of(
+                SubmissionCompiler.class,
+                org.jaria.robot.ArRobot.class,
+                org.jaria.sim.SimWorld.class,
+                org.jaria.arnl.ArPathPlanningTask.class,
+                org.jaria.acts.ArACTS_1_2.class,
+                org.slf4j.LoggerFactory.class));
+    if (a != null) {
+      anchors.add(a.getClass());
+    }
+    for (Class<?> anchor : anchors) {
       try {
         var src = anchor.getProtectionDomain().getCodeSource();
         if (src != null) {

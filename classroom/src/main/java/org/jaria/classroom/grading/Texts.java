@@ -81,6 +81,35 @@ public final class Texts {
     return s;
   }
 
+  /**
+   * This catalogue and the sentences of a pack's own: {@code baseName_LANG.properties} beside
+   * {@code anchor} (its own sentences win where a key is in both). A pack without a catalogue in
+   * this language speaks English for its own sentences.
+   *
+   * @throws IllegalStateException if the pack has not even an English catalogue
+   */
+  public Texts with(Class<?> anchor, String baseName) {
+    Properties p = new Properties();
+    p.putAll(entries);
+    InputStream in = anchor.getResourceAsStream(baseName + "_" + lang + ".properties");
+    if (in == null) {
+      in = anchor.getResourceAsStream(baseName + "_en.properties");
+    }
+    if (in == null) {
+      throw new IllegalStateException(
+          baseName
+              + "_en.properties is missing beside "
+              + anchor.getName()
+              + ": a pack's sentences need at least an English catalogue");
+    }
+    try (InputStream s = in) {
+      p.load(new InputStreamReader(s, StandardCharsets.UTF_8));
+    } catch (IOException e) {
+      throw new UncheckedIOException(e);
+    }
+    return new Texts(lang, p);
+  }
+
   private static Texts load(String lang) {
     String name = "checks_" + lang + ".properties";
     Properties p = new Properties();

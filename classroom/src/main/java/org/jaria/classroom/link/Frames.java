@@ -32,6 +32,9 @@ final class Frames {
   /** Grader: the end; answer {@link #BYE}. */
   static final int END = 'E';
 
+  /** Student: what came of compiling the submission (its first frame; see CompileReport). */
+  static final int COMPILED = 'K';
+
   /** Student: an answer with one string. */
   static final int REPLY = 'R';
 

@@ -12,6 +12,8 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.function.BooleanSupplier;
 import org.jaria.connection.ArDeviceConnection;
+import org.jaria.geom.ArMath;
+import org.jaria.geom.ArPose;
 import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
 import org.jaria.sim.client.SimulatedRobot.ProgramResult;
@@ -27,14 +29,38 @@ import org.jaria.sim.client.SimulatedRobot.ProgramResult;
  *
  * <p>Everything the student's side reports (whether the program ended, what its actions threw) is a
  * claim by the student's process; the checks worth most points are made on the world's ground
- * truth.
+ * truth. The robot's channel carries to the simulator only what a real Pioneer accepts ({@link
+ * RobotCommands}): simulator control such as MobileSim's SIM_SET_POSE never reaches the world, and
+ * every packet dropped is counted in the streams' {@link LinkAudit}. After every step the robot's
+ * true pose is compared with the one before; a jump no robot can drive is recorded there too, and
+ * costs the student the whole grade.
  *
  * <p>Any failure of the link (the process ended, was killed, sent garbage) throws {@link LinkLost}
  * out of the world's step, and so out of the assignment's grading.
  */
 public final class StudentLink implements AutoCloseable {
 
+  /**
+   * How much faster than its model's top speeds (the most its firmware allows) a robot's true pose
+   * may move before it counts as a jump.
+   */
+  static final double SPEED_MARGIN = 1.2;
+
+  /** What a step may add to that (rounding, a push at a collision), mm and degrees. */
+  static final double SLACK_MM = 20;
+
+  static final double SLACK_DEG = 5;
+
+  private final double maxMmPerS;
+  private final double maxDegPerS;
+
   private final SimWorld world;
+  private final SimRobot robot;
+  private final LinkAudit audit;
+  private final RobotCommandFilter robotFilter;
+  private final long t0;
+  private ArPose lastPose;
+  private long lastPoseNanos;
   private final DataInputStream in;
   private final DataOutputStream out;
   private final List<ArDeviceConnection> channels;
@@ -46,11 +72,20 @@ public final class StudentLink implements AutoCloseable {
   private int robotFlags;
   private boolean closed;
 
-  private StudentLink(SimWorld world, StudentStreams s, List<ArDeviceConnection> channels) {
+  private StudentLink(
+      SimWorld world, SimRobot robot, StudentStreams s, List<ArDeviceConnection> channels) {
     this.world = world;
+    this.robot = robot;
     this.in = s.in();
     this.out = s.out();
+    this.audit = s.audit();
+    this.robotFilter = new RobotCommandFilter(s.audit(), robot.getName());
     this.channels = channels;
+    this.t0 = world.getClock().nanoTime();
+    this.lastPose = robot.getTruePose();
+    this.lastPoseNanos = t0;
+    this.maxMmPerS = SPEED_MARGIN * robot.getModel().getTransVelTop();
+    this.maxDegPerS = SPEED_MARGIN * robot.getModel().getRotVelTop();
   }
 
   /**
@@ -69,7 +104,7 @@ public final class StudentLink implements AutoCloseable {
     Map<String, ArDeviceConnection> all = new LinkedHashMap<>();
     all.put("robot", robot.connectInMemory());
     all.putAll(extra);
-    StudentLink link = new StudentLink(world, streams, new ArrayList<>(all.values()));
+    StudentLink link = new StudentLink(world, robot, streams, new ArrayList<>(all.values()));
     link.hello(robot.getName(), new ArrayList<>(all.keySet()));
     world.addStepListener(link.bridge);
     if (!link.runUntil(() -> (link.robotFlags & 1) == 0, Duration.ofSeconds(30))
@@ -123,6 +158,20 @@ public final class StudentLink implements AutoCloseable {
     } catch (IOException e) {
       throw lost(e);
     }
+  }
+
+  /**
+   * Moves the robot to {@code p} from the grader's side (a "kidnapped robot" assignment, say),
+   * without the move counting as a jump of its path.
+   */
+  public void moveRobot(ArPose p) {
+    robot.setTruePose(p);
+    lastPose = robot.getTruePose();
+  }
+
+  /** What the link dropped so far and whether the robot's path jumped. */
+  public LinkAudit audit() {
+    return audit;
   }
 
   /** Runs {@code ms} of virtual time. */
@@ -187,6 +236,7 @@ public final class StudentLink implements AutoCloseable {
   }
 
   private void tick() {
+    watchPose();
     try {
       out.writeByte(Frames.TICK);
       out.writeLong(world.getClock().nanoTime());
@@ -199,6 +249,21 @@ public final class StudentLink implements AutoCloseable {
     } catch (IOException e) {
       throw lost(e);
     }
+  }
+
+  /** Records a jump of the robot's true pose over the step just taken. */
+  private void watchPose() {
+    long now = world.getClock().nanoTime();
+    ArPose p = robot.getTruePose();
+    double dt = Math.max(0, (now - lastPoseNanos) / 1e9);
+    double mm = Math.hypot(p.x() - lastPose.x(), p.y() - lastPose.y());
+    double deg = Math.abs(ArMath.subAngle(p.th(), lastPose.th()));
+    if (mm > maxMmPerS * dt + SLACK_MM || deg > maxDegPerS * dt + SLACK_DEG) {
+      audit.jump(
+          new LinkAudit.Jump((now - t0) / 1e9, lastPose.x(), lastPose.y(), p.x(), p.y(), mm, deg));
+    }
+    lastPose = p;
+    lastPoseNanos = now;
   }
 
   /** Reads everything the simulator side wrote on {@code c} since the last tick into buf. */
@@ -219,9 +284,12 @@ public final class StudentLink implements AutoCloseable {
     int program = in.readUnsignedByte();
     robotFlags = in.readUnsignedByte();
     message = Frames.readString(in);
-    for (ArDeviceConnection c : channels) {
+    for (int i = 0; i < channels.size(); i++) {
+      ArDeviceConnection c = channels.get(i);
       byte[] b = Frames.readBytes(in);
-      if (b.length > 0 && c.getStatus() == ArDeviceConnection.Status.OPEN) {
+      if (i == 0) {
+        robotFilter.feed(b, b.length, world.getClock().nanoTime(), c);
+      } else if (b.length > 0 && c.getStatus() == ArDeviceConnection.Status.OPEN) {
         c.write(b, 0, b.length);
       }
     }

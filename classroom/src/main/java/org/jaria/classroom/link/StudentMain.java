@@ -17,11 +17,13 @@ import org.jaria.classroom.grading.SolutionFinder;
 import org.jaria.classroom.grading.SubmissionCompiler;
 
 /**
- * The main class of a student's JVM: the student's side of the robot link over standard input and
- * output. It knows only its assignment and its own compiled classes; the grade is made by the
- * grader at the other end. Whatever the student's code prints goes to standard error, so it cannot
- * mix with the link (a program that writes to the link's descriptor directly only breaks its own
- * grading).
+ * The main class of a student's JVM: it compiles the student's sources (inside the sandbox, under
+ * the same limits as the run, annotation processing off, so no student code runs while compiling),
+ * reports how that went as the link's first frame ({@link CompileReport}), then is the student's
+ * side of the robot link over standard input and output. It knows only its assignment and the
+ * student's own classes; the grade is made by the grader at the other end. Whatever the student's
+ * code prints goes to standard error, so it cannot mix with the link (a program that writes to the
+ * link's descriptor directly only breaks its own grading).
  */
 public final class StudentMain {
 
@@ -37,7 +39,7 @@ public final class StudentMain {
     Runtime.getRuntime().halt(3);
   }
 
-  /** Arguments: assignment id, folder of the student's compiled classes. */
+  /** Arguments: assignment id, folder of the student's sources, folder for their classes. */
   public static void main(String[] args) throws IOException {
     DataOutputStream out =
         new DataOutputStream(
@@ -47,12 +49,19 @@ public final class StudentMain {
             new BufferedInputStream(new FileInputStream(FileDescriptor.in), 1 << 16));
     System.setOut(System.err);
     System.setIn(new ByteArrayInputStream(new byte[0]));
-    if (args.length != 2) {
-      System.err.println("usage: StudentMain ASSIGNMENT CLASSES_DIR (started by the grader)");
+    if (args.length != 3) {
+      System.err.println(
+          "usage: StudentMain ASSIGNMENT SOURCES_DIR CLASSES_DIR (started by the grader)");
       Runtime.getRuntime().halt(2);
     }
+    Path classes = Path.of(args[2]);
+    CompileReport compiled = compile(Path.of(args[1]), classes);
+    compiled.write(out);
+    if (compiled.outcome() != CompileReport.COMPILED) {
+      System.err.flush();
+      Runtime.getRuntime().halt(0);
+    }
     Assignment a = Assignments.byId(args[0]);
-    Path classes = Path.of(args[1]);
     URLClassLoader loader = SolutionFinder.loaderFor(classes);
     StudentHarness harness =
         new StudentHarness(a, loader, SubmissionCompiler.classNames(classes), in, out);
@@ -77,5 +86,18 @@ public final class StudentMain {
     // The student's threads may still run (a program that ignored its interrupt): end regardless,
     // and without their shutdown hooks.
     Runtime.getRuntime().halt(0);
+  }
+
+  /** Compiles the sources; whatever stops the compiler is reported, not thrown. */
+  private static CompileReport compile(Path sources, Path classes) {
+    try {
+      SubmissionCompiler.Result r =
+          SubmissionCompiler.compile(sources, classes, SubmissionCompiler.classPath());
+      return r.ok()
+          ? new CompileReport(CompileReport.COMPILED, "")
+          : new CompileReport(CompileReport.ERRORS, r.errors());
+    } catch (IOException | RuntimeException | StackOverflowError e) {
+      return new CompileReport(CompileReport.COMPILER_FAILED, e.toString());
+    }
   }
 }

@@ -9,8 +9,8 @@ import java.nio.file.attribute.BasicFileAttributes;
 
 /**
  * Counts what a student's scratch folder holds. The operating system limits the size of each file
- * the student's JVM writes but not how many it makes, so the grader counts them while the JVM runs
- * and once more when it has ended.
+ * the student's JVM writes but neither how many it makes nor how much they hold together, so the
+ * grader counts them while the JVM runs and once more when it has ended.
  */
 public final class ScratchFiles {
 
@@ -25,32 +25,45 @@ public final class ScratchFiles {
    * @throws IOException if {@code dir} itself cannot be read
    */
   public static boolean over(Path dir, int max) throws IOException {
-    int[] n = {0};
+    return over(dir, max, Long.MAX_VALUE);
+  }
+
+  /**
+   * Whether {@code dir} holds more than {@code maxEntries} files and folders, or files of more than
+   * {@code maxBytes} bytes together. Stops as soon as either is over.
+   *
+   * @throws IOException if {@code dir} itself cannot be read
+   */
+  public static boolean over(Path dir, int maxEntries, long maxBytes) throws IOException {
+    long[] n = {0, 0};
     Files.walkFileTree(
         dir,
         new SimpleFileVisitor<>() {
           @Override
           public FileVisitResult preVisitDirectory(Path d, BasicFileAttributes a) {
-            return count(d);
+            return count(d, 0);
           }
 
           @Override
           public FileVisitResult visitFile(Path f, BasicFileAttributes a) {
-            return count(f);
+            return count(f, a.isRegularFile() ? a.size() : 0);
           }
 
           @Override
           public FileVisitResult visitFileFailed(Path f, IOException e) {
-            return count(f);
+            return count(f, 0);
           }
 
-          private FileVisitResult count(Path p) {
+          private FileVisitResult count(Path p, long bytes) {
             if (!p.equals(dir)) {
               n[0]++;
             }
-            return n[0] > max ? FileVisitResult.TERMINATE : FileVisitResult.CONTINUE;
+            n[1] += bytes;
+            return n[0] > maxEntries || n[1] > maxBytes
+                ? FileVisitResult.TERMINATE
+                : FileVisitResult.CONTINUE;
           }
         });
-    return n[0] > max;
+    return n[0] > maxEntries || n[1] > maxBytes;
   }
 }

@@ -81,6 +81,18 @@ public final class SquareAssignment implements Assignment {
   }
 
   @Override
+  public List<String> checkNames(Texts t) {
+    return List.of(
+        t.get("program.name"),
+        t.get("square.corner.name", 1),
+        t.get("square.corner.name", 2),
+        t.get("square.corner.name", 3),
+        t.get("square.back.name"),
+        t.get("square.stops.name"),
+        t.get("square.motion.name"));
+  }
+
+  @Override
   public StudentSide studentSide() {
     return new StudentSide() {
       private ArRobot robot;
@@ -115,9 +127,17 @@ public final class SquareAssignment implements Assignment {
         Programs.Ending end = Programs.run(sim, MAX_TIME, 1, t);
         checks.add(end.check());
         sim.runMillis(2000); // a program that returns while moving keeps moving
-        List<Check> corners = corners(trace, t);
+        List<Check> corners = new ArrayList<>();
+        for (Check c : corners(trace, t)) {
+          corners.add(end.judged(c, t));
+        }
         checks.addAll(corners);
-        checks.add(stopped(r, t));
+        // "still moving after your program ended" means nothing for a program that did not end
+        Check stopped = stopped(r, t);
+        checks.add(
+            end.finished()
+                ? stopped
+                : Check.withheld(stopped.name(), stopped.points(), end.notJudged(t)));
         String actions = sim.call("actions");
         checks.add(
             Check.of(
@@ -164,7 +184,7 @@ public final class SquareAssignment implements Assignment {
         continue;
       }
       if (missedOne > 0) {
-        checks.add(Check.fail(name, k < 4 ? 2 : 1, t.get("square.fixFirst", missedOne)));
+        checks.add(Check.withheld(name, k < 4 ? 2 : 1, t.get("square.fixFirst", missedOne)));
         continue;
       }
       missedOne = k;

@@ -96,6 +96,16 @@ public final class WallAssignment implements Assignment {
   }
 
   @Override
+  public List<String> checkNames(Texts t) {
+    return List.of(
+        t.get("fire.name"),
+        t.get("wall.along.name"),
+        t.get("wall.corner.name"),
+        t.get("wall.kept.name", Fmt.dist(NEAR), Fmt.dist(FAR)),
+        t.get("collisions.name"));
+  }
+
+  @Override
   public StudentSide studentSide() {
     return new StudentSide() {
       private GuardedAction guarded;

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.io.RandomAccessFile;
 import java.io.StringWriter;
 import java.net.ServerSocket;
 import java.net.SocketTimeoutException;
@@ -20,30 +21,39 @@ import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import org.jaria.classroom.sandbox.Sandbox;
 import org.jaria.classroom.square.SquareAssignment;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
  * A class with hostile submissions beside honest ones, graded once in the sandbox with two jobs:
- * each attack of issue 15 (forge the grade, tamper with or read others' files, write outside,
- * network, fork, threads, spin, allocate, System.exit, a stray process) gets 0 and its own status,
- * the honest students keep exactly the grade they get in one JVM, nothing outside the scratch
- * folders changes and no process of theirs is left.
+ * each attack (forge the grade, tamper with or read others' files, write outside, network, fork,
+ * threads, spin, allocate, System.exit, a stray process, fill the disk, bomb the compiler, hand in
+ * too much) gets 0 and its own status, the honest students keep exactly the grade they get in one
+ * JVM, nothing outside the scratch folders changes and no process of theirs is left. Hermetic: it
+ * looks only at its own scratch root and at the processes that name it, so another grading running
+ * beside it changes nothing.
  */
+@Tag("slow")
+@Timeout(value = 15, unit = TimeUnit.MINUTES)
 class GradeAttackTest {
 
   @TempDir static Path tmp;
 
   static Path subs;
   static Path out;
+  static Path scratch;
   static Path canary;
   static ServerSocket server;
   static String stdout;
+  static String stderr;
   static Map<String, String> before;
   static Map<String, Grader.Result> byStudent = new TreeMap<>();
 
@@ -74,6 +84,7 @@ class GradeAttackTest {
     assumeTrue(Sandbox.whyUnavailable().isEmpty(), "bubblewrap is not usable here");
     subs = tmp.resolve("submissions");
     out = tmp.resolve("report");
+    scratch = tmp.resolve("scratch");
     canary = tmp.resolve("canary");
     Files.createDirectories(canary);
     Files.writeString(canary.resolve("keep.txt"), "unchanged");
@@ -123,6 +134,10 @@ class GradeAttackTest {
             walk.replace(
                     "NAME_TEST",
                     "p.toString().endsWith(\".java\") || p.toString().contains(\"solution\")")
+                + "    try (var fds = Files.list(Path.of(\"/proc/self/fd\"))) {\n"
+                + "      for (Path p : fds.toList()) { try { System.out.println(\"fd \" +"
+                + " Files.readSymbolicLink(p)); } catch (IOException e) { } }\n"
+                + "    }\n"
                 + "    try (var ps = Files.list(Path.of(\"/proc\"))) {\n"
                 + "      for (Path p : ps.toList()) { try { System.out.println(\"cmdline \" +"
                 + " Files.readString(p.resolve(\"cmdline\")).replace('\\0', ' ')); } catch"
@@ -203,6 +218,50 @@ class GradeAttackTest {
     Files.createDirectories(subs.resolve("linker"));
     Files.createSymbolicLink(
         subs.resolve("linker/Square.java"), subs.resolve("alice/Square.java").toAbsolutePath());
+    // many files each below the file-size limit, more than the scratch folder may hold together
+    write(
+        "diskfill",
+        "Square.java",
+        run(
+            "    byte[] mb = new byte[1 << 20];\n"
+                + "    for (int i = 0; i < 8; i++) { try (var o = Files.newOutputStream(Path.of("
+                + "\"/sandbox/tmp/big\" + i))) { for (int k = 0; k < 15; k++) { o.write(mb); } } }\n"
+                + "    System.out.println(\"wrote 120 MB\");"));
+    // a short source that keeps the compiler busy for minutes (nested least upper bounds)
+    StringBuilder bomb =
+        new StringBuilder(
+            "import java.util.*;\npublic class Square {\n  void g(boolean b) {\n    var x = ");
+    String a = "1";
+    for (int i = 0; i < 7; i++) {
+      a = "(b ? new ArrayList<>(List.of(" + a + ")) : new LinkedList<>(Set.of(" + a + ")))";
+    }
+    write("inference", "Square.java", bomb.append(a).append(";\n  }\n}\n").toString());
+    // too much to hand in: a 50 MB source, and 10,000 sources
+    Files.createDirectories(subs.resolve("hugefile"));
+    try (RandomAccessFile f =
+        new RandomAccessFile(subs.resolve("hugefile/Square.java").toFile(), "rw")) {
+      f.setLength(50L << 20);
+    }
+    for (int i = 0; i < 10_000; i++) {
+      Path d = subs.resolve("manyfiles").resolve("p" + i / 1000);
+      Files.createDirectories(d);
+      Files.writeString(d.resolve("C" + i + ".java"), "class C" + i + " {}");
+    }
+    // a folder with nothing to grade, a linked student folder, a stray file beside the students
+    Files.createDirectories(subs.resolve("empty"));
+    Files.writeString(subs.resolve("empty/README.txt"), "my solution is in my head");
+    Files.createDirectories(tmp.resolve("elsewhere/linked"));
+    Files.writeString(tmp.resolve("elsewhere/linked/Square.java"), solution);
+    Files.createSymbolicLink(subs.resolve("linked"), tmp.resolve("elsewhere/linked"));
+    Files.writeString(subs.resolve("Square.java"), solution);
+    // two names one report folder could confuse: the honest one keeps their own result
+    write("a_b", "Square.java", solution);
+    write(
+        "a b",
+        "Square.java",
+        run(
+            "    List<long[]> hoard = new ArrayList<>();\n"
+                + "    while (true) { hoard.add(new long[1 << 20]); }"));
     before = snapshot(subs);
     before.putAll(snapshot(canary));
 
@@ -210,14 +269,23 @@ class GradeAttackTest {
     StringWriter e = new StringWriter();
     int exit =
         ClassGrading.grade(
-            GradeRequest.of("square", subs, out).withJobs(2).withTimeout(Duration.ofSeconds(10)),
+            GradeRequest.of("square", subs, out)
+                .withJobs(2)
+                .withTimeout(Duration.ofSeconds(10))
+                .withScratchRoot(scratch),
             new PrintWriter(o),
             new PrintWriter(e));
     stdout = o.toString();
-    assertEquals(0, exit, e.toString());
-    for (Path dir : SubmissionFolders.submissions(subs)) {
-      String name = SubmissionFolders.studentOf(dir);
-      byStudent.put(name, ResultFiles.read(out.resolve("students").resolve(name), name));
+    stderr = e.toString();
+    assertEquals(0, exit, stderr);
+    List<String> names =
+        SubmissionFolders.scan(subs).submissions().stream()
+            .map(SubmissionFolders.Submission::student)
+            .toList();
+    Map<String, String> folders = SubmissionFolders.reportFolders(names);
+    for (String name : names) {
+      byStudent.put(
+          name, ResultFiles.read(out.resolve("students").resolve(folders.get(name)), name));
     }
   }
 
@@ -288,7 +356,14 @@ class GradeAttackTest {
             Map.entry("allocate", Status.OUT_OF_MEMORY),
             Map.entry("exit", Status.EXIT),
             Map.entry("hoarder", Status.TOO_MANY_FILES),
-            Map.entry("linker", Status.COMPILE_ERROR));
+            Map.entry("diskfill", Status.TOO_MANY_FILES),
+            Map.entry("inference", Status.COMPILE_LIMIT),
+            Map.entry("hugefile", Status.TOO_LARGE),
+            Map.entry("manyfiles", Status.TOO_LARGE),
+            Map.entry("empty", Status.NO_SUBMISSION),
+            Map.entry("linked", Status.NO_SUBMISSION),
+            Map.entry("a b", Status.OUT_OF_MEMORY),
+            Map.entry("linker", Status.NO_SUBMISSION));
     for (var e : expected.entrySet()) {
       Grader.Result r = result(e.getKey());
       assertEquals(e.getValue(), r.status(), e.getKey() + ": " + r.grade().describe());
@@ -305,6 +380,8 @@ class GradeAttackTest {
     assertTrue(output("reader").contains("found 0 []"), output("reader"));
     // the processes it can see are its own: no grader, no path of the class or the report
     assertTrue(output("reader").contains("cmdline "), output("reader"));
+    // its file descriptors are pipes: none names the report's output file
+    assertTrue(output("reader").contains("fd pipe:"), output("reader"));
     assertFalse(output("reader").contains(subs.toString()), output("reader"));
     assertFalse(output("reader").contains(out.toString()), output("reader"));
     assertTrue(output("tamper").contains("found 0 []"), output("tamper"));
@@ -330,22 +407,87 @@ class GradeAttackTest {
     assertFalse(Files.exists(Path.of("/pwned")));
     // the grade files are the grader's: the forger's did not replace them
     assertFalse(Files.readString(out.resolve("students/forge/grade.txt")).contains("forged"));
-    try (Stream<Path> s = Files.list(Path.of(System.getProperty("java.io.tmpdir")))) {
-      List<Path> left =
-          s.filter(p -> p.getFileName().toString().startsWith(Grader.SCRATCH_PREFIX)).toList();
-      assertEquals(List.of(), left, "scratch folders left");
+    try (Stream<Path> s = Files.list(scratch)) {
+      assertEquals(List.of(), s.toList(), "scratch folders left");
     }
   }
 
   @Test
   void noProcessOfTheirsIsLeft() {
+    // this grading's sandboxes are the processes whose command line names its scratch root; what
+    // they started are their descendants
     List<String> left =
         ProcessHandle.allProcesses()
             .filter(
-                p -> p.info().commandLine().map(c -> c.contains("/sandbox/classes")).orElse(false))
+                p -> p.info().commandLine().map(c -> c.contains(scratch.toString())).orElse(false))
+            .flatMap(p -> Stream.concat(Stream.of(p), p.descendants()))
             .map(p -> p.pid() + " " + p.info().commandLine().orElse(""))
             .toList();
     assertEquals(List.of(), left);
+  }
+
+  @Test
+  void everyStudentWhoseSubmissionCannotRunIsToldWhy() {
+    assertTrue(stderr.contains("skipped Square.java: a file beside the students' folders"), stderr);
+    assertTrue(
+        result("inference").grade().describe().contains("compiling your code was still not done"),
+        result("inference").grade().describe());
+    assertTrue(
+        result("hugefile").grade().describe().contains("Square.java is 50.0 MB"),
+        result("hugefile").grade().describe());
+    assertTrue(
+        result("manyfiles").grade().describe().contains("10000 .java files (at most 200)"),
+        result("manyfiles").grade().describe());
+    assertTrue(
+        result("empty").grade().describe().contains("there is no .java file in your folder"),
+        result("empty").grade().describe());
+    assertTrue(
+        result("linked").grade().describe().contains("your folder is a link"),
+        result("linked").grade().describe());
+    assertTrue(
+        result("linker").grade().notes().toString().contains("Square.java"),
+        result("linker").grade().describe());
+  }
+
+  @Test
+  void lookAlikeNamesStayTwoStudents() throws IOException {
+    assertEquals(Status.GRADED, result("a_b").status(), result("a_b").grade().describe());
+    assertEquals(10, result("a_b").grade().score());
+    assertTrue(Files.readString(out.resolve("students/a_b~2/status.txt")).contains("student a b"));
+    // re-grading "a b" re-grades that student, into their own folder, and a_b keeps theirs
+    StringWriter o = new StringWriter();
+    StringWriter e = new StringWriter();
+    Path again = tmp.resolve("report-again");
+    copyTree(out, again);
+    int exit =
+        ClassGrading.grade(
+            GradeRequest.of("square", subs, again)
+                .onlyStudent("a b")
+                .withTimeout(Duration.ofSeconds(20))
+                .withScratchRoot(scratch),
+            new PrintWriter(o),
+            new PrintWriter(e));
+    assertEquals(0, exit, e.toString());
+    assertTrue(o.toString().contains("[1/1] a b "), o.toString());
+    assertTrue(
+        Files.readString(again.resolve("students/a_b~2/status.txt")).startsWith("OUT_OF_MEMORY"));
+    assertTrue(Files.readString(again.resolve("students/a_b/status.txt")).startsWith("GRADED"));
+    String csv = Files.readString(again.resolve("gradebook.csv"));
+    assertTrue(csv.contains("\na b,0,10,OUT_OF_MEMORY,"), csv);
+    assertTrue(csv.contains("\na_b,10,10,GRADED,"), csv);
+  }
+
+  private static void copyTree(Path from, Path to) throws IOException {
+    try (Stream<Path> s = Files.walk(from)) {
+      for (Path p : s.toList()) {
+        Path q = to.resolve(from.relativize(p).toString());
+        if (Files.isDirectory(p)) {
+          Files.createDirectories(q);
+        } else {
+          Files.copy(p, q);
+        }
+      }
+    }
   }
 
   @Test
@@ -360,6 +502,6 @@ class GradeAttackTest {
     assertTrue(
         Files.exists(out.resolve("students/spin/grade.txt")),
         "a timed-out student has a grade file");
-    assertTrue(stdout.contains("[16/16]"), stdout);
+    assertTrue(stdout.contains("[24/24]"), stdout);
   }
 }

@@ -166,4 +166,37 @@ class SamplesTest {
       }
     }
   }
+
+  @Test
+  void theMappingSampleLogsWhileDrivingAndBuildsTheLog(
+      @org.junit.jupiter.api.io.TempDir java.nio.file.Path tmp) throws Exception {
+    try (SimWorld world = SimWorld.bundled("hall", SimOptions.builder().seed(4).build())) {
+      SimRobot r = world.addRobot("p3dx-sh");
+      try (SimulatedRobot sim = SimulatedRobot.connect(world, r)) {
+        org.jaria.range.ArSimulatedLaser laser = new org.jaria.range.ArSimulatedLaser();
+        sim.robot().addRangeDevice(laser);
+        sim.robot().enableMotors();
+        sim.runMillis(1000);
+        java.nio.file.Path log = tmp.resolve("hall.2d");
+        int scans =
+            MappingSample.logWhileDriving(
+                sim.robot(),
+                laser,
+                log,
+                () -> {
+                  sim.robot().setVel(400);
+                  sim.runMillis(8000);
+                  sim.robot().setVel(0);
+                  sim.robot().setRotVel(30);
+                  sim.runMillis(6000);
+                  sim.robot().setRotVel(0);
+                  sim.runMillis(500);
+                });
+        assertTrue(scans >= 15, "scans logged: " + scans);
+        org.jaria.mapping.BuiltMap m = MappingSample.build(log, tmp.resolve("hall.map"));
+        assertTrue(m.pointCount() > 500, "map points: " + m.pointCount());
+        assertTrue(java.nio.file.Files.size(tmp.resolve("hall.map")) > 5000);
+      }
+    }
+  }
 }

@@ -17,8 +17,10 @@ import picocli.CommandLine.Spec;
       BenchCommand.Arnl.class,
       BenchCommand.Actions.class,
       BenchCommand.Net.class,
+      BenchCommand.Mapping.class,
       BenchCommand.Hostile.class,
-      BenchCommand.Web.class
+      BenchCommand.Web.class,
+      BenchCommand.Grade.class
     })
 final class BenchCommand implements Runnable {
 
@@ -125,6 +127,21 @@ final class BenchCommand implements Runnable {
     }
   }
 
+  /** {@code jaria bench mapping}. */
+  @Command(
+      name = "mapping",
+      description =
+          "Maps built from laser logs on the simulator (odometry error on): path and wall"
+              + " accuracy, coverage, build time against the log's duration, memory; then laser"
+              + " localization and navigation on the built map (office 3 laps, hall, columbia, a"
+              + " generated map).")
+  static final class Mapping extends QuickBench {
+    @Override
+    String table() {
+      return org.jaria.tools.bench.arnl.MappingBench.run(quick);
+    }
+  }
+
   /** {@code jaria bench hostile}. */
   @Command(
       name = "hostile",
@@ -135,6 +152,19 @@ final class BenchCommand implements Runnable {
     @Override
     String table() throws Exception {
       return org.jaria.tools.bench.HostileBenchmark.run(quick);
+    }
+  }
+
+  /** {@code jaria bench grade}. */
+  @Command(
+      name = "grade",
+      description =
+          "Grading a class of 60 square submissions (good, starters, not compiling, hanging,"
+              + " busy-waiting) with 2 jobs and with 1; the gradebooks must be the same.")
+  static final class Grade extends QuickBench {
+    @Override
+    String table() throws Exception {
+      return org.jaria.tools.bench.GradeBenchmark.run(quick);
     }
   }
 }

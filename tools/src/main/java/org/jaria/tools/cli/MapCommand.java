@@ -27,8 +27,10 @@ import picocli.CommandLine.Spec;
  */
 @Command(
     name = "map",
-    description = "Inspect ArMap .map files (the map editor is 'jaria mapper').",
-    subcommands = {MapCommand.Info.class})
+    description =
+        "Inspect ArMap .map files, or build one from a laser scan log (the map editor is 'jaria"
+            + " mapper').",
+    subcommands = {MapCommand.Info.class, MapBuildCommand.class})
 final class MapCommand implements Runnable {
 
   @Spec CommandSpec spec;

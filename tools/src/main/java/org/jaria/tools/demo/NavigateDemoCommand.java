@@ -29,6 +29,14 @@ final class NavigateDemoCommand implements Callable<Integer> {
   String map = "office";
 
   @Option(
+      names = "--world",
+      paramLabel = "FILE",
+      description =
+          "The embedded simulator's world, if not the map: e.g. the building a map was built in"
+              + " with 'jaria laser log' and 'jaria map build' (the robot starts at its home).")
+  String world;
+
+  @Option(
       names = "--goal",
       paramLabel = "NAME",
       description = "A goal name from the map, or a pose x,y[,th] in mm/degrees (repeatable).")
@@ -53,7 +61,7 @@ final class NavigateDemoCommand implements Callable<Integer> {
   public Integer call() {
     List<String> g = goals.isEmpty() ? List.of(defaultGoal(map)) : goals;
     PrintStream out = new PrintStream(System.out, true, StandardCharsets.UTF_8);
-    return NavigateDemo.run(map, g, remote, out, speed);
+    return NavigateDemo.run(map, world, g, remote, out, speed);
   }
 
   /**

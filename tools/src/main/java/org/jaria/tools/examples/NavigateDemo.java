@@ -49,6 +49,9 @@ public final class NavigateDemo {
    *     simulated seconds per real second
    * @param seed seed of the simulator and the localization
    * @param goalTimeout how long to wait for one goal
+   * @param world for the embedded simulator: the world the robot drives in, if not {@code map} (a
+   *     map built from a scan log of that world: the robot starts at the world's home, which is the
+   *     built map's RobotHome, and localizes and plans on the built map), or null
    */
   public record Options(
       String map,
@@ -56,7 +59,19 @@ public final class NavigateDemo {
       String robotAddress,
       double speedUp,
       long seed,
-      Duration goalTimeout) {
+      Duration goalTimeout,
+      String world) {
+
+    /** Options whose world is the map itself. */
+    public Options(
+        String map,
+        List<String> goals,
+        String robotAddress,
+        double speedUp,
+        long seed,
+        Duration goalTimeout) {
+      this(map, goals, robotAddress, speedUp, seed, goalTimeout, null);
+    }
 
     /** Checks and copies. */
     public Options {
@@ -130,8 +145,20 @@ public final class NavigateDemo {
    */
   public static int run(
       String map, List<String> goals, String robotAddress, PrintStream out, double speedUp) {
+    return run(map, null, goals, robotAddress, out, speedUp);
+  }
+
+  /** As above, the embedded simulator's world being {@code world} (null: the map itself). */
+  public static int run(
+      String map,
+      String world,
+      List<String> goals,
+      String robotAddress,
+      PrintStream out,
+      double speedUp) {
     try {
-      return run(new Options(map, goals, robotAddress, speedUp, 1, Duration.ofMinutes(10)), out)
+      return run(
+              new Options(map, goals, robotAddress, speedUp, 1, Duration.ofMinutes(10), world), out)
           .exitCode();
     } catch (IllegalArgumentException | IllegalStateException | UncheckedIOException e) {
       out.println("navigate: " + e.getMessage());
@@ -162,7 +189,8 @@ public final class NavigateDemo {
   private static Result runOnSimulator(Options o, ArMap map, PrintStream out) {
     SimOptions options =
         SimOptions.builder().seed(o.seed()).odometryError(OdometryError.random(0.02, 0.02)).build();
-    try (SimWorld world = SimWorld.create(map, options)) {
+    ArMap worldMap = o.world() == null ? map : loadMap(o.world());
+    try (SimWorld world = SimWorld.create(worldMap, options)) {
       SimRobot simRobot = world.addRobot("p3dx-sh");
       SimulatedRobot sim = SimulatedRobot.connect(world, simRobot);
       try {
@@ -170,7 +198,7 @@ public final class NavigateDemo {
             Locale.ROOT,
             "Embedded simulator: %s on %s (%s)%n",
             simRobot.getName(),
-            o.map(),
+            o.world() == null ? o.map() : o.world() + ", navigating on " + o.map(),
             o.speedUp() == 0 ? "lockstep" : "x" + o.speedUp() + " real time");
         Navigator nav =
             Navigator.create(
@@ -187,7 +215,8 @@ public final class NavigateDemo {
           stepper = sim::runMillis;
         }
         try {
-          return nav.visit(o, out, stepper, simRobot);
+          // in another world than the map, the true pose is in the world's frame: not compared
+          return nav.visit(o, out, stepper, o.world() == null ? simRobot : null);
         } finally {
           world.stopRealTime();
           nav.close();

@@ -30,7 +30,7 @@ import picocli.CommandLine.Spec;
       "  jaria laser --port localhost:9500 --type lms2xx   (a laser behind a TCP bridge)",
       "Without hardware: jaria laser emulate --type lms2xx --device /tmp/laser (see its --help)."
     },
-    subcommands = LaserEmulateCommand.class)
+    subcommands = {LaserEmulateCommand.class, LaserLogCommand.class})
 public final class LaserCommand implements Callable<Integer> {
 
   @Spec CommandSpec spec;

@@ -29,9 +29,9 @@ import picocli.CommandLine.Spec;
     name = "web",
     sortOptions = false,
     description = {
-      "Watch (and with --allow-control drive) a simulated robot in a web browser: the map, the",
-      "robot's true and believed pose, particles, sonar, laser and planned path. The same port",
-      "speaks Foxglove's WebSocket protocol. Runs until Ctrl-C (or --seconds)."
+      "Watch (and with --allow-control drive) a simulated robot in a web browser: the map, the"
+          + " robot's true and believed pose, particles, sonar, laser and planned path.",
+      "The same port speaks Foxglove's WebSocket protocol. Runs until Ctrl-C (or --seconds)."
     })
 public final class WebCommand implements Callable<Integer> {
 

@@ -103,4 +103,56 @@ class GradeCommandTest {
     String feedback = Files.readString(out.resolve("students/alice/feedback.txt"));
     assertTrue(feedback.contains("Nota: 10/10"), feedback);
   }
+
+  @Test
+  void writesAStarterPackAndGradesWithIt(@TempDir Path tmp) throws IOException {
+    Path pack = tmp.resolve("packs/parking");
+    Run made = jaria("grade", "--new-pack", pack.toString());
+    assertEquals(0, made.exit(), made.err());
+    assertTrue(made.out().contains("test/parking/ParkingAssignmentTest.java"), made.out());
+    Run again = jaria("grade", "--new-pack", pack.toString());
+    assertEquals(2, again.exit());
+    assertTrue(again.err().contains("already exists"), again.err());
+    Run list = jaria("grade", "--pack", pack.toString(), "--list");
+    assertEquals(0, list.exit(), list.err());
+    assertTrue(list.out().contains("parking Drive 1 m and stop (10 points)"), list.out());
+    Run notAPack = jaria("grade", "--pack", tmp.toString(), "--list");
+    assertEquals(2, notAPack.exit());
+    assertTrue(notAPack.err().contains("not an assignment pack"), notAPack.err());
+    Path out = tmp.resolve("report");
+    Run r =
+        jaria(
+            "grade",
+            "--pack",
+            pack.toString(),
+            "-a",
+            "parking",
+            "--unsafe",
+            "--bwrap",
+            tmp.resolve("no-such-bwrap").toString(),
+            "-o",
+            out.toString(),
+            pack.resolve("solution").toString());
+    assertEquals(0, r.exit(), r.err());
+    assertTrue(r.out().contains("10/10"), r.out());
+  }
+
+  @Test
+  void thePlatformOptionsReachTheRequest() {
+    CommandLine cli = JariaCli.commandLine();
+    CommandLine.ParseResult p = cli.parseArgs("grade", "-a", "square", "--gradescope");
+    GradeCommand g = (GradeCommand) p.subcommand().commandSpec().userObject();
+    assertEquals(Path.of("/autograder/results"), g.gradescope);
+    GradeCommand h =
+        (GradeCommand)
+            cli.parseArgs("grade", "-a", "square", "--gradescope", "out/results", "subs")
+                .subcommand()
+                .commandSpec()
+                .userObject();
+    assertEquals(Path.of("out/results"), h.gradescope);
+    assertEquals(Path.of("subs"), h.submissions);
+    Run both = jaria("grade", "-a", "square", "--gradescope", "r", "--github-classroom", "s");
+    assertEquals(2, both.exit());
+    assertTrue(both.err().contains("not both"), both.err());
+  }
 }

@@ -68,7 +68,7 @@ public final class ClientConnection implements Session.Listener.AutoDemanding {
   }
 
   private void handle(ClientRequest request, int size) {
-    if (!state.admit(System.nanoTime())) {
+    if (!state.admit(hub.floodNanos())) {
       hub.counters().flooded.increment();
       if (floodedHere.incrementAndGet() == FLOOD_CLOSE) {
         LOG.warn(

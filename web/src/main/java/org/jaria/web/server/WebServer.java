@@ -14,6 +14,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.function.LongSupplier;
 import org.eclipse.jetty.http.HttpStatus;
 import org.eclipse.jetty.server.Request;
 import org.eclipse.jetty.server.Response;
@@ -64,6 +65,8 @@ public final class WebServer implements AutoCloseable {
   private final ServerConnector connector;
   private final ScheduledExecutorService publisherThread;
   private final Publisher publisher;
+  // The clock the flood limit counts its allowance on: System.nanoTime, or a test's frozen clock.
+  private final LongSupplier floodClock;
   private volatile FrameObserver frameObserver;
   private volatile ScheduledFuture<?> publishing;
 
@@ -76,8 +79,10 @@ public final class WebServer implements AutoCloseable {
   @GuardedBy("this")
   private boolean closed;
 
-  private WebServer(WebOptions options, FrameSource source, Controls controls) {
+  private WebServer(
+      WebOptions options, FrameSource source, Controls controls, LongSupplier floodClock) {
     this.options = options;
+    this.floodClock = floodClock;
     this.controls = options.allowControl() ? controls : Controls.NONE;
     QueuedThreadPool pool = new QueuedThreadPool(16, 2);
     pool.setName("web-server");
@@ -122,7 +127,16 @@ public final class WebServer implements AutoCloseable {
    */
   public static WebServer start(WebOptions options, FrameSource source, Controls controls)
       throws IOException {
-    WebServer s = new WebServer(options, source, controls);
+    return start(options, source, controls, System::nanoTime);
+  }
+
+  /**
+   * {@link #start(WebOptions, FrameSource, Controls)} with the flood limit on {@code floodClock}.
+   */
+  static WebServer start(
+      WebOptions options, FrameSource source, Controls controls, LongSupplier floodClock)
+      throws IOException {
+    WebServer s = new WebServer(options, source, controls, floodClock);
     try {
       s.jetty.start();
     } catch (Exception e) {
@@ -275,6 +289,10 @@ public final class WebServer implements AutoCloseable {
   private static boolean sameOrigin(String origin, ServerUpgradeRequest req) {
     String host = req.getHeaders().get("Host");
     return host != null && (origin.equals("http://" + host) || origin.equals("https://" + host));
+  }
+
+  long floodNanos() {
+    return floodClock.getAsLong();
   }
 
   synchronized void opened(ClientConnection c) {

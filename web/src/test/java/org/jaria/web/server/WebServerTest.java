@@ -247,13 +247,20 @@ class WebServerTest {
 
   @Test
   void aFloodIsDroppedAndThenDisconnected() throws Exception {
-    try (WebServer s = start(WebOptions.loopback(0), Controls.NONE);
+    // Time stands still, so the allowance never refills: the burst passes, the rest is flooding,
+    // however slowly this machine sends.
+    try (WebServer s =
+            WebServer.start(WebOptions.loopback(0), new FakeSource(0), Controls.NONE, () -> 0L);
         WsClient c = WsClient.connect(s.websocketUrl())) {
       c.nextText("serverInfo");
       for (int i = 0; i < 3000 && !c.closed.isDone(); i++) {
         var unused = c.ws.sendText("{\"op\":\"unsubscribe\",\"subscriptionIds\":[1]}", true);
       }
-      assertEquals(1008, c.closed.get(30, TimeUnit.SECONDS), "policy violation");
+      // The server's close (1008, policy violation) can reach a client still sending as a broken
+      // connection instead (-1): either way the server ended it.
+      int code = c.closed.get(30, TimeUnit.SECONDS);
+      assertTrue(code == 1008 || code == -1, "closed by the server: " + code);
+      eventually(() -> s.stats().clients() == 0, "the flooder is gone");
       assertTrue(s.stats().flooded() >= ClientConnection.FLOOD_CLOSE, s.stats().toString());
     }
   }
