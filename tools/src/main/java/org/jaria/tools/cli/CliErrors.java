@@ -60,7 +60,9 @@ final class CliErrors {
 
   /**
    * "Did you mean" for a required option that is missing because it was mistyped (a command whose
-   * unknown options go to something else, as {@code screenshot}'s go to the app), or null.
+   * unknown options go to something else, as {@code screenshot}'s go to the app), or for a mistyped
+   * option of a command that also misses a required parameter (picocli reports the missing
+   * parameter first, as {@code map build --otuput} without its log would), or null.
    */
   private static String typoOfMissing(MissingParameterException e, String[] args) {
     List<String> missing = new ArrayList<>();
@@ -69,10 +71,17 @@ final class CliErrors {
         missing.addAll(List.of(o.names()));
       }
     }
+    List<String> known = names(e.getCommandLine(), true);
     for (String a : args) {
       String typed = a.contains("=") ? a.substring(0, a.indexOf('=')) : a;
+      if (!typed.startsWith("-") || missing.contains(typed) || known.contains(typed)) {
+        continue;
+      }
       List<String> similar = Suggestions.similar(typed, missing);
-      if (typed.startsWith("-") && !similar.isEmpty() && !missing.contains(typed)) {
+      if (similar.isEmpty()) {
+        similar = Suggestions.similar(typed, known);
+      }
+      if (!similar.isEmpty()) {
         return "Did you mean " + similar.get(0) + " (not " + typed + ")?";
       }
     }

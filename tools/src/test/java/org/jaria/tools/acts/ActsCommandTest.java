@@ -50,10 +50,11 @@ class ActsCommandTest {
     }
   }
 
+  /** Without the camera driver (module acts-camera, in apps) -P says how to get it. */
   @Test
-  void listsCameraParameters() {
-    assertEquals(0, cli(new ActsCommand()).execute("-P"));
-    assertTrue(out.toString().contains("brightness"));
+  void cameraParametersWithoutTheDriverSayWhatToAdd() {
+    assertEquals(1, cli(new ActsCommand()).execute("-P"));
+    assertTrue(err.toString().contains("org.jaria:acts-camera"), err.toString());
   }
 
   @Test
@@ -62,10 +63,12 @@ class ActsCommandTest {
     assertTrue(err.toString().contains("-p"), err.toString());
   }
 
+  /** Without the camera driver a camera device says how to get it; still images need nothing. */
   @Test
-  void noCameraGivesAClearMessage() {
+  void aCameraWithoutTheDriverSaysWhatToAdd() {
     assertEquals(1, cli(new ActsCommand()).execute("-d", "99", "-p", "0"));
-    assertTrue(err.toString().contains("no camera found at device index 99"), err.toString());
+    assertTrue(err.toString().contains("org.jaria:acts-camera"), err.toString());
+    assertTrue(err.toString().contains("-f FILE"), err.toString());
   }
 
   @Test

@@ -90,8 +90,8 @@ class JariaCliErrorsTest {
         "demo gyro --map MAP --seconds 1",
         "demo chase --map MAP --seconds 1",
         "demo navigate --map MAP",
-        "demo guiserver --map MAP --port 0 --seconds 1",
-        "mapper MAP"
+        "demo guiserver --map MAP --port 0 --seconds 1"
+        // mapper MAP: the apps module's AppsCommandLineTest (the map editor is an app)
       })
   void everyCommandThatTakesAMapSaysWhatIsWrongAndListsTheBundledOnes(
       String command, @TempDir Path dir) throws IOException {
@@ -189,13 +189,5 @@ class JariaCliErrorsTest {
     assertEquals(2, r.status(), r.all());
     assertNoTraceNorUsage(r);
     assertTrue(r.err().contains("--seconds"), r.err());
-  }
-
-  @Test
-  void aMapTheMapperCannotFindIsSaidBeforeAnyWindow() {
-    Run r = jaria("mapper", "nowhere-" + StandardCharsets.UTF_8.name());
-    assertEquals(2, r.status(), r.all());
-    assertTrue(r.err().startsWith("jaria mapper: there is no map file"), r.err());
-    assertTrue(r.err().contains("bundled: office, hall, columbia"), r.err());
   }
 }

@@ -1,4 +1,4 @@
-package org.jaria.tools;
+package org.jaria.apps;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
