@@ -49,6 +49,14 @@ final class CliErrors {
           similar.isEmpty()
               ? "Run '" + name + " --help' for its " + (command ? "commands." : "options.")
               : "Did you mean " + String.join(" or ", similar) + "?");
+    } else if (e instanceof MissingParameterException && unknownOption(cmd, args) != null) {
+      // The typo is why a required parameter seems missing (picocli reports the missing one first).
+      String typed = unknownOption(cmd, args);
+      err.println(name + ": unknown option '" + typed + "'");
+      err.println(
+          "Did you mean "
+              + String.join(" or ", Suggestions.similar(typed, names(cmd, true)))
+              + "?");
     } else {
       err.println(name + ": " + e.getMessage());
       String hint = e instanceof MissingParameterException m ? typoOfMissing(m, args) : null;
@@ -74,6 +82,25 @@ final class CliErrors {
       List<String> similar = Suggestions.similar(typed, missing);
       if (typed.startsWith("-") && !similar.isEmpty() && !missing.contains(typed)) {
         return "Did you mean " + similar.get(0) + " (not " + typed + ")?";
+      }
+    }
+    return null;
+  }
+
+  /**
+   * The first argument that looks like an option {@code cmd} does not have but is close to one it
+   * has, or null.
+   */
+  private static String unknownOption(CommandLine cmd, String[] args) {
+    List<String> known = names(cmd, true);
+    for (String a : args) {
+      String typed = a.contains("=") ? a.substring(0, a.indexOf('=')) : a;
+      if (typed.startsWith("-")
+          && typed.length() > 1
+          && !Character.isDigit(typed.charAt(1)) // a negative number is a value
+          && cmd.getCommandSpec().findOption(typed) == null
+          && !Suggestions.similar(typed, known).isEmpty()) {
+        return typed;
       }
     }
     return null;
