@@ -123,6 +123,12 @@ final class WorldServing {
     return runner != null;
   }
 
+  /** Simulated seconds per real second: 1 when stepped by hand, ≤ 0 when unthrottled. */
+  double speedup() {
+    RealTimeRunner r = runner;
+    return r == null ? 1 : r.speedup();
+  }
+
   /** Real milliseconds a tick should take (0 when stepped by hand or unthrottled). */
   int realIntervalMillis() {
     RealTimeRunner r = runner;
