@@ -18,6 +18,7 @@ final class RealTimeRunner {
 
   private final SimWorld world;
   private final long realTickNanos;
+  private final double speedup;
   private final Thread thread;
   private volatile boolean running = true;
   private volatile int lastIntervalMillis;
@@ -25,6 +26,7 @@ final class RealTimeRunner {
   RealTimeRunner(SimWorld world, long tickNanos, double speedup) {
     this.world = world;
     this.realTickNanos = speedup > 0 ? (long) (tickNanos / speedup) : 0;
+    this.speedup = speedup;
     this.thread = new Thread(this::run, THREAD_PREFIX + world.getName());
     thread.setDaemon(true);
   }
@@ -35,6 +37,11 @@ final class RealTimeRunner {
 
   boolean isRunnerThread() {
     return Thread.currentThread() == thread;
+  }
+
+  /** Simulated seconds per real second (≤ 0: as fast as it can). */
+  double speedup() {
+    return speedup;
   }
 
   int realIntervalMillis() {

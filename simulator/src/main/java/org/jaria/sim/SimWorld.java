@@ -388,6 +388,11 @@ public final class SimWorld implements AutoCloseable, CameraScene {
     return locked(serving::isRealTime);
   }
 
+  /** Simulated seconds per real second: 1 when stepped by hand, ≤ 0 when unthrottled. */
+  double speedup() {
+    return serving.speedup();
+  }
+
   /** Real milliseconds a tick should take (0 when stepped by hand or unthrottled). */
   int realIntervalMillis() {
     return serving.realIntervalMillis();

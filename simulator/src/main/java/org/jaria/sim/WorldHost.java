@@ -134,7 +134,8 @@ final class WorldHost implements SessionHost {
 
   @Override
   public int handshakeTimeoutMillis() {
-    return world.getOptions().server().handshakeTimeoutMillis();
+    return HandshakeTime.simulatedMillis(
+        world.getOptions().server().handshakeTimeoutMillis(), world.speedup());
   }
 
   @Override

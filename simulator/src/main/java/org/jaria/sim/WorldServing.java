@@ -180,6 +180,17 @@ final class WorldServing {
     }
   }
 
+  /** Simulated seconds per real second: 1 when stepped by hand, ≤ 0 when unthrottled. */
+  double speedup() {
+    lock.lock();
+    try {
+      RealTimeRunner r = runner;
+      return r == null ? 1 : r.speedup();
+    } finally {
+      lock.unlock();
+    }
+  }
+
   /** Real milliseconds a tick should take (0 when stepped by hand or unthrottled). */
   int realIntervalMillis() {
     lock.lock();

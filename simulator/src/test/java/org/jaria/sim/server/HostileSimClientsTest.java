@@ -45,7 +45,8 @@ class HostileSimClientsTest {
             "office",
             SimOptions.builder()
                 .basePort(0)
-                .server(SimServerOptions.DEFAULTS.withTimeouts(5000, 10_000))
+                // The handshake limit is real time (HandshakeTime): 5 s of simulated time here.
+                .server(SimServerOptions.DEFAULTS.withTimeouts((int) (5000 / speedup), 10_000))
                 .build());
     w.addRobot("p3dx-sh");
     w.listen();

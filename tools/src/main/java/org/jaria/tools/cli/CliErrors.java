@@ -74,7 +74,11 @@ final class CliErrors {
     List<String> known = names(e.getCommandLine(), true);
     for (String a : args) {
       String typed = a.contains("=") ? a.substring(0, a.indexOf('=')) : a;
-      if (!typed.startsWith("-") || missing.contains(typed) || known.contains(typed)) {
+      boolean negativeNumber = typed.length() > 1 && Character.isDigit(typed.charAt(1));
+      if (!typed.startsWith("-")
+          || negativeNumber
+          || missing.contains(typed)
+          || known.contains(typed)) {
         continue;
       }
       List<String> similar = Suggestions.similar(typed, missing);
