@@ -9,13 +9,16 @@ import org.jaria.net.NetEncodable;
  * ArNetworking has none): what a monitor draws as the map grows. Thinned so it always fits one
  * packet: at most {@link #MAX_POINTS} points and {@link #MAX_PATH} poses of the path.
  *
- * @param fileName the scan log being written ("" when no scan runs)
+ * @param status what the server is doing, for people ("scanning lab.2d", "built lab.map")
+ * @param fileName the scan log being written or built ("" when none)
  * @param scans scans logged so far
  * @param points the map's points so far, mm, in the log's frame
  * @param path the path driven, mm, in the same frame
  * @param pose the robot's latest corrected pose, or null before the first scan
  */
-public record LiveMap(String fileName, long scans, Points points, Points path, ArPose pose)
+public record LiveMap(
+    String status,
+    String fileName, long scans, Points points, Points path, ArPose pose)
     implements NetEncodable {
 
   /** Most points sent. */
@@ -24,10 +27,10 @@ public record LiveMap(String fileName, long scans, Points points, Points path, A
   /** Most poses of the path sent. */
   public static final int MAX_PATH = 400;
 
-  private static final int FIELDS = 5;
+  private static final int FIELDS = 6;
 
   /** No scan running. */
-  public static final LiveMap NONE = new LiveMap("", 0, Points.EMPTY, Points.EMPTY, null);
+  public static final LiveMap NONE = new LiveMap("", "", 0, Points.EMPTY, Points.EMPTY, null);
 
   /**
    * A live map from flat coordinates (x, y per point), thinned evenly to the limits.
@@ -35,8 +38,10 @@ public record LiveMap(String fileName, long scans, Points points, Points path, A
    * @param xy the points, x and y in turn, mm
    * @param pathXy the path, x and y in turn, mm
    */
-  public static LiveMap of(String fileName, long scans, int[] xy, int[] pathXy, ArPose pose) {
+  public static LiveMap of(
+      String status, String fileName, long scans, int[] xy, int[] pathXy, ArPose pose) {
     return new LiveMap(
+        status,
         fileName,
         scans,
         Points.ofFlat(thin(xy, MAX_POINTS), 2),
@@ -61,7 +66,7 @@ public record LiveMap(String fileName, long scans, Points points, Points path, A
 
   @Override
   public void write(ArNetPacket out) {
-    out.arrayToBuf(FIELDS).strToBuf(fileName).intToBuf(scans);
+    out.arrayToBuf(FIELDS).strToBuf(status).strToBuf(fileName).intToBuf(scans);
     points.write(out);
     path.write(out);
     Fields.writePose(out, pose);
@@ -72,7 +77,9 @@ public record LiveMap(String fileName, long scans, Points points, Points path, A
     int n = Fields.begin(in, FIELDS, "a live map");
     LiveMap m =
         new LiveMap(
-            in.bufToStr(), in.bufToLong(), Points.read(in), Points.read(in), Fields.readPose(in));
+            in.bufToStr(),
+            in.bufToStr(),
+            in.bufToLong(), Points.read(in), Points.read(in), Fields.readPose(in));
     Fields.end(in, n, FIELDS);
     return m;
   }

@@ -101,14 +101,14 @@ class MappingServiceTest {
       Futures.get(watcher.request("mappingStatusBroadcast", -1));
       Eventually.until("the first answer", () -> broadcasts.size() == 1);
       List<ScanLogEntry> live = new CopyOnWriteArrayList<>();
-      r.mapping.addLogEntryCallback(live::add);
+      r.mapping.addLogEntryCallback((h, e) -> live.add(e));
 
       assertEquals("", r.rig.call("mappingStatus").bufToStr());
       assertEquals(0, r.rig.call("mappingStart", "Lab").bufToByte(), "started");
       assertEquals("lab", r.rig.call("mappingStatus").bufToStr(), "ARIA lower-cases the name");
       assertEquals(1, r.rig.call("mappingStart", "other").bufToByte(), "one scan at a time");
       r.drive(20_000);
-      r.mapping.publishLiveMap(LiveMap.of("lab.2d", 3, new int[] {1, 2}, new int[0], null));
+      r.mapping.publishLiveMap(LiveMap.of("scanning", "lab.2d", 3, new int[] {1, 2}, new int[0], null));
       LiveMap m = LiveMap.read(r.rig.call("mappingLiveMap"));
       assertEquals("lab.2d", m.fileName());
       ArNetPacket ended = r.rig.call("mappingEnd");

@@ -11,9 +11,10 @@ import java.nio.file.StandardOpenOption;
 import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.function.Consumer;
+import java.util.function.BiConsumer;
 import org.jaria.laser.ArLaserLogger;
 import org.jaria.laser.log.ScanLogEntry;
+import org.jaria.laser.log.ScanLogHeader;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.data.LiveMap;
 import org.jaria.net.server.ArServerBase;
@@ -69,7 +70,7 @@ public final class ArServerHandlerMapping implements AutoCloseable {
   private final List<Runnable> begunCallbacks = new CopyOnWriteArrayList<>();
   private final List<Runnable> endCallbacks = new CopyOnWriteArrayList<>();
   private final List<Runnable> endedCallbacks = new CopyOnWriteArrayList<>();
-  private final List<Consumer<ScanLogEntry>> entryCallbacks = new CopyOnWriteArrayList<>();
+  private final List<BiConsumer<ScanLogHeader, ScanLogEntry>> entryCallbacks = new CopyOnWriteArrayList<>();
   private final List<String> startStrings = new CopyOnWriteArrayList<>();
   private final PublishedValue liveMap = new PublishedValue();
 
@@ -159,7 +160,7 @@ public final class ArServerHandlerMapping implements AutoCloseable {
     server.addPublishedData(
         "mappingLiveMap",
         "the map being built while a scan is logged (JAria)",
-        "JAria LiveMap: array of 5 fields: string log file; byte8 scans; points; path; pose",
+        "JAria LiveMap: array of 6 fields: string status; string log file; byte8 scans; points; path; pose",
         "RobotInfo",
         liveMap);
   }
@@ -233,7 +234,9 @@ public final class ArServerHandlerMapping implements AutoCloseable {
     for (String s : startStrings) {
       l.addInfoToLogPlain(s);
     }
-    entryCallbacks.forEach(l::addEntryCB);
+    for (BiConsumer<ScanLogHeader, ScanLogEntry> cb : entryCallbacks) {
+      l.addEntryCB(e -> cb.accept(l.getHeader(), e));
+    }
     logger = l;
     begunCallbacks.forEach(Runnable::run);
     log.info("mappingStart: scan {} started", name);
@@ -360,10 +363,11 @@ public final class ArServerHandlerMapping implements AutoCloseable {
   }
 
   /**
-   * Called with every scan and tag of the scans started from now on, right after it is written, on
-   * the robot's cycle thread (hand it to another thread: a map builder's queue).
+   * Called with the log's header and every scan and tag of the scans started from now on, right
+   * after it is written, on the robot's cycle thread (hand it to another thread: a map builder's
+   * queue).
    */
-  public void addLogEntryCallback(Consumer<ScanLogEntry> cb) {
+  public void addLogEntryCallback(BiConsumer<ScanLogHeader, ScanLogEntry> cb) {
     entryCallbacks.add(cb);
   }
 
