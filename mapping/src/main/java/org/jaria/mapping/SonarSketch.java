@@ -135,8 +135,7 @@ public final class SonarSketch {
     }
     float[] n = new float[nw * nh];
     for (int row = 0; row < height; row++) {
-      System.arraycopy(
-          odds, row * width, n, (row + minCy - nMinY) * nw + (minCx - nMinX), width);
+      System.arraycopy(odds, row * width, n, (row + minCy - nMinY) * nw + (minCx - nMinX), width);
     }
     odds = n;
     minCx = nMinX;

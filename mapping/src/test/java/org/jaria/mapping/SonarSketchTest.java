@@ -120,7 +120,6 @@ class SonarSketchTest {
     s.add(new ArPose(0, 0, 0), 0, 0, 0, 1000);
     s.add(new ArPose(0, 0, 0), 0, 0, 0, 1000);
     assertTrue(s.oddsAt(1000, 0) > 0, "the echo's cell");
-    assertThrows(
-        IllegalStateException.class, () -> s.add(new ArPose(1e9, 1e9, 0), 0, 0, 0, 1000));
+    assertThrows(IllegalStateException.class, () -> s.add(new ArPose(1e9, 1e9, 0), 0, 0, 0, 1000));
   }
 }

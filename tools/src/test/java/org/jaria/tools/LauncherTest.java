@@ -41,7 +41,15 @@ import org.w3c.dom.NodeList;
 class LauncherTest {
 
   private static final String[] MODULES = {
-    "aria-core", "simulator", "arnl-sonar", "mapping", "aria-net", "acts-vision", "classroom", "web", "tools"
+    "aria-core",
+    "simulator",
+    "arnl-sonar",
+    "mapping",
+    "aria-net",
+    "acts-vision",
+    "classroom",
+    "web",
+    "tools"
   };
 
   @TempDir Path repo;

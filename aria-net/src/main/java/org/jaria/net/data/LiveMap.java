@@ -17,8 +17,7 @@ import org.jaria.net.NetEncodable;
  * @param pose the robot's latest corrected pose, or null before the first scan
  */
 public record LiveMap(
-    String status,
-    String fileName, long scans, Points points, Points path, ArPose pose)
+    String status, String fileName, long scans, Points points, Points path, ArPose pose)
     implements NetEncodable {
 
   /** Most points sent. */
@@ -79,7 +78,10 @@ public record LiveMap(
         new LiveMap(
             in.bufToStr(),
             in.bufToStr(),
-            in.bufToLong(), Points.read(in), Points.read(in), Fields.readPose(in));
+            in.bufToLong(),
+            Points.read(in),
+            Points.read(in),
+            Fields.readPose(in));
     Fields.end(in, n, FIELDS);
     return m;
   }

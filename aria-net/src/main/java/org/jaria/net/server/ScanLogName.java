@@ -22,8 +22,8 @@ public final class ScanLogName {
   private ScanLogName() {}
 
   /**
-   * The log's name as ARIA's server makes it from what a client sent: lower case, {@code .2d}
-   * added unless it ends with it.
+   * The log's name as ARIA's server makes it from what a client sent: lower case, {@code .2d} added
+   * unless it ends with it.
    */
   public static String fileName(String requested) {
     String lower = requested.toLowerCase(Locale.ROOT);
@@ -78,8 +78,8 @@ public final class ScanLogName {
   }
 
   /**
-   * The map a log is built into: {@code lab.2d} gives {@code lab.map}, or {@code lab-2.map},
-   * {@code lab-3.map} ... if that exists already (a scan never replaces a map of the folder).
+   * The map a log is built into: {@code lab.2d} gives {@code lab.map}, or {@code lab-2.map}, {@code
+   * lab-3.map} ... if that exists already (a scan never replaces a map of the folder).
    */
   public static Path mapFor(Path log) {
     String n = log.getFileName().toString();

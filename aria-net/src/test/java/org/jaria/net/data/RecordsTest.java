@@ -73,7 +73,12 @@ class RecordsTest {
   void liveMapsFitOnePacketHoweverLarge() {
     roundTrip(LiveMap.NONE, LiveMap::read);
     roundTrip(
-        LiveMap.of("scanning lab.2d", "lab.2d", 12, new int[] {1, 2, 3, 4}, new int[] {0, 0},
+        LiveMap.of(
+            "scanning lab.2d",
+            "lab.2d",
+            12,
+            new int[] {1, 2, 3, 4},
+            new int[] {0, 0},
             new ArPose(10, 20, 30)),
         LiveMap::read);
     int[] many = new int[2 * 50_000];

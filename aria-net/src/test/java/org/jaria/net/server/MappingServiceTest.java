@@ -108,7 +108,8 @@ class MappingServiceTest {
       assertEquals("lab", r.rig.call("mappingStatus").bufToStr(), "ARIA lower-cases the name");
       assertEquals(1, r.rig.call("mappingStart", "other").bufToByte(), "one scan at a time");
       r.drive(20_000);
-      r.mapping.publishLiveMap(LiveMap.of("scanning", "lab.2d", 3, new int[] {1, 2}, new int[0], null));
+      r.mapping.publishLiveMap(
+          LiveMap.of("scanning", "lab.2d", 3, new int[] {1, 2}, new int[0], null));
       LiveMap m = LiveMap.read(r.rig.call("mappingLiveMap"));
       assertEquals("lab.2d", m.fileName());
       ArNetPacket ended = r.rig.call("mappingEnd");
@@ -132,8 +133,7 @@ class MappingServiceTest {
   }
 
   @Test
-  void namesOutsideTheFolderAreRefusedAndTheServerKeepsServing(@TempDir Path tmp)
-      throws Exception {
+  void namesOutsideTheFolderAreRefusedAndTheServerKeepsServing(@TempDir Path tmp) throws Exception {
     Path dir = Files.createDirectories(tmp.resolve("maps"));
     Files.writeString(tmp.resolve("secret.2d"), "keep");
     Files.createSymbolicLink(dir.resolve("link.2d"), tmp.resolve("secret.2d"));
@@ -198,9 +198,10 @@ class MappingServiceTest {
       ArNetPacket body = new ArNetPacket();
       body.strToBuf("sneaky");
       raw.requestOnce(r.rig.gui.getServer().findCommandFromName("mappingStart"), body);
-      raw.requestOnce(r.rig.gui.getServer().findCommandFromName("mappingStatus"), new ArNetPacket());
-      assertEquals("", raw.readUntil(r.rig.gui.getServer().findCommandFromName("mappingStatus"))
-          .bufToStr());
+      raw.requestOnce(
+          r.rig.gui.getServer().findCommandFromName("mappingStatus"), new ArNetPacket());
+      assertEquals(
+          "", raw.readUntil(r.rig.gui.getServer().findCommandFromName("mappingStatus")).bufToStr());
       assertEquals(before + 1, stats.getRequestErrors(), "refused and counted");
       assertFalse(Files.exists(dir.resolve("sneaky.2d")));
       mapper.connect("127.0.0.1", port, "mapper", "pw");
@@ -222,7 +223,9 @@ class MappingServiceTest {
       int end = s.findCommandFromName("mappingEnd");
       int status = s.findCommandFromName("mappingStatus");
       assertEquals(Protocol.SERVER_CONNECTED, aria.login("", "").getCommand());
-      byte[] request = {0x0F, 0x0C, 13, 0, (byte) start, (byte) (start >> 8), 'h', 'a', 'l', 'l', 0};
+      byte[] request = {
+        0x0F, 0x0C, 13, 0, (byte) start, (byte) (start >> 8), 'h', 'a', 'l', 'l', 0
+      };
       aria.send(withChecksum(request));
       assertArrayEquals(
           withChecksum(new byte[] {0x0F, 0x0C, 9, 0, (byte) start, (byte) (start >> 8), 0}),
@@ -230,8 +233,9 @@ class MappingServiceTest {
       aria.send(withChecksum(new byte[] {0x0F, 0x0C, 8, 0, (byte) status, (byte) (status >> 8)}));
       assertArrayEquals(
           withChecksum(
-              new byte[] {0x0F, 0x0C, 13, 0, (byte) status, (byte) (status >> 8), 'h', 'a', 'l', 'l',
-                0}),
+              new byte[] {
+                0x0F, 0x0C, 13, 0, (byte) status, (byte) (status >> 8), 'h', 'a', 'l', 'l', 0
+              }),
           aria.readUntil(status).toWire());
       aria.send(withChecksum(new byte[] {0x0F, 0x0C, 8, 0, (byte) end, (byte) (end >> 8)}));
       assertArrayEquals(

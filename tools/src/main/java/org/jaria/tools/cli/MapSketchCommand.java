@@ -68,8 +68,9 @@ final class MapSketchCommand implements Callable<Integer> {
       names = {"-o", "--output"},
       paramLabel = "FILE",
       required = true,
-      description = "Write the sketch: FILE.map (points) or FILE.png (a picture); give -o twice for"
-          + " both.")
+      description =
+          "Write the sketch: FILE.map (points) or FILE.png (a picture); give -o twice for"
+              + " both.")
   List<Path> outputs = new ArrayList<>();
 
   @Option(
@@ -128,7 +129,10 @@ final class MapSketchCommand implements Callable<Integer> {
           cells,
           SonarSketch.CELL_MM);
       return 0;
-    } catch (IllegalArgumentException | IllegalStateException | IOException | MapFormatException e) {
+    } catch (IllegalArgumentException
+        | IllegalStateException
+        | IOException
+        | MapFormatException e) {
       err.println(e.getMessage());
       return 1;
     }

@@ -86,8 +86,8 @@ public final class ScanMapping implements AutoCloseable {
   }
 
   /**
-   * The mapping services on a robot whose laser is the simulator's (the embedded simulator,
-   * {@code jaria sim}, MobileSim): adds an {@link ArSimulatedLaser} to the robot.
+   * The mapping services on a robot whose laser is the simulator's (the embedded simulator, {@code
+   * jaria sim}, MobileSim): adds an {@link ArSimulatedLaser} to the robot.
    *
    * @param folder the server's map folder, where scans and maps are written
    * @throws IOException if the folder does not exist

@@ -34,8 +34,18 @@ class MapSketchCommandTest {
     Path png = dir.resolve("hall-sketch.png");
     Run r =
         run(
-            "map", "sketch", "--sim", "hall", "--seconds", "60", "--seed", "3", "-o",
-            map.toString(), "-o", png.toString());
+            "map",
+            "sketch",
+            "--sim",
+            "hall",
+            "--seconds",
+            "60",
+            "--seed",
+            "3",
+            "-o",
+            map.toString(),
+            "-o",
+            png.toString());
     assertEquals(0, r.exit(), r.out());
     assertTrue(r.out().contains("do not localize on it"), r.out());
     ArMap m = ArMap.readFile(map);
@@ -53,13 +63,34 @@ class MapSketchCommandTest {
     assertEquals(2, none.exit());
     assertTrue(none.out().contains("written as .map or .png"), none.out());
     Run both =
-        run("map", "sketch", "--sim", "hall", "--remote", "x", "-o", dir.resolve("x.map").toString());
+        run(
+            "map",
+            "sketch",
+            "--sim",
+            "hall",
+            "--remote",
+            "x",
+            "-o",
+            dir.resolve("x.map").toString());
     assertEquals(2, both.exit());
     Run time =
-        run("map", "sketch", "--sim", "hall", "--seconds", "-1", "-o", dir.resolve("x.map").toString());
+        run(
+            "map",
+            "sketch",
+            "--sim",
+            "hall",
+            "--seconds",
+            "-1",
+            "-o",
+            dir.resolve("x.map").toString());
     assertEquals(2, time.exit());
     Run noMap =
-        run("map", "sketch", "--sim", dir.resolve("none.map").toString(), "-o",
+        run(
+            "map",
+            "sketch",
+            "--sim",
+            dir.resolve("none.map").toString(),
+            "-o",
             dir.resolve("x.map").toString());
     assertEquals(1, noMap.exit(), noMap.out());
     assertFalse(Files.exists(dir.resolve("x.map")), "nothing written");

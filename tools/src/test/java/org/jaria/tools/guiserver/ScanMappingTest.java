@@ -66,7 +66,8 @@ class ScanMappingTest {
       assertEquals(0, end.bufToUByte2(), "ended");
       long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
       while (mapping.mapsBuilt() == 0 && System.nanoTime() < deadline) {
-        s.sim().runMillis(100); // the builder's thread works meanwhile; the world is only kept alive
+        s.sim()
+            .runMillis(100); // the builder's thread works meanwhile; the world is only kept alive
       }
       assertEquals(1, mapping.mapsBuilt(), "built: " + said);
       Path log = dir.resolve("hall1.2d");

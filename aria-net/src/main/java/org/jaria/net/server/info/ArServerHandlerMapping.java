@@ -38,10 +38,10 @@ import org.slf4j.LoggerFactory;
  *
  * <p>The file name is confined to the map folder ({@link ScanLogName}); a refused name is answered
  * with ARIA's "could not start" byte followed by a sentence saying why (ARIA's clients read the
- * byte only). Building the map at the end is not this class's job (it needs the mapping module):
- * a program adds it with {@link #addLogEntryCallback} and {@link #addMappingEndedCallback}, as
- * {@code jaria demo guiserver --mapping} does. A scan left running when the server closes is ended
- * by {@link #close()}.
+ * byte only). Building the map at the end is not this class's job (it needs the mapping module): a
+ * program adds it with {@link #addLogEntryCallback} and {@link #addMappingEndedCallback}, as {@code
+ * jaria demo guiserver --mapping} does. A scan left running when the server closes is ended by
+ * {@link #close()}.
  *
  * <p>The requests run on the server's workers, never on the robot's cycle (opening a file can be
  * slow); the logger then writes on the cycle, as ARIA's does.
@@ -70,7 +70,8 @@ public final class ArServerHandlerMapping implements AutoCloseable {
   private final List<Runnable> begunCallbacks = new CopyOnWriteArrayList<>();
   private final List<Runnable> endCallbacks = new CopyOnWriteArrayList<>();
   private final List<Runnable> endedCallbacks = new CopyOnWriteArrayList<>();
-  private final List<BiConsumer<ScanLogHeader, ScanLogEntry>> entryCallbacks = new CopyOnWriteArrayList<>();
+  private final List<BiConsumer<ScanLogHeader, ScanLogEntry>> entryCallbacks =
+      new CopyOnWriteArrayList<>();
   private final List<String> startStrings = new CopyOnWriteArrayList<>();
   private final PublishedValue liveMap = new PublishedValue();
 
