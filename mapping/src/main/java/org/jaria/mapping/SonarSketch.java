@@ -169,8 +169,47 @@ public final class SonarSketch {
     return Arrays.copyOf(out, n);
   }
 
-  /** The grid: cells across, cells down, the lower-left cell, and a log-odds per cell by rows. */
-  public record Grid(int width, int height, int minX, int minY, float[] odds) {}
+  /** A copy of the grid: cells across and down, the lower-left corner, a log-odds per cell. */
+  public static final class Grid {
+    private final int width;
+    private final int height;
+    private final int minX;
+    private final int minY;
+    private final float[] odds;
+
+    Grid(int width, int height, int minX, int minY, float[] odds) {
+      this.width = width;
+      this.height = height;
+      this.minX = minX;
+      this.minY = minY;
+      this.odds = odds;
+    }
+
+    /** Cells across. */
+    public int width() {
+      return width;
+    }
+
+    /** Cells down. */
+    public int height() {
+      return height;
+    }
+
+    /** X of the grid's left edge, mm. */
+    public int minX() {
+      return minX;
+    }
+
+    /** Y of the grid's bottom edge, mm. */
+    public int minY() {
+      return minY;
+    }
+
+    /** The log-odds of cell ({@code col}, {@code row}), row 0 at the bottom; 0: unknown. */
+    public float odds(int col, int row) {
+      return odds[row * width + col];
+    }
+  }
 
   /** A copy of the grid (for a picture). */
   public Grid grid() {

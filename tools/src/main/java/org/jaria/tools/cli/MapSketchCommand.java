@@ -230,7 +230,7 @@ final class MapSketchCommand implements Callable<Integer> {
     BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
     for (int row = 0; row < g.height(); row++) {
       for (int col = 0; col < g.width(); col++) {
-        float o = g.odds()[row * g.width() + col];
+        float o = g.odds(col, row);
         double p = 1 / (1 + Math.exp(-o));
         int v = (int) Math.round(255 * (1 - p));
         int rgb = v << 16 | v << 8 | v;

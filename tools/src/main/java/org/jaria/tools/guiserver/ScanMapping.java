@@ -19,9 +19,11 @@ import org.jaria.mapping.MapBuildException;
 import org.jaria.mapping.MapBuilder;
 import org.jaria.mapping.MapBuilderParams;
 import org.jaria.mapping.MapSnapshot;
+import org.jaria.net.data.ArDrawingData;
 import org.jaria.net.data.LiveMap;
 import org.jaria.net.server.ScanLogName;
 import org.jaria.net.server.info.ArServerHandlerMapping;
+import org.jaria.net.server.info.ArServerInfoDrawings;
 import org.jaria.range.ArSimulatedLaser;
 import org.jaria.robot.ArRobot;
 import org.slf4j.Logger;
@@ -33,7 +35,9 @@ import org.slf4j.LoggerFactory;
  * its own ({@code jaria-scan-mapping}; never on the robot's cycle), which publishes the growing map
  * to monitors ({@code mappingLiveMap}) and, when the client ends the scan, writes the built map
  * beside the log in the map folder ({@code lab.2d} gives {@code lab.map}, or {@code lab-2.map} if
- * that exists), where clients can switch to it (ARIA's {@code Files/Map}).
+ * that exists), where clients can switch to it (ARIA's {@code Files/Map}). {@link #addDrawing} also
+ * offers the growing map as an ArNetworking drawing ({@value #DRAWING}), which MobileEyes-era
+ * clients and {@code jaria monitor} draw without knowing anything of mapping.
  *
  * <p>The robot's cycle only offers each entry to a queue; if the builder falls more than {@link
  * #MAX_QUEUED} entries behind, entries are dropped (counted) and the map is built again from the
@@ -46,6 +50,14 @@ public final class ScanMapping implements AutoCloseable {
   /** Entries the builder may be behind before the cycle drops them. */
   public static final int MAX_QUEUED = 20_000;
 
+  /** The drawing of the growing map. */
+  public static final String DRAWING = "mappingMap";
+
+  /** How the growing map is drawn: dark green dots, under the sonar, asked for every second. */
+  static final ArDrawingData DRAWING_DATA =
+      new ArDrawingData(
+          "polyDots", ArDrawingData.color(0x1B, 0x7F, 0x3B), 40, 62, 1000, 0, "DefaultOn");
+
   /** The live map is published every this many scans. */
   static final int PUBLISH_EVERY = 5;
 
@@ -56,6 +68,7 @@ public final class ScanMapping implements AutoCloseable {
   private final Consumer<String> report;
   private final Thread worker;
   private volatile String status = "no scan";
+  private volatile LiveMap latest = LiveMap.NONE;
   private volatile Path lastMap;
   private final AtomicInteger built = new AtomicInteger();
 
@@ -102,8 +115,19 @@ public final class ScanMapping implements AutoCloseable {
     } finally {
       robot.unlock();
     }
-    return new ScanMapping(
-        new ArServerHandlerMapping(gui.getServer(), robot, laser, folder), report);
+    ScanMapping m =
+        new ScanMapping(new ArServerHandlerMapping(gui.getServer(), robot, laser, folder), report);
+    m.addDrawing(gui.getDrawings());
+    return m;
+  }
+
+  /**
+   * Offers the growing map (and, after a scan, the map built) as drawing {@value #DRAWING}.
+   *
+   * @return false if the server has a drawing of that name already
+   */
+  public boolean addDrawing(ArServerInfoDrawings drawings) {
+    return drawings.addDrawing(DRAWING_DATA, DRAWING, () -> latest.points());
   }
 
   /** The mapping services. */
@@ -196,18 +220,23 @@ public final class ScanMapping implements AutoCloseable {
       m.writeFile(tmp);
       Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE);
       lastMap = target;
-      built.incrementAndGet();
-      setStatus(
+      int[] xy = new int[2 * m.pointCount()];
+      for (int i = 0; i < m.pointCount(); i++) {
+        xy[2 * i] = m.x(i);
+        xy[2 * i + 1] = m.y(i);
+      }
+      String s =
           String.format(
               Locale.ROOT,
               "built %s from %s: %d points, %d lines",
               target.getFileName(),
               name,
               m.pointCount(),
-              m.lines().size()),
-          name,
-          0,
-          null);
+              m.lines().size());
+      // The built map stays drawn (thinned) until the next scan starts.
+      publish(LiveMap.of(s, name, 0, xy, new int[0], null));
+      report.accept(s);
+      built.incrementAndGet();
     } catch (MapBuildException | org.jaria.laser.log.ScanLogFormatException e) {
       setStatus(name + ": no map: " + e.getMessage(), name, 0, null);
     } catch (IOException | RuntimeException e) {
@@ -216,10 +245,15 @@ public final class ScanMapping implements AutoCloseable {
     }
   }
 
+  private void publish(LiveMap m) {
+    status = m.status();
+    latest = m;
+    handler.publishLiveMap(m);
+  }
+
   private void setStatus(String s, String fileName, long scans, MapSnapshot snap) {
-    status = s;
     if (snap == null) {
-      handler.publishLiveMap(LiveMap.of(s, fileName, scans, new int[0], new int[0], null));
+      publish(LiveMap.of(s, fileName, scans, new int[0], new int[0], null));
     } else {
       int[] xy = new int[snap.size() * 2];
       for (int i = 0; i < snap.size(); i++) {
@@ -231,7 +265,7 @@ public final class ScanMapping implements AutoCloseable {
         path[2 * i] = (int) Math.round(snap.pathX(i));
         path[2 * i + 1] = (int) Math.round(snap.pathY(i));
       }
-      handler.publishLiveMap(LiveMap.of(s, fileName, scans, xy, path, snap.pose()));
+      publish(LiveMap.of(s, fileName, scans, xy, path, snap.pose()));
     }
     if (scans == 0) {
       report.accept(s);

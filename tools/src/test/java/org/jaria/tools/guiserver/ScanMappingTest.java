@@ -17,7 +17,9 @@ import org.jaria.map.ArMap;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.arnl.ArnlNavigation;
 import org.jaria.net.client.ArClientBase;
+import org.jaria.net.data.DrawingLayout;
 import org.jaria.net.data.LiveMap;
+import org.jaria.net.data.Points;
 import org.jaria.net.server.MapFolder;
 import org.jaria.net.server.ServerOptions;
 import org.jaria.net.sim.SimulatedGuiServer;
@@ -85,6 +87,12 @@ class ScanMappingTest {
           "the map was seen growing");
       assertTrue(said.stream().anyMatch(x -> x.startsWith("built hall1.map")), said.toString());
       assertEquals(0, mapping.dropped());
+      Points drawn = DrawingLayout.readPoints(await(s, client.requestOnce(ScanMapping.DRAWING)));
+      assertTrue(drawn.size() > 200, "the built map stays drawn for monitors: " + drawn.size());
+      assertTrue(
+          DrawingLayout.readList(await(s, client.requestOnce("listDrawings"))).stream()
+              .anyMatch(d -> d.name().equals(ScanMapping.DRAWING)),
+          "listed as a drawing");
       // A second scan of the same name never replaces the first map.
       assertEquals(0, await(s, client.requestOnce("mappingStart", "hall1")).bufToByte());
       for (int i = 0; i < 30; i++) {
