@@ -83,6 +83,9 @@ public class ArLaserLogger implements AutoCloseable {
   private boolean headerWritten;
 
   @GuardedBy("this")
+  private ScanLogHeader header;
+
+  @GuardedBy("this")
   private boolean firstTaken;
 
   @GuardedBy("this")
@@ -289,6 +292,14 @@ public class ArLaserLogger implements AutoCloseable {
     entryCallbacks.remove(cb);
   }
 
+  /**
+   * The log's header (the laser's mounting and view) once written, else null: a builder that gets
+   * the entries from {@link #addEntryCB} needs it (it is written before the first entry).
+   */
+  public synchronized ScanLogHeader getHeader() {
+    return header;
+  }
+
   /** Scans logged so far. */
   public synchronized int getScanCount() {
     return scanNumber;
@@ -378,7 +389,8 @@ public class ArLaserLogger implements AutoCloseable {
     int n = s.size();
     double first = n == 0 ? 0 : s.getAngle(0);
     double lastAngle = n == 0 ? 0 : s.getAngle(n - 1);
-    writer.writeHeader(ScanLogHeader.of(mount, first, lastAngle, n, laserName));
+    header = ScanLogHeader.of(mount, first, lastAngle, n, laserName);
+    writer.writeHeader(header);
   }
 
   /**

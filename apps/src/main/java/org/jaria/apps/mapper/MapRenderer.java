@@ -59,6 +59,16 @@ public final class MapRenderer {
     scaleBar = on;
   }
 
+  /** Points drawn faintly under the map (a scan log's readings), or null. */
+  void setUnderlay(PointLayer raw) {
+    underlay = raw;
+  }
+
+  /** The underlay's colour: a light orange, so the map's black points stand out on it. */
+  static final int UNDERLAY_ARGB = 0xFFF5C89A;
+
+  private PointLayer underlay;
+
   /**
    * Draws everything.
    *
@@ -75,6 +85,9 @@ public final class MapRenderer {
     gc.fillRect(0, 0, vp.width(), vp.height());
     if (opt.grid()) {
       drawGrid(gc, vp, opt.gridSize());
+    }
+    if (underlay != null) {
+      gc.drawImage(underlay.render(vp, UNDERLAY_ARGB, null, 0, opt.pointSize()), 0, 0);
     }
     if (opt.points() && points != null) {
       BitSet sel = selection == null ? null : selection.points();

@@ -422,6 +422,15 @@ public final class MapView extends Region implements ToolContext {
     e.consume();
   }
 
+  /**
+   * Draws {@code raw} faintly under the map (a scan log's readings when a map was built from it),
+   * or nothing with null.
+   */
+  public void setUnderlay(PointLayer raw) {
+    renderer.setUnderlay(raw);
+    redraw();
+  }
+
   /** "1 px = 25 mm". */
   public String zoomText() {
     return String.format(Locale.ROOT, "1 px = %s", MapRenderer.formatLength(1 / vp.scale()));

@@ -46,7 +46,8 @@ import org.jaria.map.MapFormatException;
  */
 public final class MapperWindow implements DesktopApp {
 
-  static final List<String> MAP_FILTER = List.of("Map files|*.map", "All files|*");
+  static final List<String> MAP_FILTER =
+      List.of("Map files|*.map", "Scan logs (built into a map)|*.2d", "All files|*");
 
   private final Stage stage;
   private final AppPrefs prefs;
@@ -245,8 +246,9 @@ public final class MapperWindow implements DesktopApp {
    * @param layer an index of its points made off the JavaFX thread, or null to make one here
    * @param found its problems, or null to check it here
    */
-  private void setDocument(MapDocument d, PointLayer layer, List<MapProblem> found) {
+  void setDocument(MapDocument d, PointLayer layer, List<MapProblem> found) {
     doc[0] = d;
+    view.setUnderlay(null);
     hookDocument(d);
     int res = d.file().resolution();
     view.setOptions(view.options().withPointSize(res > 0 ? res : 20));
@@ -283,6 +285,10 @@ public final class MapperWindow implements DesktopApp {
    * progress indicator.
    */
   public void open(Path file) {
+    if (ScanLogOpener.isScanLog(file)) {
+      ScanLogOpener.open(this, file);
+      return;
+    }
     status("Opening " + file);
     work.submit(
         "Opening " + file.getFileName(),

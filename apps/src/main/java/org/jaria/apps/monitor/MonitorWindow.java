@@ -74,6 +74,7 @@ public final class MonitorWindow implements DesktopApp {
   private final ConfigPane configPane;
   private final CameraPane cameraPane = new CameraPane();
   private final PopupDialogs popupDialogs;
+  private final ScanControls scanControls;
   private final CompletableFuture<Void> ready = new CompletableFuture<>();
 
   /** The information table's row height and header height, pixels (Modena's at 12 px). */
@@ -145,6 +146,7 @@ public final class MonitorWindow implements DesktopApp {
               }
             });
     this.configPane = new ConfigPane(this::applyConfig);
+    this.scanControls = new ScanControls(prompts, link::request);
     this.popupDialogs =
         new PopupDialogs(
             stage,
@@ -336,7 +338,7 @@ public final class MonitorWindow implements DesktopApp {
     busy.visibleProperty().bind(work.busyProperty());
     Region spacer = new Region();
     HBox.setHgrow(spacer, Priority.ALWAYS);
-    HBox bar = new HBox(12, connection, busy, spacer, modeStatus);
+    HBox bar = new HBox(12, connection, busy, scanControls.node(), spacer, modeStatus);
     bar.setAlignment(Pos.CENTER_LEFT);
     bar.setPadding(new Insets(3, 8, 3, 8));
     return bar;
@@ -374,6 +376,7 @@ public final class MonitorWindow implements DesktopApp {
           connection.setText("Connected to " + host + ":" + port);
           commands.setItems(FXCollections.observableArrayList(list));
           cameraPane.setAvailable(link.offers("getVideo"));
+          scanControls.setAvailable(link.offers("mappingStart"));
           if (!link.offers("getVideo")) {
             cameraTab.setText("Camera (none)");
           }
@@ -592,6 +595,10 @@ public final class MonitorWindow implements DesktopApp {
 
   MonitorCanvas canvas() {
     return canvas;
+  }
+
+  ScanControls scanControls() {
+    return scanControls;
   }
 
   MonitorState state() {

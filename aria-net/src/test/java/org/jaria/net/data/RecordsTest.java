@@ -70,6 +70,31 @@ class RecordsTest {
   }
 
   @Test
+  void liveMapsFitOnePacketHoweverLarge() {
+    roundTrip(LiveMap.NONE, LiveMap::read);
+    roundTrip(
+        LiveMap.of(
+            "scanning lab.2d",
+            "lab.2d",
+            12,
+            new int[] {1, 2, 3, 4},
+            new int[] {0, 0},
+            new ArPose(10, 20, 30)),
+        LiveMap::read);
+    int[] many = new int[2 * 50_000];
+    for (int i = 0; i < many.length; i++) {
+      many[i] = i;
+    }
+    LiveMap big = LiveMap.of("", "big.2d", 9999, many, many, null);
+    assertEquals(LiveMap.MAX_POINTS, big.points().size());
+    assertEquals(LiveMap.MAX_PATH, big.path().size());
+    assertEquals(many[many.length - 1], big.points().y(LiveMap.MAX_POINTS - 1), "the last kept");
+    ArNetPacket p = new ArNetPacket(300);
+    big.write(p); // throws if it does not fit one packet
+    roundTrip(big, LiveMap::read);
+  }
+
+  @Test
   void videoFrames() {
     byte[] rgb = new byte[4 * 3 * 3];
     Arrays.fill(rgb, (byte) 200);

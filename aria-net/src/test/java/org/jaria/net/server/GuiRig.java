@@ -47,6 +47,16 @@ class GuiRig implements AutoCloseable {
   final ArClientBase client;
 
   GuiRig(Services setup, UnaryOperator<GuiServer.Builder> configure) throws Exception {
+    this(setup, configure, null, "", "");
+  }
+
+  private GuiRig(
+      Services setup,
+      UnaryOperator<GuiServer.Builder> configure,
+      java.util.function.Consumer<GuiRig> beforeOpen,
+      String user,
+      String password)
+      throws Exception {
     SimWorld world = SimWorld.bundled("office", SimOptions.builder().seed(3).build());
     sim = SimulatedRobot.connect(world, world.addRobot("p3dx-sh"));
     robot = sim.robot();
@@ -56,10 +66,26 @@ class GuiRig implements AutoCloseable {
             .map(OFFICE, "office.map");
     services = setup.install(sim, b);
     gui = configure.apply(b).build();
+    if (beforeOpen != null) {
+      beforeOpen.accept(this);
+    }
     gui.open();
     sim.runMillis(200);
     client = new ArClientBase("test");
-    client.connect("127.0.0.1", gui.getServer().getPort(), "", "");
+    client.connect("127.0.0.1", gui.getServer().getPort(), user, password);
+  }
+
+  /**
+   * As {@link #plain}, with {@code beforeOpen} adding services of its own before the server opens
+   * (so the rig's client sees them), and the client logged in as {@code user}.
+   */
+  static GuiRig plain(
+      UnaryOperator<GuiServer.Builder> configure,
+      java.util.function.Consumer<GuiRig> beforeOpen,
+      String user,
+      String password)
+      throws Exception {
+    return new GuiRig(GuiRig::sonarAtHome, configure, beforeOpen, user, password);
   }
 
   /** A guiServer without localization or planning (goto drives straight). */

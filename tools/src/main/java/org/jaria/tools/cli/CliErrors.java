@@ -52,6 +52,9 @@ final class CliErrors {
     } else {
       err.println(name + ": " + e.getMessage());
       String hint = e instanceof MissingParameterException m ? typoOfMissing(m, args) : null;
+      if (hint == null && e instanceof MissingParameterException) {
+        hint = typoOfKnown(cmd, args);
+      }
       err.println(hint != null ? hint : "Run '" + name + " --help' for its options.");
     }
     err.flush();
@@ -87,6 +90,24 @@ final class CliErrors {
       }
       if (!similar.isEmpty()) {
         return "Did you mean " + similar.get(0) + " (not " + typed + ")?";
+      }
+    }
+    return null;
+  }
+
+  /**
+   * "Did you mean" for a mistyped option that picocli did not report because a required parameter
+   * is missing as well (the mistyped option is taken as that parameter's place), or null.
+   */
+  private static String typoOfKnown(CommandLine cmd, String[] args) {
+    List<String> known = names(cmd, true);
+    for (String a : args) {
+      String typed = a.contains("=") ? a.substring(0, a.indexOf('=')) : a;
+      if (typed.startsWith("--") && !known.contains(typed)) {
+        List<String> similar = Suggestions.similar(typed, known);
+        if (!similar.isEmpty()) {
+          return "Did you mean " + similar.get(0) + " (not " + typed + ")?";
+        }
       }
     }
     return null;

@@ -30,7 +30,7 @@ import picocli.CommandLine.Spec;
     description =
         "Inspect ArMap .map files, or build one from a laser scan log (the map editor is 'jaria"
             + " mapper').",
-    subcommands = {MapCommand.Info.class, MapBuildCommand.class})
+    subcommands = {MapCommand.Info.class, MapBuildCommand.class, MapSketchCommand.class})
 final class MapCommand implements Runnable {
 
   @Spec CommandSpec spec;

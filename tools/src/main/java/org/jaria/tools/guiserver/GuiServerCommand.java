@@ -186,6 +186,14 @@ public final class GuiServerCommand implements Callable<Integer> {
   boolean noCamera;
 
   @Option(
+      names = "--mapping",
+      description =
+          "Offer ArNetworking's mapping services with the simulator's laser: clients (jaria"
+              + " monitor) start and end a scan log in the map folder (--map-dir), and its map is"
+              + " built there when the scan ends.")
+  boolean mapping;
+
+  @Option(
       names = "--seconds",
       converter = SecondsOption.Whole.class,
       description = "Stop after this many seconds (default and 0: run until Ctrl-C).")
@@ -241,7 +249,8 @@ public final class GuiServerCommand implements Callable<Integer> {
                       speed,
                       !noCamera && forwardVideo == null),
                   mapFolder());
-          ArHybridForwarderVideo forwarder = forwarder(s.gui().getServer(), out)) {
+          ArHybridForwarderVideo forwarder = forwarder(s.gui().getServer(), out);
+          ScanMapping scans = scanMapping(s.gui(), s.robot(), out)) {
         out.printf(
             Locale.ROOT,
             "guiServer: embedded simulator, a %s on %s, %s%n",
@@ -327,6 +336,30 @@ public final class GuiServerCommand implements Callable<Integer> {
                   + " do not trust, see docs/networking.md";
     }
     return String.format(Locale.ROOT, "Listening on %s:%d (%s)", address, port, what);
+  }
+
+  /** The mapping services --mapping asks for, writing in the map folder; or null. */
+  private ScanMapping scanMapping(GuiServer gui, ArRobot robot, PrintWriter out)
+      throws IOException {
+    if (!mapping) {
+      return null;
+    }
+    Path folder = mapFolder().getFolder();
+    if (folder == null) {
+      throw new IllegalArgumentException(
+          "--mapping writes scans and maps into the map folder: give --map-dir DIR");
+    }
+    ScanMapping m =
+        ScanMapping.withSimulatedLaser(
+            gui,
+            robot,
+            folder,
+            status -> {
+              out.println("Mapping: " + status);
+              out.flush();
+            });
+    out.printf(Locale.ROOT, "Mapping: scans and their maps are written in %s%n", folder);
+    return m;
   }
 
   /** The folder of --map-dir, else of the --map file (none for a bundled map). */
@@ -420,6 +453,7 @@ public final class GuiServerCommand implements Callable<Integer> {
         nav.addCommands(gui.getCommands());
         var nv = org.jaria.tools.web.NavigationView.real(nav, m, mapName);
         try (ArHybridForwarderVideo forwarder = forwarder(gui.getServer(), out);
+            ScanMapping scans = scanMapping(gui, robot, out);
             var view =
                 web.start("guiServer · " + mapName, nv.source(), nv.controls(), out, nv.driver())) {
           gui.open();
