@@ -268,6 +268,7 @@ class ActsServerTest {
 
   @Test
   void aFailingSourceIsReportedAndServingContinues() throws Exception {
+    java.util.concurrent.CountDownLatch tried = new java.util.concurrent.CountDownLatch(1);
     ImageSource failing =
         new ImageSource() {
           @Override
@@ -282,6 +283,7 @@ class ActsServerTest {
 
           @Override
           public boolean nextFrame(int[] rgb) throws IOException {
+            tried.countDown();
             throw new IOException("camera unplugged");
           }
         };
@@ -297,6 +299,9 @@ class ActsServerTest {
       acts.requestPacket();
       assertTrue(acts.receiveBlobInfo(), "an empty reply while no frame is available");
       assertEquals(0, acts.getNumBlobs(1));
+      // The pipeline thread may not have asked the camera yet; once it has, stop() joins it, so
+      // the failure it was counting is counted.
+      assertTrue(tried.await(10, TimeUnit.SECONDS), "the server asked the camera for a frame");
     } finally {
       s.stop();
     }
