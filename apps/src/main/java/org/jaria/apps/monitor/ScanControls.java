@@ -87,18 +87,20 @@ final class ScanControls {
       Object[] args,
       java.util.function.Function<ArNetPacket, Reply> meaning,
       String errorTitle) {
-    request
-        .apply(what, args)
-        .whenComplete(
-            (p, e) ->
-                Platform.runLater(
-                    () -> {
-                      Reply r = e != null ? new Reply(false, e.getMessage()) : meaning.apply(p);
-                      status.setText(r.text());
-                      if (!r.ok()) {
-                        prompts.error(errorTitle, r.text());
-                      }
-                    }));
+    // The reply is handled here, on whichever thread completes it; nothing waits on the result.
+    var unused =
+        request
+            .apply(what, args)
+            .whenComplete(
+                (p, e) ->
+                    Platform.runLater(
+                        () -> {
+                          Reply r = e != null ? new Reply(false, e.getMessage()) : meaning.apply(p);
+                          status.setText(r.text());
+                          if (!r.ok()) {
+                            prompts.error(errorTitle, r.text());
+                          }
+                        }));
   }
 
   /** What a reply means: whether all went well, and a sentence. */
