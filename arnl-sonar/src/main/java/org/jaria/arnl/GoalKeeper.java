@@ -26,8 +26,8 @@ import org.slf4j.LoggerFactory;
 /**
  * The goal state machine behind {@link ArPathPlanningTask}: accepting or refusing goals, asking for
  * plans (inline or on the planning thread) and installing them, replanning, and ending goals with
- * their callbacks. Everything here runs under one lock; callbacks are run after it is released.
- * The published fields are volatile: written under the lock, read by any thread without it.
+ * their callbacks. Everything here runs under one lock; callbacks are run after it is released. The
+ * published fields are volatile: written under the lock, read by any thread without it.
  */
 final class GoalKeeper {
 
@@ -301,7 +301,10 @@ final class GoalKeeper {
     notify.addAll(task.goalFinishedCBs);
   }
 
-  /** Ends the goal in a final state, with callbacks (for {@link PathFollower}: see {@link #navigationMap}). */
+  /**
+   * Ends the goal in a final state, with callbacks (for {@link PathFollower}: see {@link
+   * #navigationMap}).
+   */
   void finish(PathPlanningState s, String message, List<Runnable> notify) {
     lock.lock();
     try {
@@ -432,8 +435,8 @@ final class GoalKeeper {
   }
 
   /**
-   * What the sensors see (for {@link PathFollower}, see {@link #navigationMap}; and to add or remove
-   * range devices, which its thread-safe device list allows from any thread).
+   * What the sensors see (for {@link PathFollower}, see {@link #navigationMap}; and to add or
+   * remove range devices, which its thread-safe device list allows from any thread).
    */
   SensedObstacles sensed() {
     lock.lock();
