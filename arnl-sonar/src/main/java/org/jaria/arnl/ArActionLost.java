@@ -14,6 +14,7 @@ public class ArActionLost extends ArAction {
   private final ArBaseLocalizationTask loc;
   private final ArPathPlanningTask path;
   private final ArActionDesired desired = new ArActionDesired();
+  // fire() only, on the robot's cycle thread.
   private boolean wasLost;
 
   /** Stops the robot while {@code loc} is lost. */

@@ -321,12 +321,12 @@ public final class ArPathPlanningTask implements AutoCloseable {
 
   /** Also avoid what {@code device} sees (bumpers, IRs, a forbidden-range device ...). */
   public void addRangeDevice(ArRangeDevice device, RangeType type) {
-    keeper.sensedObstacles().addDevice(Objects.requireNonNull(device, "device"), type);
+    keeper.sensed().addDevice(Objects.requireNonNull(device, "device"), type);
   }
 
   /** Stops using {@code device}. */
   public void remRangeDevice(ArRangeDevice device) {
-    keeper.sensedObstacles().removeDevice(device);
+    keeper.sensed().removeDevice(device);
   }
 
   /** The path-following action. */

@@ -1,5 +1,6 @@
 package org.jaria.arnl;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -25,7 +26,8 @@ import org.slf4j.LoggerFactory;
 /**
  * The goal state machine behind {@link ArPathPlanningTask}: accepting or refusing goals, asking for
  * plans (inline or on the planning thread) and installing them, replanning, and ending goals with
- * their callbacks. Everything here runs under one lock; callbacks are run after it is released.
+ * their callbacks. Everything here runs under one lock; callbacks are run after it is released. The
+ * published fields are volatile: written under the lock, read by any thread without it.
  */
 final class GoalKeeper {
 
@@ -41,15 +43,24 @@ final class GoalKeeper {
   private final ReentrantLock lock = new ReentrantLock();
   private final PlanComputer computer = new PlanComputer();
   private final LocalPlanner local = new LocalPlanner();
+
+  // Its points are written by fire() and read by sensedPoses(), both under the lock.
+  @GuardedBy("lock")
   private final SensedObstacles sensed;
+
   private final ExecutorService executor;
 
-  // Guarded by lock.
+  @GuardedBy("lock")
   private NavigationMap nav;
+
+  @GuardedBy("lock")
   private boolean navDirty = true;
+
+  // GoalRun has no lock of its own: reaching it through this field is what Error Prone checks.
+  @GuardedBy("lock")
   private final GoalRun run = new GoalRun();
 
-  // Published for any thread.
+  // Published for any thread (written under the lock).
   private volatile PathPlanningState state = PathPlanningState.NOT_INITIALIZED;
   private volatile String status = "No goal yet";
   private volatile String failure = "";
@@ -90,8 +101,22 @@ final class GoalKeeper {
     return true;
   }
 
-  /** The navigation maps, rebuilt if parameters changed. Call under the lock. */
+  /**
+   * The navigation maps, rebuilt if parameters changed. For {@link PathFollower}, which runs inside
+   * {@link #fire} with the lock held: the lock is reentrant, so taking it again changes nothing and
+   * lets Error Prone check the access.
+   */
   NavigationMap navigationMap() {
+    lock.lock();
+    try {
+      return navigationMapLocked();
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  @GuardedBy("lock")
+  private NavigationMap navigationMapLocked() {
     if (nav == null || navDirty) {
       long t0 = System.nanoTime();
       double half = halfWidth();
@@ -130,7 +155,7 @@ final class GoalKeeper {
     lock.lock();
     try {
       interruptLocked(notify, "replaced by a new goal");
-      NavigationMap n = navigationMap();
+      NavigationMap n = navigationMapLocked();
       run.begin(goalPose, headingFlag, name, robot.getClock().nanoTime());
       run.replanCounts = true;
       goal = goalPose;
@@ -189,6 +214,7 @@ final class GoalKeeper {
   }
 
   /** A plan request from the robot's pose to the goal, with the remembered obstacles. */
+  @GuardedBy("lock")
   private PlanComputer.Request newRequestLocked(NavigationMap n) {
     long id = run.nextPlanId();
     return new PlanComputer.Request(
@@ -222,6 +248,7 @@ final class GoalKeeper {
     runAll(notify);
   }
 
+  @GuardedBy("lock")
   private void applyResultLocked(PlanComputer.Result r, List<Runnable> notify) {
     if (r.id() != run.planId
         || (state != PathPlanningState.PLANNING_PATH
@@ -258,6 +285,7 @@ final class GoalKeeper {
     }
   }
 
+  @GuardedBy("lock")
   private void interruptLocked(List<Runnable> notify, String why) {
     if (state != PathPlanningState.PLANNING_PATH && state != PathPlanningState.MOVING_TO_GOAL) {
       return;
@@ -273,8 +301,21 @@ final class GoalKeeper {
     notify.addAll(task.goalFinishedCBs);
   }
 
-  /** Ends the goal in a final state, with callbacks. Call under the lock. */
-  void finishLocked(PathPlanningState s, String message, List<Runnable> notify) {
+  /**
+   * Ends the goal in a final state, with callbacks (for {@link PathFollower}: see {@link
+   * #navigationMap}).
+   */
+  void finish(PathPlanningState s, String message, List<Runnable> notify) {
+    lock.lock();
+    try {
+      finishLocked(s, message, notify);
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  @GuardedBy("lock")
+  private void finishLocked(PathPlanningState s, String message, List<Runnable> notify) {
     ArPose g = run.goal;
     run.nextPlanId();
     run.stopCycles = STOP_CYCLES;
@@ -300,12 +341,23 @@ final class GoalKeeper {
   }
 
   /**
-   * Asks for a new plan from where the robot is, avoiding what is sensed now. Under the lock.
+   * Asks for a new plan from where the robot is, avoiding what is sensed now (for {@link
+   * PathFollower}; see {@link #navigationMap}).
    *
    * @param counts whether this replan counts towards {@code MaxReplans} (lack of progress does; a
    *     path that merely passes a newly seen obstacle does not)
    */
-  void replanLocked(String why, boolean counts, List<Runnable> notify) {
+  void replan(String why, boolean counts, List<Runnable> notify) {
+    lock.lock();
+    try {
+      replanLocked(why, counts, notify);
+    } finally {
+      lock.unlock();
+    }
+  }
+
+  @GuardedBy("lock")
+  private void replanLocked(String why, boolean counts, List<Runnable> notify) {
     long now = robot.getClock().nanoTime();
     run.totalReplans++;
     if (counts) {
@@ -332,7 +384,7 @@ final class GoalKeeper {
     if (counts) {
       run.progressReset(now);
     }
-    PlanComputer.Request r = newRequestLocked(navigationMap());
+    PlanComputer.Request r = newRequestLocked(navigationMapLocked());
     if (mode == PlanMode.SYNCHRONOUS) {
       applyResultLocked(computer.compute(r), notify);
     } else {
@@ -382,8 +434,17 @@ final class GoalKeeper {
     return local;
   }
 
+  /**
+   * What the sensors see (for {@link PathFollower}, see {@link #navigationMap}; and to add or
+   * remove range devices, which its thread-safe device list allows from any thread).
+   */
   SensedObstacles sensed() {
-    return sensed;
+    lock.lock();
+    try {
+      return sensed;
+    } finally {
+      lock.unlock();
+    }
   }
 
   private static void runAll(List<Runnable> cbs) {
@@ -482,10 +543,6 @@ final class GoalKeeper {
     } finally {
       lock.unlock();
     }
-  }
-
-  SensedObstacles sensedObstacles() {
-    return sensed;
   }
 
   /** The sensed obstacle points as poses, read under the lock. */

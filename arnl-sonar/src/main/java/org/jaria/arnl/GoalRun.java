@@ -6,7 +6,10 @@ import org.jaria.geom.ArPose;
 
 /**
  * What {@link ArPathPlanningTask} keeps about the goal in progress: the goal, the plan requests,
- * progress along the path, and obstacles remembered for replanning. Guarded by the task's lock.
+ * progress along the path, and obstacles remembered for replanning. Not thread-safe and without a
+ * lock of its own: {@link GoalKeeper} keeps the one instance in a field {@code @GuardedBy} its lock
+ * (so Error Prone checks every reach for it there), and hands it to {@link PathFollower} only
+ * inside {@link GoalKeeper#fire}, with that lock held.
  */
 final class GoalRun {
 

@@ -1,5 +1,6 @@
 package org.jaria.arnl;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -38,17 +39,28 @@ final class LocalizationCore {
   private final ScanFeed feed;
   private final ArRobot robot;
   private final LocalizationParams params;
-  private final LocalizationEngine engine;
   private final ReentrantLock lock = new ReentrantLock();
 
-  // Guarded by lock; generation is also read by the cycle without it.
+  // The filter is not thread-safe: only this field's lock keeps its users apart.
+  @GuardedBy("lock")
+  private final LocalizationEngine engine;
+
+  // Changed under the lock; an AtomicLong because the cycle also reads it without the lock.
   private final AtomicLong generation = new AtomicLong();
+
+  @GuardedBy("lock")
   private int consecutiveFailures;
+
+  @GuardedBy("lock")
   private int consecutivePasses;
+
+  @GuardedBy("lock")
   private boolean global;
+
+  @GuardedBy("lock")
   private int globalStreak;
 
-  // Published.
+  // Published: written under the lock, read by any thread without it.
   private volatile boolean initialized;
   private volatile LocalizationState state = LocalizationState.NOT_INITIALIZED;
   private volatile LockState lockState = LockState.LOCK_NOT_INITIALIZED;
@@ -122,6 +134,7 @@ final class LocalizationCore {
   }
 
   /** Passes or fails an update by its score; counts failures towards "lost". */
+  @GuardedBy("lock")
   private void judge(double s, List<Runnable> notify) {
     if (s >= params.passThreshold.getDouble()) {
       consecutiveFailures = 0;
@@ -224,6 +237,7 @@ final class LocalizationCore {
   }
 
   /** Called under the lock after a (re)initialization: tracking restarts from here. */
+  @GuardedBy("lock")
   private void startTracking(ArPose enc) {
     initialized = true;
     task.feeder().restartFrom(enc);

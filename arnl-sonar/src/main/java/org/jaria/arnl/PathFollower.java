@@ -72,7 +72,7 @@ final class PathFollower {
           return d;
         }
       }
-      t.finishLocked(PathPlanningState.REACHED_GOAL, "Arrived at " + run.name, notify);
+      t.finish(PathPlanningState.REACHED_GOAL, "Arrived at " + run.name, notify);
       return stop(d);
     }
     if (now < run.backupUntil) {
@@ -106,14 +106,14 @@ final class PathFollower {
     }
     long secsToFail = (long) (p.secsToFail.getDouble() * 1e9);
     if (now - run.lastProgressNanos > secsToFail) {
-      t.replanLocked(
+      t.replan(
           String.format(Locale.ROOT, "no progress for %.0f s", p.secsToFail.getDouble()),
           true,
           notify);
     } else if (!run.replanPending && now - run.lastReplanNanos > REPLAN_COOLDOWN) {
       int blocker = blockerAhead(path, run.index, sensed, nav.grid().lethal());
       if (blocker >= 0) {
-        t.replanLocked(
+        t.replan(
             String.format(
                 Locale.ROOT,
                 "path blocked by an obstacle at (%.0f, %.0f)",
@@ -152,7 +152,7 @@ final class PathFollower {
         run.blockedSince = now;
       } else if (now - run.blockedSince > BLOCKED_REPLAN && !run.replanPending) {
         run.blockedSince = -1;
-        t.replanLocked("the way ahead is blocked", true, notify);
+        t.replan("the way ahead is blocked", true, notify);
       }
     } else {
       run.blockedSince = -1;

@@ -16,8 +16,9 @@ import org.jaria.robot.ArRobot;
  * occupancy grid ({@link SonarOccupancy}) that hold an obstacle the map does not explain (cells
  * near a mapped wall are the wall, which the planner already knows exactly), plus the points of the
  * other range devices added to the task (bumpers, IRs, forbidden-range device). The grid is kept in
- * odometry coordinates, so localization corrections move its obstacles along. Used on the robot's
- * cycle thread only.
+ * odometry coordinates, so localization corrections move its obstacles along. The points are {@link
+ * GoalKeeper}'s, used under its lock (the field holding this is {@code @GuardedBy} it); the device
+ * list may be changed from any thread.
  */
 final class SensedObstacles {
 

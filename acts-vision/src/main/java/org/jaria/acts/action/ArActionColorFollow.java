@@ -50,6 +50,7 @@ public class ArActionColorFollow extends ArAction {
   private volatile boolean killMovement = true;
   private volatile TargetState state = TargetState.NO_TARGET;
   private volatile MoveState move = MoveState.STOPPED;
+  // Only fire(), on the robot's cycle thread, uses these.
   private LocationState location = LocationState.CENTER;
   private long lastSeenNanos = Long.MIN_VALUE / 2;
   private final long maxTimeNanos = TimeUnit.MILLISECONDS.toNanos(2000);

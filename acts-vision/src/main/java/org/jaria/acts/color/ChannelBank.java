@@ -1,5 +1,6 @@
 package org.jaria.acts.color;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.util.function.Function;
 
 /**
@@ -43,12 +44,27 @@ public final class ChannelBank {
   public static final int DEFAULT_CELL_BITS = 8;
 
   private final int cellBits;
+
+  // The arrays' contents change: every access holds the bank's monitor.
+  @GuardedBy("this")
   private final Channel[] channels = new Channel[NUM_CHANNELS];
+
+  @GuardedBy("this")
   private final int[] trackedBlobs = new int[NUM_CHANNELS];
+
+  @GuardedBy("this")
   private final String[] fileNames = new String[NUM_CHANNELS];
+
+  @GuardedBy("this")
   private final int[][] live;
+
+  @GuardedBy("this")
   private int activeMask;
+
+  @GuardedBy("this")
   private long version;
+
+  @GuardedBy("this")
   private LookupTables cached;
 
   /** A bank of empty channels at the default resolution. */
@@ -206,6 +222,7 @@ public final class ChannelBank {
     return cached;
   }
 
+  @GuardedBy("this")
   private void recompile(int i) {
     boolean all = true;
     for (ColorPlane p : ColorPlane.all()) {

@@ -1,5 +1,6 @@
 package org.jaria.acts.server;
 
+import com.google.errorprone.annotations.concurrent.GuardedBy;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
@@ -69,19 +70,37 @@ public final class ActsServer implements AutoCloseable {
 
   private final ReentrantLock lock = new ReentrantLock();
   private final Condition changed = lock.newCondition();
+
+  @GuardedBy("lock")
   private long frames;
+
+  @GuardedBy("lock")
   private boolean stopped;
+
+  @GuardedBy("lock")
   private boolean stopRequested;
+
+  @GuardedBy("lock")
   private BlobFrame latest = new BlobFrame();
 
+  // Read by the client threads on every request without the lock: volatile, not guarded.
   private volatile byte[] reply;
   private volatile boolean running;
   private volatile ServerSocket serverSocket;
   private volatile int port = -1;
+
+  @GuardedBy("lock")
   private Thread pipelineThread;
+
+  @GuardedBy("lock")
   private Thread acceptThread;
+
   private final Set<Client> clients = ConcurrentHashMap.newKeySet();
+
+  @GuardedBy("lock")
   private final List<Thread> clientThreads = new ArrayList<>();
+
+  @GuardedBy("lock")
   private int clientCounter;
 
   private final AtomicLong requests = new AtomicLong();
@@ -90,9 +109,17 @@ public final class ActsServer implements AutoCloseable {
   private final AtomicLong refused = new AtomicLong();
   private final AtomicLong droppedIdle = new AtomicLong();
   private final AtomicLong replaced = new AtomicLong();
+
+  // The accept thread's, under the lock (see refuse).
+  @GuardedBy("lock")
   private long lastRefusalLogNanos;
+
+  @GuardedBy("lock")
   private long refusalsNotLogged;
+
+  @GuardedBy("lock")
   private boolean refusalLogged;
+
   private final AtomicLong sourceErrors = new AtomicLong();
 
   /** A server (not yet started) for a pipeline. */
@@ -299,6 +326,7 @@ public final class ActsServer implements AutoCloseable {
   }
 
   /** Closes a client the full server cannot take; logged at most once every 10 s. */
+  @GuardedBy("lock")
   private void refuse(Socket s) {
     refused.incrementAndGet();
     long now = clock.nanoTime();
