@@ -7,6 +7,8 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.atomic.AtomicLong;
 import javafx.application.Platform;
+import org.jaria.apps.fx.BackgroundWork;
+import org.jaria.apps.fx.PointLayer;
 import org.jaria.geom.ArPose;
 import org.jaria.laser.log.LoggedScan;
 import org.jaria.laser.log.ScanLogEntry;
@@ -18,8 +20,6 @@ import org.jaria.mapping.LogMapping;
 import org.jaria.mapping.MapBuildException;
 import org.jaria.mapping.MapBuilderParams;
 import org.jaria.mapping.Trajectory;
-import org.jaria.apps.fx.BackgroundWork;
-import org.jaria.apps.fx.PointLayer;
 
 /**
  * Opening a laser scan log ({@code .2d}) in the map editor: the map is built on the editor's worker

@@ -8,9 +8,9 @@ import javafx.scene.control.Button;
 import javafx.scene.control.Label;
 import javafx.scene.control.Tooltip;
 import javafx.scene.layout.HBox;
+import org.jaria.apps.fx.Prompts;
 import org.jaria.net.ArNetPacket;
 import org.jaria.net.ArNetPacketException;
-import org.jaria.apps.fx.Prompts;
 
 /**
  * The monitor's scan buttons (MobileEyes' "start scan"): on a guiServer that offers ArNetworking's

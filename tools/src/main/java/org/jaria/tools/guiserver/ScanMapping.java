@@ -106,7 +106,7 @@ public final class ScanMapping implements AutoCloseable {
    * @throws IOException if the folder does not exist
    */
   public static ScanMapping withSimulatedLaser(
-      org.jaria.net.server.GuiServer gui, ArRobot robot, Path folder, Consumer<String> report)
+      org.jaria.net.guiserver.GuiServer gui, ArRobot robot, Path folder, Consumer<String> report)
       throws IOException {
     ArSimulatedLaser laser = new ArSimulatedLaser();
     robot.lock();

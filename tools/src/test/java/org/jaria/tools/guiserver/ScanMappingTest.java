@@ -22,7 +22,7 @@ import org.jaria.net.data.LiveMap;
 import org.jaria.net.data.Points;
 import org.jaria.net.server.MapFolder;
 import org.jaria.net.server.ServerOptions;
-import org.jaria.net.sim.SimulatedGuiServer;
+import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
