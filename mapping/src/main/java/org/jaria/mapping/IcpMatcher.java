@@ -22,6 +22,12 @@ final class IcpMatcher {
   /** Standard deviation assumed for one point's distance, mm (for the information matrix). */
   static final double POINT_SIGMA_MM = 15;
 
+  /**
+   * A scan's points err together (a slightly wrong heading, a wall's texture), so however many pair
+   * up, they are trusted as much as this many independent points.
+   */
+  static final double WORTH_POINTS = 20;
+
   private static final double[] SCHEDULE = {250, 180, 120, 90, 70, 60, 50};
   private static final int MAX_ROUNDS = 30;
   private double priorMm = 600;
@@ -81,9 +87,12 @@ final class IcpMatcher {
     for (; round < MAX_ROUNDS; round++) {
       double maxDist = SCHEDULE[Math.min(round, SCHEDULE.length - 1)];
       accumulate(ref, sx, sy, count, tx, ty, tt, maxDist, false);
-      // weak prior towards the guess
-      double px = 1 / (priorMm * priorMm);
-      double pt = 1 / (priorRad * priorRad);
+      // the pull towards the guess, in the units of the points' squared distances: one point's
+      // distance has a standard deviation of POINT_SIGMA_MM, and the points of a scan are
+      // trusted no more than WORTH_POINTS independent ones (as the information below is)
+      double k = POINT_SIGMA_MM * POINT_SIGMA_MM * Math.max(1, pairs / WORTH_POINTS);
+      double px = k / (priorMm * priorMm);
+      double pt = k / (priorRad * priorRad);
       h[0] += px;
       h[3] += px;
       h[5] += pt;
@@ -109,7 +118,7 @@ final class IcpMatcher {
     int inliers = accumulate(ref, sx, sy, count, tx, ty, tt, OVERLAP_MM, true);
     inlierFraction = count == 0 ? 0 : (double) inliers / count;
     overlapInliers = partnered == 0 ? 0 : (double) inliers / partnered;
-    double scale = 1 / (POINT_SIGMA_MM * POINT_SIGMA_MM * Math.max(1, pairs / 20.0));
+    double scale = 1 / (POINT_SIGMA_MM * POINT_SIGMA_MM * Math.max(1, pairs / WORTH_POINTS));
     for (int k = 0; k < 6; k++) {
       info[k] = h[k] * scale;
     }

@@ -124,7 +124,7 @@ final class LoopCloser {
     ArPose matched = new ArPose(icp.x, icp.y, icp.thDeg);
     ArPose rel = Poses.between(nodes.estimate(best), matched);
     nodes.graph.addEdge(
-        best, i, rel.x(), rel.y(), rel.th(), MapBuilder.toGraphInfo(icp.info), true);
+        best, i, rel.x(), rel.y(), rel.th(), MapBuilder.toGraphInfo(icp.info, matched.th()), true);
     closures++;
     travelAtLastClosure = nodes.travel(i);
     if (matched.findDistanceTo(est) > OPTIMIZE_MM

@@ -155,7 +155,12 @@ public final class MapBuilder {
     timeMatch += System.nanoTime() - t0;
     int n = nodes.add(est, odo, travel, s.time(), pts);
     ArPose rel = Poses.between(nodes.estimate(last), est);
-    double[] info = matched ? toGraphInfo(icp.info) : odometryInfo(moved, turned);
+    // ICP pins what the scan sees (across a corridor, the heading); along a featureless
+    // corridor it knows nothing, and there the odometry's guess is what the estimate rests on.
+    double[] info =
+        matched
+            ? plus(toGraphInfo(icp.info, est.th()), odometryInfo(moved, turned))
+            : odometryInfo(moved, turned);
     nodes.graph.addEdge(last, n, rel.x(), rel.y(), rel.th(), info, false);
     trajectory.add(s.id(), s.time(), odo, n, ArPose.ORIGIN);
     scansUsed++;
@@ -237,10 +242,28 @@ public final class MapBuilder {
     }
   }
 
-  /** ICP information (mm, rad) in the graph's units (m, rad), with a floor against degeneracy. */
-  static double[] toGraphInfo(double[] mmInfo) {
+  /**
+   * ICP information (mm, rad, the map's axes) in the graph's units (m, rad) and in the frame of the
+   * matched pose (heading {@code thDeg}), where the graph measures an edge's error, with a floor
+   * against degeneracy. A corridor's walls pin the pose across the corridor, not along it: the
+   * graph must know which of its axes that is, whichever way the corridor runs.
+   */
+  static double[] toGraphInfo(double[] mmInfo, double thDeg) {
+    double c = Math.cos(Math.toRadians(thDeg));
+    double s = Math.sin(Math.toRadians(thDeg));
+    double a = mmInfo[0];
+    double b = mmInfo[1];
+    double d = mmInfo[3];
+    double xt = mmInfo[2];
+    double yt = mmInfo[4];
+    // R' I R, R the rotation by the pose's heading
     double[] g = {
-      mmInfo[0] * 1e6, mmInfo[1] * 1e6, mmInfo[2] * 1e3, mmInfo[3] * 1e6, mmInfo[4] * 1e3, mmInfo[5]
+      (c * c * a + 2 * c * s * b + s * s * d) * 1e6,
+      (-c * s * a + (c * c - s * s) * b + c * s * d) * 1e6,
+      (c * xt + s * yt) * 1e3,
+      (s * s * a - 2 * c * s * b + c * c * d) * 1e6,
+      (-s * xt + c * yt) * 1e3,
+      mmInfo[5]
     };
     g[0] += 1;
     g[3] += 1;
@@ -248,10 +271,22 @@ public final class MapBuilder {
     return g;
   }
 
-  /** Information of an odometry-only edge: 5 % of the distance, 5 % of the turn plus a degree. */
+  private static double[] plus(double[] a, double[] b) {
+    double[] out = new double[6];
+    for (int k = 0; k < 6; k++) {
+      out[k] = a[k] + b[k];
+    }
+    return out;
+  }
+
+  /**
+   * Information of odometry between two poses: 5 % of the distance (at least 10 mm); the heading to
+   * a quarter of a degree, half a degree a metre and 5 % of the turn (wheels keep a straight line
+   * well; it is in turns that they slip).
+   */
   private static double[] odometryInfo(double movedMm, double turnedDeg) {
     double sxy = Math.max(0.01, 0.05 * movedMm / 1000);
-    double sth = Math.toRadians(1 + 0.05 * turnedDeg);
+    double sth = Math.toRadians(0.25 + 0.5 * movedMm / 1000 + 0.05 * turnedDeg);
     return new double[] {1 / (sxy * sxy), 0, 0, 1 / (sxy * sxy), 0, 1 / (sth * sth)};
   }
 
