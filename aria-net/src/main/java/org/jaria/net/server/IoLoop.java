@@ -432,6 +432,18 @@ final class IoLoop implements Runnable {
     server.stats.udpDropped.increment();
   }
 
+  /**
+   * Whether {@code c}'s socket takes some of its waiting output now. Output queued by another
+   * thread since the last write has not waited on the client yet (the time since the last write
+   * progress says nothing about it), so a client is judged stalled only if its socket takes nothing
+   * when tried.
+   */
+  private boolean flushedNow(ArServerClient c) {
+    long before = c.lastWriteProgressNanos;
+    flush(c);
+    return c.isClosed() || c.lastWriteProgressNanos != before;
+  }
+
   /** Writes as much of {@code c}'s queue as the socket takes now. */
   void flush(ArServerClient c) {
     try {
@@ -499,7 +511,8 @@ final class IoLoop implements Runnable {
         close(c, NetError.IDLE, "sent nothing for " + secs(options.idleTimeout()), true);
       } else if (stall > 0
           && (c.writing != null || !c.out.isEmpty())
-          && now - c.lastWriteProgressNanos > stall) {
+          && now - c.lastWriteProgressNanos > stall
+          && !flushedNow(c)) {
         server.stats.droppedSlow.increment();
         close(
             c,
