@@ -23,12 +23,8 @@ import org.jaria.mapping.SonarSketch;
 import org.jaria.range.ArSensorReading;
 import org.jaria.range.ArSonarDevice;
 import org.jaria.robot.ArRobot;
-import org.jaria.sim.OdometryError;
-import org.jaria.sim.RobotOptions;
-import org.jaria.sim.SimOptions;
-import org.jaria.sim.SimRobot;
-import org.jaria.sim.SimWorld;
 import org.jaria.sim.client.SimulatedRobot;
+import org.jaria.tools.sim.SeededDrive;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -139,16 +135,7 @@ final class MapSketchCommand implements Callable<Integer> {
   }
 
   private SonarSketch onSimulator(PrintWriter out) throws IOException, MapFormatException {
-    ArMap map = ArMap.load(sim);
-    SimWorld world =
-        SimWorld.create(
-            map,
-            SimOptions.builder()
-                .seed(seed)
-                .odometryError(OdometryError.parse(odometryError))
-                .build());
-    SimRobot r = world.addRobot(RobotOptions.of("p3dx-sh"));
-    SimulatedRobot s = SimulatedRobot.connect(world, r);
+    SimulatedRobot s = SeededDrive.p3dx(ArMap.load(sim), seed, odometryError);
     try {
       SonarSketch sketch = start(s.robot());
       out.printf(Locale.ROOT, "sketching %s with the sonar for %.0f s (simulated)%n", sim, seconds);
@@ -158,7 +145,7 @@ final class MapSketchCommand implements Callable<Integer> {
       return sketch;
     } finally {
       s.close();
-      world.close();
+      s.world().close();
     }
   }
 

@@ -15,12 +15,8 @@ import org.jaria.map.MapFormatException;
 import org.jaria.range.ArSimulatedLaser;
 import org.jaria.range.ArSonarDevice;
 import org.jaria.robot.ArRobot;
-import org.jaria.sim.OdometryError;
-import org.jaria.sim.RobotOptions;
-import org.jaria.sim.SimOptions;
-import org.jaria.sim.SimRobot;
-import org.jaria.sim.SimWorld;
 import org.jaria.sim.client.SimulatedRobot;
+import org.jaria.tools.sim.SeededDrive;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -124,16 +120,7 @@ public final class LaserLogCommand implements Callable<Integer> {
   }
 
   private int onSimulator(PrintWriter out, PrintWriter err) throws IOException, MapFormatException {
-    ArMap map = ArMap.load(sim);
-    SimWorld world =
-        SimWorld.create(
-            map,
-            SimOptions.builder()
-                .seed(seed)
-                .odometryError(OdometryError.parse(odometryError))
-                .build());
-    SimRobot r = world.addRobot(RobotOptions.of("p3dx-sh"));
-    SimulatedRobot s = SimulatedRobot.connect(world, r);
+    SimulatedRobot s = SeededDrive.p3dx(ArMap.load(sim), seed, odometryError);
     try {
       ArRobot robot = s.robot();
       ArSimulatedLaser laser = prepare(robot);
@@ -156,7 +143,7 @@ public final class LaserLogCommand implements Callable<Integer> {
       return finish(logger, robot, out, err);
     } finally {
       s.close();
-      world.close();
+      s.world().close();
     }
   }
 
