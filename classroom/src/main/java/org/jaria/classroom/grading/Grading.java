@@ -12,7 +12,6 @@ import java.nio.channels.Pipe;
 import java.nio.file.Path;
 import java.util.List;
 import org.jaria.classroom.link.LinkAudit;
-import org.jaria.classroom.link.StudentHarness;
 import org.jaria.classroom.link.StudentStreams;
 
 /**

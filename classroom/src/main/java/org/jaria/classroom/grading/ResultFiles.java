@@ -12,7 +12,7 @@ import java.util.Locale;
  * status.txt (status and seconds, then the student's name), written by the grader only. Re-grading
  * one student reads the others' back from here, and checks that each folder is still the student's.
  */
-final class ResultFiles {
+public final class ResultFiles {
 
   private ResultFiles() {}
 
@@ -35,7 +35,7 @@ final class ResultFiles {
    *
    * @throws IOException if the files are missing or not the grader's
    */
-  static Grader.Result read(Path studentDir, String student) throws IOException {
+  public static Grader.Result read(Path studentDir, String student) throws IOException {
     Grade g = GradeFile.read(studentDir.resolve("grade.txt"));
     List<String> lines =
         Files.readAllLines(studentDir.resolve("status.txt"), StandardCharsets.UTF_8);

@@ -17,7 +17,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import org.jaria.classroom.link.CompileReport;
 import org.jaria.classroom.link.LinkLost;
-import org.jaria.classroom.link.StudentMain;
 import org.jaria.classroom.link.StudentStreams;
 import org.jaria.classroom.sandbox.Cleanup;
 import org.jaria.classroom.sandbox.ScratchFiles;

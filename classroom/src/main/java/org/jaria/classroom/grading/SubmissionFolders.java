@@ -228,7 +228,7 @@ public final class SubmissionFolders {
    * ignores case), and the names depend only on the set of students, so a re-grade of one finds the
    * same folder.
    */
-  static java.util.Map<String, String> reportFolders(List<String> students) {
+  public static java.util.Map<String, String> reportFolders(List<String> students) {
     java.util.Map<String, String> out = new java.util.LinkedHashMap<>();
     java.util.Set<String> taken = new java.util.HashSet<>();
     List<String> sorted = new ArrayList<>(students);

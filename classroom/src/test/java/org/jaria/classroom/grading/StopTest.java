@@ -19,6 +19,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
+import org.jaria.classroom.classgrading.ClassGrading;
+import org.jaria.classroom.classgrading.GradeRequest;
 import org.jaria.classroom.sandbox.Sandbox;
 import org.jaria.classroom.square.SquareAssignment;
 import org.junit.jupiter.api.Tag;

@@ -107,4 +107,11 @@ class SubmissionFoldersTest {
     assertTrue(Files.exists(tmp.resolve("out/a/b/c/d/e/f/g/h/i/j/Deep.java")));
     assertEquals(List.of("Linked.java"), c.links());
   }
+
+  @Test
+  void aFolderOfJavaFilesIsOneSubmission(@TempDir Path tmp) throws IOException {
+    java(tmp.resolve("mine"), "Square.java");
+    assertEquals(List.of(tmp.resolve("mine")), SubmissionFolders.submissions(tmp.resolve("mine")));
+    assertEquals(List.of(tmp.resolve("mine")), SubmissionFolders.submissions(tmp));
+  }
 }

@@ -14,8 +14,8 @@ import java.time.Duration;
 import java.util.Base64;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.jaria.classroom.grading.ClassGrading;
-import org.jaria.classroom.grading.GradeRequest;
+import org.jaria.classroom.classgrading.ClassGrading;
+import org.jaria.classroom.classgrading.GradeRequest;
 import org.jaria.classroom.sandbox.Sandbox;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -97,7 +97,7 @@ class PlatformsTest {
             GradeRequest.of("square", ag.resolve("submission"), ag.resolve("grading-report"))
                 .withTimeout(Duration.ofSeconds(30))
                 .withScratchRoot(tmp.resolve("scratch"))
-                .reportingTo(GradeRequest.Platform.GRADESCOPE, ag.resolve("results")));
+                .reportingTo(Platform.GRADESCOPE, ag.resolve("results")));
     assertEquals(0, r.exit(), r.err());
     String json = Files.readString(ag.resolve("results/results.json"), StandardCharsets.UTF_8);
     assertTrue(json.contains("\"score\": 5,"), json);
@@ -125,7 +125,7 @@ class PlatformsTest {
             GradeRequest.of("square", repo, tmp.resolve("workspace/grading-report"))
                 .withTimeout(Duration.ofSeconds(30))
                 .withScratchRoot(tmp.resolve("scratch"))
-                .reportingTo(GradeRequest.Platform.GITHUB_CLASSROOM, output));
+                .reportingTo(Platform.GITHUB_CLASSROOM, output));
     assertEquals(0, r.exit(), r.err());
     assertEquals(local, r.out(), "the step's log is the feedback, byte for byte");
     String line = Files.readString(output).strip();
@@ -150,7 +150,7 @@ class PlatformsTest {
         grade(
             GradeRequest.of("square", ag.resolve("submission"), ag.resolve("grading-report"))
                 .withBwrap(tmp.resolve("no-bwrap"))
-                .reportingTo(GradeRequest.Platform.GRADESCOPE, ag.resolve("results")));
+                .reportingTo(Platform.GRADESCOPE, ag.resolve("results")));
     assertEquals(ClassGrading.REFUSED, r.exit());
     String json = Files.readString(ag.resolve("results/results.json"));
     assertTrue(json.contains("\"score\": 0,"), json);
@@ -162,7 +162,7 @@ class PlatformsTest {
         grade(
             GradeRequest.of("square", ag.resolve("submission"), ag.resolve("grading-report"))
                 .withBwrap(tmp.resolve("no-bwrap"))
-                .reportingTo(GradeRequest.Platform.GITHUB_CLASSROOM, output));
+                .reportingTo(Platform.GITHUB_CLASSROOM, output));
     assertEquals(ClassGrading.REFUSED, gh.exit());
     String b64 = Files.readString(output).strip().substring("result=".length());
     String ghJson = new String(Base64.getDecoder().decode(b64), StandardCharsets.UTF_8);

@@ -14,8 +14,8 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.stream.Stream;
-import org.jaria.classroom.grading.ClassGrading;
-import org.jaria.classroom.grading.GradeRequest;
+import org.jaria.classroom.classgrading.ClassGrading;
+import org.jaria.classroom.classgrading.GradeRequest;
 import org.jaria.classroom.sandbox.Sandbox;
 
 /**

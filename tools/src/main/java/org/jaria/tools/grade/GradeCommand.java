@@ -8,11 +8,12 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.jaria.classroom.classgrading.ClassGrading;
+import org.jaria.classroom.classgrading.GradeRequest;
 import org.jaria.classroom.grading.Assignment;
-import org.jaria.classroom.grading.ClassGrading;
-import org.jaria.classroom.grading.GradeRequest;
 import org.jaria.classroom.pack.PackTemplate;
 import org.jaria.classroom.pack.Packs;
+import org.jaria.classroom.platform.Platform;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -171,12 +172,12 @@ public final class GradeCommand implements Callable<Integer> {
       request = request.withoutIsolation();
     }
     if (gradescope != null) {
-      request = request.reportingTo(GradeRequest.Platform.GRADESCOPE, gradescope);
+      request = request.reportingTo(Platform.GRADESCOPE, gradescope);
     } else if (githubClassroom) {
       String output = System.getenv("GITHUB_OUTPUT");
       request =
           request.reportingTo(
-              GradeRequest.Platform.GITHUB_CLASSROOM,
+              Platform.GITHUB_CLASSROOM,
               output == null || output.isBlank() ? null : Path.of(output));
     }
     return ClassGrading.grade(request, o, err);

@@ -1,4 +1,4 @@
-package org.jaria.classroom.link;
+package org.jaria.classroom.grading;
 
 import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
@@ -11,10 +11,7 @@ import java.io.FileOutputStream;
 import java.io.IOException;
 import java.net.URLClassLoader;
 import java.nio.file.Path;
-import org.jaria.classroom.grading.Assignment;
-import org.jaria.classroom.grading.Assignments;
-import org.jaria.classroom.grading.SolutionFinder;
-import org.jaria.classroom.grading.SubmissionCompiler;
+import org.jaria.classroom.link.CompileReport;
 
 /**
  * The main class of a student's JVM: it compiles the student's sources (inside the sandbox, under

@@ -1,4 +1,4 @@
-package org.jaria.classroom.grading;
+package org.jaria.classroom.classgrading;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -174,12 +174,5 @@ class ClassGradingTest {
     Run nobody = grade(ok.onlyStudent("zoe").withoutIsolation());
     assertTrue(nobody.err().contains("no submission called 'zoe'"), nobody.err());
     assertFalse(Files.exists(out), "nothing is graded, so no report folder");
-  }
-
-  @Test
-  void aFolderOfJavaFilesIsOneSubmission(@TempDir Path tmp) throws IOException {
-    write(tmp.resolve("mine"), "Square.java", kit("solution"));
-    assertEquals(List.of(tmp.resolve("mine")), SubmissionFolders.submissions(tmp.resolve("mine")));
-    assertEquals(List.of(tmp.resolve("mine")), SubmissionFolders.submissions(tmp));
   }
 }

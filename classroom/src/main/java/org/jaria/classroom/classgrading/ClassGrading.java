@@ -1,4 +1,4 @@
-package org.jaria.classroom.grading;
+package org.jaria.classroom.classgrading;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -14,7 +14,15 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Properties;
 import java.util.concurrent.atomic.AtomicInteger;
+import org.jaria.classroom.grading.Assignment;
+import org.jaria.classroom.grading.GradeReport;
+import org.jaria.classroom.grading.Grader;
+import org.jaria.classroom.grading.Neutral;
+import org.jaria.classroom.grading.ResultFiles;
+import org.jaria.classroom.grading.SubmissionFolders;
+import org.jaria.classroom.grading.Texts;
 import org.jaria.classroom.pack.Packs;
+import org.jaria.classroom.platform.Platform;
 import org.jaria.classroom.platform.Platforms;
 import org.jaria.classroom.sandbox.Sandbox;
 
@@ -81,7 +89,7 @@ public final class ClassGrading {
     if (!Texts.LANGUAGES.contains(r.lang())) {
       return "--lang is en or es";
     }
-    if (r.platform() != GradeRequest.Platform.LOCAL && r.only() != null) {
+    if (r.platform() != Platform.LOCAL && r.only() != null) {
       return "--only re-grades one student of a class; Gradescope and GitHub Classroom grade one"
           + " submission at a time";
     }
@@ -92,7 +100,7 @@ public final class ClassGrading {
       throws IOException {
     err.println("grade: " + why);
     err.flush();
-    Platforms.refused(r, why, o);
+    Platforms.refused(r.platform(), r.platformOut(), r.lang(), why, o);
     return REFUSED;
   }
 
@@ -103,7 +111,7 @@ public final class ClassGrading {
     try {
       a = packs.byId(r.assignment());
       scan =
-          r.platform() == GradeRequest.Platform.LOCAL
+          r.platform() == Platform.LOCAL
               ? SubmissionFolders.scan(r.submissions())
               : SubmissionFolders.single(r.submissions());
     } catch (IllegalArgumentException | IOException e) {
@@ -162,7 +170,7 @@ public final class ClassGrading {
             Grader.Options.of(r.timeout(), r.jobs(), sandbox).in(texts).scratchIn(r.scratchRoot()),
             students);
     // on a platform, standard output is the student's feedback alone: progress goes to errors
-    PrintWriter progress = r.platform() == GradeRequest.Platform.LOCAL ? o : err;
+    PrintWriter progress = r.platform() == Platform.LOCAL ? o : err;
     progress.printf(
         Locale.ROOT,
         "Grading %d submission(s) of '%s', %d at a time%s...%n",
@@ -221,9 +229,8 @@ public final class ClassGrading {
             r.unsafe(),
             new GradeReport.RunInfo(
                 WHEN.format(r.clock().instant()), r.version(), r.timeout(), r.jobs()));
-    writeReports(
-        report, r.out(), students, folders, o, r.platform() == GradeRequest.Platform.LOCAL);
-    Platforms.graded(r, report, results.get(0), o);
+    writeReports(report, r.out(), students, folders, o, r.platform() == Platform.LOCAL);
+    Platforms.graded(r.platform(), r.platformOut(), report, results.get(0), o);
     return GRADED;
   }
 

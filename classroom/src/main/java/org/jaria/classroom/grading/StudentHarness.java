@@ -1,4 +1,4 @@
-package org.jaria.classroom.link;
+package org.jaria.classroom.grading;
 
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
@@ -9,10 +9,9 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.ReentrantLock;
-import org.jaria.classroom.grading.Assignment;
-import org.jaria.classroom.grading.Programs;
-import org.jaria.classroom.grading.SolutionFinder;
-import org.jaria.classroom.grading.Solutions;
+import org.jaria.classroom.link.Frames;
+import org.jaria.classroom.link.StudentContext;
+import org.jaria.classroom.link.StudentSide;
 import org.jaria.clock.Clock;
 import org.jaria.clock.VirtualClock;
 import org.jaria.connection.ArDeviceConnection;
@@ -28,7 +27,7 @@ import org.jaria.robot.ArRobot;
  * Programs#STUCK_AFTER} of real time without waiting: stuck). Then it answers with what the robot
  * wrote.
  */
-public final class StudentHarness {
+final class StudentHarness {
 
   private final Assignment assignment;
   private final ClassLoader loader;

@@ -1,9 +1,7 @@
-package org.jaria.classroom.link;
+package org.jaria.classroom.grading;
 
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Consumer;
-import org.jaria.classroom.grading.Programs;
-import org.jaria.classroom.grading.Solutions;
 import org.jaria.clock.VirtualClock;
 import org.jaria.robot.ArRobot;
 

@@ -1,9 +1,10 @@
-package org.jaria.classroom.grading;
+package org.jaria.classroom.classgrading;
 
 import java.nio.file.Path;
 import java.time.Clock;
 import java.time.Duration;
 import java.util.List;
+import org.jaria.classroom.platform.Platform;
 
 /**
  * What a teacher asks {@code jaria grade} for, as plain values: which assignment, whose
@@ -44,24 +45,11 @@ public record GradeRequest(
     Clock clock,
     String version) {
 
-  /** Where a grade is reported besides the local reports. */
-  public enum Platform {
-    /** Only the local reports. */
-    LOCAL,
-    /** Gradescope's autograder: results.json in the results folder. */
-    GRADESCOPE,
-    /** GitHub Classroom's autograding: a result for its reporter, feedback on standard output. */
-    GITHUB_CLASSROOM
-  }
-
   /** Real time per student unless asked otherwise. */
   public static final Duration DEFAULT_TIMEOUT = Duration.ofSeconds(60);
 
   /** Where bubblewrap is on Debian and Ubuntu. */
   public static final Path DEFAULT_BWRAP = Path.of("/usr/bin/bwrap");
-
-  /** Where Gradescope's autograder wants results.json. */
-  public static final Path GRADESCOPE_RESULTS = Path.of("/autograder/results");
 
   /** Copies the list. */
   public GradeRequest {
