@@ -4,11 +4,19 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import javax.tools.JavaCompiler;
+import javax.tools.StandardJavaFileManager;
+import javax.tools.ToolProvider;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /** The build files agree where the README's commands depend on them. */
 class BuildFilesTest {
@@ -40,5 +48,57 @@ class BuildFilesTest {
     String ci = Files.readString(root.resolve(".ci/run"));
     assertTrue(readme.contains("\n    ./mvnw verify\n"), "README shows ./mvnw verify");
     assertTrue(ci.strip().endsWith("./mvnw -B verify"), "ci ends with the README's command");
+  }
+
+  /**
+   * The Javadoc tool no longer runs in every build (its jars are made with {@code -Prelease}), so
+   * its checks must run inside javac: the main sources' compile gets {@code jaria.javac.doclint},
+   * and that option fails a public comment with a broken link or unclosed HTML, as the Javadoc tool
+   * did.
+   */
+  @Test
+  void theMainCompileChecksJavadocAsTheJavadocToolDid(@TempDir Path dir) throws IOException {
+    String rootPom = Files.readString(root.resolve("pom.xml"));
+    Matcher option =
+        Pattern.compile("<jaria.javac.doclint>([^<]+)</jaria.javac.doclint>").matcher(rootPom);
+    assertTrue(option.find(), "the root pom sets jaria.javac.doclint");
+    assertTrue(
+        Pattern.compile(
+                "<id>default-compile</id>\\s*<configuration>\\s*"
+                    + "<compilerArgs combine.children=\"append\">\\s*"
+                    + "<arg>\\$\\{jaria.javac.doclint}</arg>")
+            .matcher(rootPom)
+            .find(),
+        "the main compile (default-compile) passes jaria.javac.doclint to javac");
+
+    Path broken = dir.resolve("Broken.java");
+    Files.writeString(
+        broken,
+        "/** A class whose comment links {@link Nowhere} and leaves <b>bold open. */\n"
+            + "public class Broken {\n"
+            + "  /** A private helper's comment is not the Javadoc tool's business: <tt&> */\n"
+            + "  private void helper() {}\n"
+            + "}\n");
+    JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
+    StringWriter log = new StringWriter();
+    boolean ok;
+    try (StandardJavaFileManager fm =
+        javac.getStandardFileManager(null, Locale.ROOT, StandardCharsets.UTF_8)) {
+      ok =
+          javac
+              .getTask(
+                  log,
+                  fm,
+                  null,
+                  List.of(option.group(1), "-d", dir.toString()),
+                  null,
+                  fm.getJavaFileObjects(broken))
+              .call();
+    }
+    assertTrue(!ok, "javac with " + option.group(1) + " must fail the broken comment:\n" + log);
+    assertTrue(log.toString().contains("reference not found"), log.toString());
+    assertTrue(log.toString().contains("element not closed: b"), log.toString());
+    assertTrue(
+        !log.toString().contains("Broken.java:3"), "private members are not checked\n" + log);
   }
 }

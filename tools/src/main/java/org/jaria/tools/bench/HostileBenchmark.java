@@ -43,6 +43,18 @@ public final class HostileBenchmark {
 
   /** Runs the benchmark and returns its table. */
   public static String run(boolean quick) throws Exception {
+    StringBuilder out = new StringBuilder(floodsAndReconnects(quick));
+    SquatterBenchmark.rows(out, quick);
+    out.append(GuiServerHostileBenchmark.run(quick));
+    return out.toString();
+  }
+
+  /**
+   * The table's header and its own rows: the floods of silent connections and the reconnects. The
+   * squatting and guiServer rows have their own tests, so the test of these rows does not run them
+   * a second time.
+   */
+  static String floodsAndReconnects(boolean quick) throws Exception {
     int flood = quick ? 50 : 200;
     StringBuilder out = new StringBuilder();
     out.append(
@@ -60,8 +72,6 @@ public final class HostileBenchmark {
     simFlood(out, flood);
     actsFlood(out, flood);
     reconnects(out, quick ? 5 : 25);
-    SquatterBenchmark.rows(out, quick);
-    out.append(GuiServerHostileBenchmark.run(quick));
     return out.toString();
   }
 

@@ -4,12 +4,16 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 
-/** {@code jaria bench hostile --quick} runs and every scenario ends with the real client served. */
+/**
+ * The flood rows of {@code jaria bench hostile --quick}: every scenario ends with the real client
+ * served. (The squatting and guiServer rows are {@link SquatterBenchmarkTest}'s and {@link
+ * GuiServerHostileBenchmarkTest}'s.)
+ */
 class HostileBenchmarkTest {
 
   @Test
   void quickRunServesTheRealClientsAfterEveryFlood() throws Exception {
-    String table = HostileBenchmark.run(true);
+    String table = HostileBenchmark.floodsAndReconnects(true);
     java.util.List<String> lines = table.lines().toList();
     assertTrue(lines.get(1).startsWith("sim: 50 silent connections"), table);
     assertTrue(lines.get(2).startsWith("acts: 50 silent connections"), table);
