@@ -72,13 +72,9 @@ class MonitorScanTest {
                     "hall.map",
                     "p3dx-sh",
                     1,
-                    // The monitor's connection sends some 25 requests at once; on a loaded
-                    // machine the server's workers may not answer them before the 16 allowed.
-                    ServerOptions.builder()
-                        .port(0)
-                        .bindAddress("127.0.0.1")
-                        .maxPendingCalls(64)
-                        .build(),
+                    // The default limit of waiting requests: the monitor's connection
+                    // (some 25 requests at once) must not be refused part of them.
+                    ServerOptions.builder().port(0).bindAddress("127.0.0.1").build(),
                     ArnlNavigation.Mode.THREADED,
                     8.0,
                     false),

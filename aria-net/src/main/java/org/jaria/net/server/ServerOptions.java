@@ -192,7 +192,9 @@ public record ServerOptions(
     private boolean udp = true;
     private Duration minInterval = Duration.ofMillis(50);
     private int maxSubscriptions = 64;
-    private int maxPendingCalls = 16;
+    // A MobileEyes-class client asks for everything it shows at once when it connects (JAria's
+    // monitor sends some 25 requests); at 16 a loaded server refused part of that as busy.
+    private int maxPendingCalls = 64;
     private int workerThreads = 2;
     private int workerQueue = 256;
     private int cycleQueue = 256;

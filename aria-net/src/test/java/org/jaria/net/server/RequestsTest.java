@@ -117,6 +117,47 @@ class RequestsTest {
     }
   }
 
+  /**
+   * A monitor asks for everything it shows when it connects (JAria's monitor sends some 25 requests
+   * at once, MobileEyes as many): with the default options, none is refused as busy even while the
+   * server's workers are all held up.
+   */
+  @Test
+  void aConnectingMonitorsBurstOfRequestsIsNotRefused() throws Exception {
+    CountDownLatch release = new CountDownLatch(1);
+    try (ArServerBase s = server(ServerOptions.builder())) {
+      s.addData(
+          "slow",
+          "",
+          "none",
+          "string",
+          "",
+          Where.WORKER,
+          (c, q, r) -> {
+            release.await(20, TimeUnit.SECONDS);
+            r.strToBuf("done");
+          });
+      s.open();
+      try (RawClient raw = new RawClient(s.getPort())) {
+        raw.login("", "");
+        int cmd = s.findCommandFromName("slow");
+        long before = s.getStats().getRequests();
+        int burst = 40;
+        for (int i = 0; i < burst; i++) {
+          raw.requestOnce(cmd, new ArNetPacket());
+        }
+        Eventually.until(
+            "the burst read while the workers wait",
+            () -> s.getStats().getRequests() >= before + burst);
+        assertEquals(0, s.getStats().getBusy(), "refused as busy");
+        release.countDown();
+        for (int i = 0; i < burst; i++) {
+          assertEquals("done", raw.readUntil(cmd).bufToStr());
+        }
+      }
+    }
+  }
+
   @Test
   void aClientThatReadsLateGetsTheNewestValueNotABacklog() throws Exception {
     byte[] payload = new byte[30_000];
