@@ -74,11 +74,13 @@ class BuildFilesTest {
     Path broken = dir.resolve("Broken.java");
     Files.writeString(
         broken,
-        "/** A class whose comment links {@link Nowhere} and leaves <b>bold open. */\n"
-            + "public class Broken {\n"
-            + "  /** A private helper's comment is not the Javadoc tool's business: <tt&> */\n"
-            + "  private void helper() {}\n"
-            + "}\n");
+        """
+        /** A class whose comment links {@link Nowhere} and leaves <b>bold open. */
+        public class Broken {
+          /** A private helper's comment is not the Javadoc tool's business: <tt&> */
+          private void helper() {}
+        }
+        """);
     JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
     StringWriter log = new StringWriter();
     boolean ok;
