@@ -54,7 +54,7 @@ public final class MapBuilder {
   private final ScanLogHeader header;
   private final MapBuilderParams params;
   private final NoEchoFilter noEcho = new NoEchoFilter();
-  private final Nodes nodes = new Nodes();
+  private final Nodes nodes;
   private final Trajectory.Builder trajectory = new Trajectory.Builder();
   private final PointIndex local = new PointIndex();
   private final IcpMatcher icp = new IcpMatcher();
@@ -87,6 +87,7 @@ public final class MapBuilder {
     this.header = Objects.requireNonNull(header, "header");
     this.params = Objects.requireNonNull(params, "params");
     this.loops = new LoopCloser(params);
+    this.nodes = new Nodes(params.resolutionMm());
   }
 
   /** Adds a scan or a tag of the log. */
@@ -234,7 +235,7 @@ public final class MapBuilder {
         if (nodes.points(j) != null
             && nodes.distanceSq(j, k) < 200 * 200
             && Math.abs(ArMath.subAngle(nodes.graph.thDeg(j), pk.th())) < 15) {
-          nodes.dropPoints(k);
+          nodes.foldPoints(k, j);
           pruned++;
           break;
         }
@@ -363,6 +364,7 @@ public final class MapBuilder {
       System.out.printf(
           "match %.0f ms (local index %.0f ms, %d searches), loops %.0f ms%n",
           timeMatch / 1e6, timeLocal / 1e6, searches, timeLoops / 1e6);
+      System.out.println(loops.timing() + ", " + nodes.size() + " poses");
     }
     loops.optimize(nodes);
     return MapAssembler.assemble(

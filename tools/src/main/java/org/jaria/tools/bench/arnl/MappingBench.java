@@ -221,7 +221,7 @@ public final class MappingBench {
     sb.append(
         "| map | scans | log s | path RMS / max mm | points within 50 mm | 50-300 mm off |"
             + " walls covered | build CPU s (wall) | log/build | points held, heap | loops |"
-            + " goals reached, mean error mm |\n");
+            + " goals reached, mean error mm (each goal) |\n");
     sb.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
     for (Row r : rows) {
       sb.append(
@@ -247,10 +247,11 @@ public final class MappingBench {
                   ? "-"
                   : String.format(
                       Locale.ROOT,
-                      "%d of %d, %.0f",
+                      "%d of %d, %.0f (%s)",
                       r.nav().reached(),
                       r.nav().goals(),
-                      r.nav().meanErrorMm())));
+                      r.nav().meanErrorMm(),
+                      String.join(", ", r.nav().perGoal()))));
     }
     return sb.toString();
   }

@@ -25,8 +25,12 @@ final class MappingNavigation {
 
   private MappingNavigation() {}
 
-  /** Goals reached and the mean distance from the true pose to the goal at arrival, mm. */
-  record Result(int goals, int reached, double meanErrorMm, List<String> failures) {}
+  /**
+   * Goals reached, the mean distance from the true pose to the goal at arrival (mm), and each
+   * goal's outcome: the distance at arrival in mm, or "missed" and why.
+   */
+  record Result(
+      int goals, int reached, double meanErrorMm, List<String> failures, List<String> perGoal) {}
 
   static Result run(
       ArMap truth, ArMap built, ArPose builtToTruth, List<ArPose> visited, int goals, long seed) {
@@ -38,6 +42,7 @@ final class MappingNavigation {
     int reached = 0;
     List<Double> errors = new ArrayList<>();
     List<String> failures = new ArrayList<>();
+    List<String> perGoal = new ArrayList<>();
     try {
       ArSimulatedLaser laser = new ArSimulatedLaser();
       sim.robot().addRangeDevice(laser);
@@ -72,8 +77,10 @@ final class MappingNavigation {
         if (path.getState() == PathPlanningState.REACHED_GOAL) {
           reached++;
           errors.add(err);
+          perGoal.add(String.valueOf(Math.round(err)));
         } else {
           failures.add(goal + ": " + path.getStatusString());
+          perGoal.add("missed");
         }
         at = sim.sim().getTruePose();
       }
@@ -82,6 +89,6 @@ final class MappingNavigation {
     } finally {
       LocalizationBench.close(sim);
     }
-    return new Result(goals, reached, BenchSupport.mean(errors), failures);
+    return new Result(goals, reached, BenchSupport.mean(errors), failures, perGoal);
   }
 }
