@@ -28,7 +28,8 @@ import org.jaria.laser.log.ScanLogHeader;
  *
  * <p>{@link #progress()} and {@link #snapshot()} show the map growing (a progress bar, a live map
  * in a monitor). Memory grows with the area mapped, not with the log's length: once a pose leaves
- * the local window, its points are let go if an older pose shows the same place.
+ * the local window and an older pose shows the same place, its scan is let go; what it saw is kept
+ * as map cells in the older pose's frame (moving with it), each cell once.
  *
  * <p>Not thread-safe: one thread adds scans; another thread that wants progress or a snapshot must
  * synchronise with it (or ask between scans).
@@ -221,7 +222,10 @@ public final class MapBuilder {
     return est;
   }
 
-  /** Lets go of the points of poses that left the local window and repeat an older pose. */
+  /**
+   * Lets go of the scans of poses that left the local window and repeat an older pose; their map
+   * points are kept in that older pose's frame.
+   */
   private void prune(int newest) {
     if (!params.pruneRedundant()) {
       return;
