@@ -217,7 +217,8 @@ public final class MappingBench {
             + " machine) against the log's duration; memory: scan points held, and heap growth"
             + " over the build. Navigation: laser localization (ArLocalizationTask) on the built"
             + " map, in the true world, to 5 random places the logging drive passed"
-            + " (ArPathPlanningTask).\n\n");
+            + " (ArPathPlanningTask), by routes on the built map that stay within 1.5 m of the"
+            + " logging drive.\n\n");
     sb.append(
         "| map | scans | log s | path RMS / max mm | points within 50 mm | 50-300 mm off |"
             + " walls covered | build CPU s (wall) | log/build | points held, heap | loops |"
