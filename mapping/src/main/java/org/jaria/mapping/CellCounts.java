@@ -85,6 +85,11 @@ final class CellCounts {
     return counts[i];
   }
 
+  /** Approximate bytes held. */
+  long bytes() {
+    return 12L * keys.length + 32;
+  }
+
   void clear() {
     Arrays.fill(keys, EMPTY);
     size = 0;

@@ -31,6 +31,7 @@ final class MapAssembler {
     double[] gx = new double[4096];
     double[] gy = new double[4096];
     for (int i = 0; i < nodes.size(); i++) {
+      addKept(nodes, i, cells, res);
       ScanPoints p = nodes.points(i);
       if (p == null) {
         continue;
@@ -94,6 +95,34 @@ final class MapAssembler {
     return true;
   }
 
+  /**
+   * Adds the cells node {@code i} keeps of pruned poses (in its frame) to {@code cells} (cells of
+   * {@code cell} mm in the map frame), with their counts.
+   */
+  private static void addKept(Nodes nodes, int i, CellCounts cells, int cell) {
+    int res = nodes.keptResolution();
+    CellCounts kept = nodes.keptCells(i);
+    if (kept == null) {
+      return;
+    }
+    double t = nodes.graph.thRad(i);
+    double c = Math.cos(t);
+    double s = Math.sin(t);
+    double x = nodes.graph.xMm(i);
+    double y = nodes.graph.yMm(i);
+    for (int slot = 0; slot < kept.capacity(); slot++) {
+      if (!kept.used(slot)) {
+        continue;
+      }
+      long key = kept.keyAt(slot);
+      double lx = (CellCounts.keyX(key) + 0.5) * res;
+      double ly = (CellCounts.keyY(key) + 0.5) * res;
+      double gx = x + c * lx - s * ly;
+      double gy = y + s * lx + c * ly;
+      cells.add((int) Math.floor(gx / cell), (int) Math.floor(gy / cell), kept.countAt(slot));
+    }
+  }
+
   /** Node i's points within the map range, in the map frame; returns how many. */
   private static int place(Nodes nodes, int i, ScanPoints p, double[] gx, double[] gy) {
     double t = nodes.graph.thRad(i);
@@ -140,6 +169,7 @@ final class MapAssembler {
     for (int i = 0; i < nodes.size(); i++) {
       px[i] = nodes.graph.xMm(i);
       py[i] = nodes.graph.yMm(i);
+      addKept(nodes, i, cells, 50);
       ScanPoints p = nodes.points(i);
       if (p == null) {
         continue;

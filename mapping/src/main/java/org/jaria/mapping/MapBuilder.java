@@ -28,7 +28,8 @@ import org.jaria.laser.log.ScanLogHeader;
  *
  * <p>{@link #progress()} and {@link #snapshot()} show the map growing (a progress bar, a live map
  * in a monitor). Memory grows with the area mapped, not with the log's length: once a pose leaves
- * the local window, its points are let go if an older pose shows the same place.
+ * the local window and an older pose shows the same place, its scan is let go; what it saw is kept
+ * as map cells in the older pose's frame (moving with it), each cell once.
  *
  * <p>Not thread-safe: one thread adds scans; another thread that wants progress or a snapshot must
  * synchronise with it (or ask between scans).
@@ -54,7 +55,7 @@ public final class MapBuilder {
   private final ScanLogHeader header;
   private final MapBuilderParams params;
   private final NoEchoFilter noEcho = new NoEchoFilter();
-  private final Nodes nodes = new Nodes();
+  private final Nodes nodes;
   private final Trajectory.Builder trajectory = new Trajectory.Builder();
   private final PointIndex local = new PointIndex();
   private final IcpMatcher icp = new IcpMatcher();
@@ -87,6 +88,7 @@ public final class MapBuilder {
     this.header = Objects.requireNonNull(header, "header");
     this.params = Objects.requireNonNull(params, "params");
     this.loops = new LoopCloser(params);
+    this.nodes = new Nodes(params.resolutionMm());
   }
 
   /** Adds a scan or a tag of the log. */
@@ -220,7 +222,10 @@ public final class MapBuilder {
     return est;
   }
 
-  /** Lets go of the points of poses that left the local window and repeat an older pose. */
+  /**
+   * Lets go of the scans of poses that left the local window and repeat an older pose; their map
+   * points are kept in that older pose's frame.
+   */
   private void prune(int newest) {
     if (!params.pruneRedundant()) {
       return;
@@ -234,7 +239,7 @@ public final class MapBuilder {
         if (nodes.points(j) != null
             && nodes.distanceSq(j, k) < 200 * 200
             && Math.abs(ArMath.subAngle(nodes.graph.thDeg(j), pk.th())) < 15) {
-          nodes.dropPoints(k);
+          nodes.foldPoints(k, j);
           pruned++;
           break;
         }
@@ -363,6 +368,7 @@ public final class MapBuilder {
       System.out.printf(
           "match %.0f ms (local index %.0f ms, %d searches), loops %.0f ms%n",
           timeMatch / 1e6, timeLocal / 1e6, searches, timeLoops / 1e6);
+      System.out.println(loops.timing() + ", " + nodes.size() + " poses");
     }
     loops.optimize(nodes);
     return MapAssembler.assemble(

@@ -18,9 +18,9 @@ package org.jaria.mapping;
  *     plus {@code loopSearchPerMetre} per metre driven since the place was last seen
  * @param loopSearchPerMetre growth of the loop search radius with the distance driven, mm per m
  * @param loopMinTravelMm a place counts as revisited only after this much driving, mm
- * @param pruneRedundant whether the points of a pose close to an older one (same place, same
- *     heading) are let go once it leaves the local window, so memory grows with the area mapped,
- *     not the log's length
+ * @param pruneRedundant whether the scan of a pose close to an older one (same place, same heading)
+ *     is let go once it leaves the local window (its map points are kept, as cells in the older
+ *     pose's frame), so memory grows with the area mapped, not the log's length
  */
 public record MapBuilderParams(
     int resolutionMm,

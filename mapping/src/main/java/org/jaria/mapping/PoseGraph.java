@@ -208,6 +208,7 @@ final class PoseGraph {
       return 0;
     }
     int n = 3 * (nodes - 1); // pose 0 is fixed
+    int[] order = EliminationOrder.reverseCuthillMcKee(nodes, ei, ej, edges);
     for (int it = 0; it < iterations; it++) {
       Map<Long, double[]> blocks = new HashMap<>();
       double[] b = new double[n];
@@ -226,7 +227,7 @@ final class PoseGraph {
         gradient(b, i, a, w, e);
         gradient(b, j, bb, w, e);
       }
-      double[] dx = solve(blocks, b, n);
+      double[] dx = solve(blocks, b, n, order);
       if (dx == null) {
         break;
       }
@@ -341,12 +342,17 @@ final class PoseGraph {
     }
   }
 
-  /** Solves H dx = b with H given as upper blocks; null if H is singular. */
-  private static double[] solve(Map<Long, double[]> blocks, double[] b, int n) {
+  /**
+   * Solves H dx = b with H given as upper blocks; null if H is singular. The poses are renumbered
+   * by {@code order} (pose p becomes row block order[p] - 1) before the factorisation: numbered in
+   * driving order, every loop closure back to the first lap would fill the factor between the two
+   * poses, and a few hundred of them make it nearly dense.
+   */
+  private static double[] solve(Map<Long, double[]> blocks, double[] b, int n, int[] order) {
     DMatrixSparseTriplet t = new DMatrixSparseTriplet(n, n, blocks.size() * 18);
     for (Map.Entry<Long, double[]> en : blocks.entrySet()) {
-      int r = (int) (en.getKey() >>> 32) - 1;
-      int c = (int) (en.getKey() & 0xffffffffL) - 1;
+      int r = order[(int) (en.getKey() >>> 32)] - 1;
+      int c = order[(int) (en.getKey() & 0xffffffffL)] - 1;
       double[] blk = en.getValue();
       for (int u = 0; u < 3; u++) {
         for (int v = 0; v < 3; v++) {
@@ -367,14 +373,21 @@ final class PoseGraph {
       return null;
     }
     DMatrixRMaj rhs = new DMatrixRMaj(n, 1);
-    System.arraycopy(b, 0, rhs.data, 0, n);
+    int poses = n / 3 + 1;
+    for (int p = 1; p < poses; p++) {
+      System.arraycopy(b, 3 * (p - 1), rhs.data, 3 * (order[p] - 1), 3);
+    }
     DMatrixRMaj out = new DMatrixRMaj(n, 1);
     solver.solve(rhs, out);
-    for (double v : out.data) {
+    double[] dx = new double[n];
+    for (int p = 1; p < poses; p++) {
+      System.arraycopy(out.data, 3 * (order[p] - 1), dx, 3 * (p - 1), 3);
+    }
+    for (double v : dx) {
       if (!Double.isFinite(v)) {
         return null;
       }
     }
-    return out.data;
+    return dx;
   }
 }

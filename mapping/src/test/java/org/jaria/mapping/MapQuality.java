@@ -66,6 +66,82 @@ final class MapQuality {
     return m.pointCount() == 0 ? 0 : (double) near / m.pointCount();
   }
 
+  /**
+   * The share (0..1) of the true walls the laser saw that the built map covers: samples every 50 mm
+   * along the true lines, and the true points (discs as in {@link #nearWalls}); a sample with a
+   * true laser hit within 50 mm was seen, and is covered if a built point lies within 50 mm.
+   */
+  static double coverage(BuiltMap m, ArMap truth, ArPose toTruth, List<double[]> trueHits) {
+    java.util.Map<Long, List<double[]>> hits = new java.util.HashMap<>();
+    for (double[] xy : trueHits) {
+      for (int k = 0; k < xy.length; k += 2) {
+        bucket(hits, xy[k], xy[k + 1]);
+      }
+    }
+    java.util.Map<Long, List<double[]>> built = new java.util.HashMap<>();
+    for (int i = 0; i < m.pointCount(); i++) {
+      ArPose p = Poses.compose(toTruth, new ArPose(m.x(i), m.y(i)));
+      bucket(built, p.x(), p.y());
+    }
+    List<double[]> samples = new java.util.ArrayList<>();
+    for (ArLineSegment l : truth.getLines()) {
+      double len = Math.hypot(l.x2() - l.x1(), l.y2() - l.y1());
+      int steps = Math.max(1, (int) Math.round(len / 50));
+      for (int k = 0; k <= steps; k++) {
+        double t = (double) k / steps;
+        samples.add(
+            new double[] {l.x1() + t * (l.x2() - l.x1()), l.y1() + t * (l.y2() - l.y1()), 0});
+      }
+    }
+    ArMapPoints pts = truth.getPoints();
+    double disc = truth.getResolution() > 0 ? truth.getResolution() / 2.0 : 10;
+    for (int k = 0; k < pts.size(); k++) {
+      samples.add(new double[] {pts.x(k), pts.y(k), disc});
+    }
+    int seen = 0;
+    int covered = 0;
+    for (double[] s : samples) {
+      if (within(hits, s[0], s[1], 50 + s[2])) {
+        seen++;
+        if (within(built, s[0], s[1], 50 + s[2])) {
+          covered++;
+        }
+      }
+    }
+    return seen == 0 ? 0 : (double) covered / seen;
+  }
+
+  private static final double BUCKET = 200;
+
+  private static long key(long cx, long cy) {
+    return (cx << 32) ^ (cy & 0xffffffffL);
+  }
+
+  private static void bucket(java.util.Map<Long, List<double[]>> grid, double x, double y) {
+    long k = key((long) Math.floor(x / BUCKET), (long) Math.floor(y / BUCKET));
+    grid.computeIfAbsent(k, c -> new java.util.ArrayList<>()).add(new double[] {x, y});
+  }
+
+  private static boolean within(
+      java.util.Map<Long, List<double[]>> grid, double x, double y, double r) {
+    long cx = (long) Math.floor(x / BUCKET);
+    long cy = (long) Math.floor(y / BUCKET);
+    for (long dx = -1; dx <= 1; dx++) {
+      for (long dy = -1; dy <= 1; dy++) {
+        List<double[]> l = grid.get(key(cx + dx, cy + dy));
+        if (l == null) {
+          continue;
+        }
+        for (double[] p : l) {
+          if (Math.hypot(p[0] - x, p[1] - y) <= r) {
+            return true;
+          }
+        }
+      }
+    }
+    return false;
+  }
+
   static double distance(ArLineSegment l, double x, double y) {
     double dx = l.x2() - l.x1();
     double dy = l.y2() - l.y1();

@@ -31,7 +31,7 @@ final class SimDrive {
    * robot's: the simulator may mount the laser elsewhere than the robot's parameter file says, as
    * MobileSim does, and only the laser's pose is observed).
    */
-  record Result(String log, List<ArPose> truth, int mismatched) {}
+  record Result(String log, List<ArPose> truth, int mismatched, List<double[]> trueHits) {}
 
   private SimDrive() {}
 
@@ -48,6 +48,7 @@ final class SimDrive {
       sim.runMillis(1000);
       StringWriter out = new StringWriter();
       List<ArPose> truth = new ArrayList<>();
+      List<double[]> hits = new ArrayList<>();
       int[] mismatched = {0};
       ArLaserLogger logger = new ArLaserLogger(sim.robot(), laser, 300, 25, out, "sim");
       logger.addEntryCB(
@@ -55,6 +56,7 @@ final class SimDrive {
             if (e instanceof LoggedScan s) {
               org.jaria.sim.SimLaserScan t = r.getLaserScan();
               truth.add(t.origin());
+              hits.add(hitsOf(t, MapBuilderParams.DEFAULTS.mapRangeMm()));
               int k = s.size() / 2;
               if (s.hasEcho(k) && Math.abs(s.range(k) - t.range(k)) > 2) {
                 mismatched[0]++;
@@ -66,11 +68,27 @@ final class SimDrive {
       sim.runUntil(d::done, Duration.ofMinutes(60));
       sim.runMillis(500);
       logger.close();
-      return new Result(out.toString(), truth, mismatched[0]);
+      return new Result(out.toString(), truth, mismatched[0], hits);
     } finally {
       sim.close();
       world.close();
     }
+  }
+
+  /** Where the true laser's beams ended on a surface within {@code range}: x, y pairs, mm. */
+  private static double[] hitsOf(org.jaria.sim.SimLaserScan t, double range) {
+    double[] xy = new double[2 * t.size()];
+    int n = 0;
+    ArPose o = t.origin();
+    for (int k = 0; k < t.size(); k++) {
+      int rr = t.range(k);
+      if (rr > 0 && rr <= range) {
+        double a = Math.toRadians(o.th() + t.startDeg() + k * t.incrementDeg());
+        xy[n++] = o.x() + rr * Math.cos(a);
+        xy[n++] = o.y() + rr * Math.sin(a);
+      }
+    }
+    return java.util.Arrays.copyOf(xy, n);
   }
 
   /** Steers through waypoints by the true pose; stops to turn more than 20 degrees. */

@@ -217,11 +217,12 @@ public final class MappingBench {
             + " machine) against the log's duration; memory: scan points held, and heap growth"
             + " over the build. Navigation: laser localization (ArLocalizationTask) on the built"
             + " map, in the true world, to 5 random places the logging drive passed"
-            + " (ArPathPlanningTask).\n\n");
+            + " (ArPathPlanningTask), by routes on the built map that stay within 1.5 m of the"
+            + " logging drive.\n\n");
     sb.append(
         "| map | scans | log s | path RMS / max mm | points within 50 mm | 50-300 mm off |"
             + " walls covered | build CPU s (wall) | log/build | points held, heap | loops |"
-            + " goals reached, mean error mm |\n");
+            + " goals reached, mean error mm (each goal) |\n");
     sb.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
     for (Row r : rows) {
       sb.append(
@@ -247,10 +248,11 @@ public final class MappingBench {
                   ? "-"
                   : String.format(
                       Locale.ROOT,
-                      "%d of %d, %.0f",
+                      "%d of %d, %.0f (%s)",
                       r.nav().reached(),
                       r.nav().goals(),
-                      r.nav().meanErrorMm())));
+                      r.nav().meanErrorMm(),
+                      String.join(", ", r.nav().perGoal()))));
     }
     return sb.toString();
   }

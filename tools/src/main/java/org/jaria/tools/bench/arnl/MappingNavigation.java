@@ -19,18 +19,29 @@ import org.jaria.sim.client.SimulatedRobot;
  * localizes (laser, {@link ArLocalizationTask}) and plans ({@link ArPathPlanningTask}) on the map
  * built from its log. It starts at home (the built map's RobotHome, the log's first pose) and is
  * sent to random places the logging drive passed (so they are on the map), given in the built map's
- * frame.
+ * frame. A goal is only asked for if the route the built map gives to it stays near the logging
+ * drive ({@link #EXPLORED_MM}): a built map knows nothing of the places the laser never came near,
+ * so its planner takes them for free space, and a route through them (a shortcut through a corridor
+ * the drive only glimpsed) leaves the robot among walls its map does not have.
  */
 final class MappingNavigation {
 
+  /** Every point of a goal's route on the built map lies this close to a logged pose, mm. */
+  static final double EXPLORED_MM = 1500;
+
   private MappingNavigation() {}
 
-  /** Goals reached and the mean distance from the true pose to the goal at arrival, mm. */
-  record Result(int goals, int reached, double meanErrorMm, List<String> failures) {}
+  /**
+   * Goals reached, the mean distance from the true pose to the goal at arrival (mm), and each
+   * goal's outcome: the distance at arrival in mm, or "missed" and why.
+   */
+  record Result(
+      int goals, int reached, double meanErrorMm, List<String> failures, List<String> perGoal) {}
 
   static Result run(
       ArMap truth, ArMap built, ArPose builtToTruth, List<ArPose> visited, int goals, long seed) {
     NavigationMap nav = NavigationMap.build(truth, 100, 300, 1000, 4);
+    NavigationMap onBuilt = NavigationMap.build(built, 100, 300, 1000, 4);
     ArPose home = truth.findHomePose().orElse(ArPose.ORIGIN);
     ArPose truthToBuilt = TruthCompare.inverse(builtToTruth);
     SplittableRandom rng = new SplittableRandom(seed);
@@ -38,6 +49,7 @@ final class MappingNavigation {
     int reached = 0;
     List<Double> errors = new ArrayList<>();
     List<String> failures = new ArrayList<>();
+    List<String> perGoal = new ArrayList<>();
     try {
       ArSimulatedLaser laser = new ArSimulatedLaser();
       sim.robot().addRangeDevice(laser);
@@ -58,7 +70,9 @@ final class MappingNavigation {
         ArPose goal = null;
         for (int tries = 0; tries < 500 && goal == null; tries++) {
           ArPose p = visited.get(rng.nextInt(visited.size()));
-          if (p.findDistanceTo(at) > 4000 && BenchSupport.route(nav, at, p) != null) {
+          if (p.findDistanceTo(at) > 4000
+              && BenchSupport.route(nav, at, p) != null
+              && explored(onBuilt, builtToTruth, at, p, visited)) {
             goal = p;
           }
         }
@@ -72,8 +86,10 @@ final class MappingNavigation {
         if (path.getState() == PathPlanningState.REACHED_GOAL) {
           reached++;
           errors.add(err);
+          perGoal.add(String.valueOf(Math.round(err)));
         } else {
           failures.add(goal + ": " + path.getStatusString());
+          perGoal.add("missed");
         }
         at = sim.sim().getTruePose();
       }
@@ -82,6 +98,34 @@ final class MappingNavigation {
     } finally {
       LocalizationBench.close(sim);
     }
-    return new Result(goals, reached, BenchSupport.mean(errors), failures);
+    return new Result(goals, reached, BenchSupport.mean(errors), failures, perGoal);
+  }
+
+  /**
+   * Whether the built map's route from {@code from} to {@code to} (true poses) stays within {@link
+   * #EXPLORED_MM} of the logging drive's poses {@code visited}.
+   */
+  static boolean explored(
+      NavigationMap onBuilt, ArPose builtToTruth, ArPose from, ArPose to, List<ArPose> visited) {
+    ArPose truthToBuilt = TruthCompare.inverse(builtToTruth);
+    List<ArPose> route =
+        BenchSupport.route(
+            onBuilt,
+            TruthCompare.compose(truthToBuilt, from),
+            TruthCompare.compose(truthToBuilt, to));
+    if (route == null) {
+      return false;
+    }
+    for (ArPose b : route) {
+      ArPose t = TruthCompare.compose(builtToTruth, b);
+      boolean near = false;
+      for (int k = 0; k < visited.size() && !near; k++) {
+        near = visited.get(k).findDistanceTo(t) <= EXPLORED_MM;
+      }
+      if (!near) {
+        return false;
+      }
+    }
+    return true;
   }
 }
