@@ -210,7 +210,10 @@ public final class Grader {
       Path scratch =
           cleanup.track(Files.createTempDirectory(options.scratchRoot(), SCRATCH_PREFIX));
       try {
-        Files.createDirectories(scratch.resolve("tmp"));
+        // createDirectory, not createDirectories: if the grader is being stopped and its cleanup
+        // has already deleted the scratch folder, this fails instead of making it again.
+        Files.createDirectory(scratch.resolve("tmp"));
+        Files.createDirectory(scratch.resolve("src"));
         SubmissionFolders.Copied copied =
             SubmissionFolders.copySources(s.dir(), scratch.resolve("src"));
         if (!copied.tooLarge().isEmpty()) {

@@ -53,23 +53,32 @@ public final class Cleanup implements AutoCloseable {
   }
 
   private void run() {
-    for (Process p : processes) {
-      kill(p);
-    }
-    for (Path f : folders) {
-      // A grading thread may still be writing in it (threads run on while shutdown hooks do), and
-      // on a busy machine it can keep doing so for a while: try again, for up to 5 s.
-      long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
-      while (true) {
-        try {
-          deleteTree(f);
-          break;
-        } catch (IOException | RuntimeException e) {
-          if (System.nanoTime() - end > 0) {
-            break;
-          }
-          LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(20));
+    // Grading threads run on while shutdown hooks do: one may start a student's JVM after the
+    // first pass killed the others, or make a folder again after it was deleted. So passes repeat
+    // until two in a row, 50 ms apart, find nothing left (or 5 s have passed).
+    long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+    int quietPasses = 0;
+    while (quietPasses < 2 && System.nanoTime() - end < 0) {
+      boolean found = false;
+      for (Process p : processes) {
+        if (p.isAlive() || p.descendants().anyMatch(ProcessHandle::isAlive)) {
+          kill(p);
+          found = true;
         }
+      }
+      for (Path f : folders) {
+        if (Files.exists(f, LinkOption.NOFOLLOW_LINKS)) {
+          found = true;
+          try {
+            deleteTree(f);
+          } catch (IOException | RuntimeException e) {
+            // Still being written to: the next pass tries again.
+          }
+        }
+      }
+      quietPasses = found ? 0 : quietPasses + 1;
+      if (quietPasses < 2) {
+        LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(found ? 20 : 50));
       }
     }
   }
