@@ -167,14 +167,21 @@ class GradeAttackTest {
                 + "), 2000); System.out.println(\"connected\"); } catch (IOException e) {"
                 + " System.out.println(\"no network: \" + e.getMessage()); }"));
     String java = Path.of(System.getProperty("java.home"), "bin", "java").toRealPath().toString();
+    // Its children stay (Square's main waits a minute), so the bomb runs into the sandbox's
+    // process limit after a few of them however slowly a loaded machine starts them; children
+    // that ended at once left it racing the time limit.
     write(
         "fork",
         "Square.java",
-        run(
-            "    List<Process> ps = new ArrayList<>();\n"
+        run("    List<Process> ps = new ArrayList<>();\n"
                 + "    for (int i = 0; i < 2000; i++) { ps.add(new ProcessBuilder(\""
                 + java
-                + "\", \"-cp\", \"/sandbox/classes\", \"Square\").start()); }"));
+                + "\", \"-cp\", \"/sandbox/classes\", \"Square\").start()); }")
+            .replace(
+                "implements RobotProgram {\n",
+                "implements RobotProgram {\n"
+                    + "  public static void main(String[] a) throws Exception {"
+                    + " Thread.sleep(60_000); }\n"));
     write(
         "threads",
         "Square.java",
