@@ -65,27 +65,11 @@ class GettingStartedRecipesTest {
     simThread.start();
     try {
       waitForPort(port, simOut);
-      List<String> words = new ArrayList<>(ShellWords.split(javaLines.get(0)));
-      String cp = words.get(2);
-      boolean built = Files.isRegularFile(root.resolve("tools/target/jaria-tools.jar"));
-      words.set(0, Path.of(System.getProperty("java.home"), "bin", "java").toString());
-      words.set(2, built ? cp.replace("tools/", root + "/tools/") : testClassPath());
-      int src = words.indexOf("HelloRobot.java");
-      words.set(
-          src,
-          root.resolve("site/src/test/java/org/jaria/site/samples/HelloRobot.java").toString());
-      words.add("-rrtp");
-      words.add(String.valueOf(port));
-      Process p = new ProcessBuilder(words).redirectErrorStream(true).start();
-      boolean done = p.waitFor(90, TimeUnit.SECONDS);
-      if (!done) {
-        p.destroyForcibly();
-      }
-      String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-      assertTrue(done, "HelloRobot finished:\n" + out);
-      assertEquals(0, p.exitValue(), out);
-      assertTrue(out.contains("Connected to"), out);
-      assertTrue(out.contains("Done; the robot believes it is at"), out);
+      HelloRobotRun run = runHelloRobot(javaLines.get(0), port);
+      assertTrue(run.done(), "HelloRobot finished:\n" + run.out());
+      assertEquals(0, run.exit(), run.out());
+      assertTrue(run.out().contains("Connected to"), run.out());
+      assertTrue(run.out().contains("Done; the robot believes it is at"), run.out());
     } finally {
       simThread.interrupt(); // what Ctrl-C does to `jaria sim`
       simThread.join(TimeUnit.SECONDS.toMillis(10));
@@ -144,24 +128,8 @@ class GettingStartedRecipesTest {
       assertTrue(body.body().contains("<canvas"), body.body());
       PoseWatcher watcher = PoseWatcher.open(page);
       try {
-        List<String> words = new ArrayList<>(ShellWords.split(javaLines.get(0)));
-        String cp = words.get(2);
-        boolean built = Files.isRegularFile(root.resolve("tools/target/jaria-tools.jar"));
-        words.set(0, Path.of(System.getProperty("java.home"), "bin", "java").toString());
-        words.set(2, built ? cp.replace("tools/", root + "/tools/") : testClassPath());
-        int src = words.indexOf("HelloRobot.java");
-        words.set(
-            src,
-            root.resolve("site/src/test/java/org/jaria/site/samples/HelloRobot.java").toString());
-        words.add("-rrtp");
-        words.add(String.valueOf(port));
-        Process p = new ProcessBuilder(words).redirectErrorStream(true).start();
-        boolean done = p.waitFor(90, TimeUnit.SECONDS);
-        if (!done) {
-          p.destroyForcibly();
-        }
-        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        assertTrue(done && p.exitValue() == 0, "HelloRobot finished:\n" + out);
+        HelloRobotRun run = runHelloRobot(javaLines.get(0), port);
+        assertTrue(run.done() && run.exit() == 0, "HelloRobot finished:\n" + run.out());
         assertTrue(
             watcher.farthestMm() > 800,
             "the web view saw the robot drive its square: " + watcher.farthestMm() + " mm");
@@ -173,6 +141,35 @@ class GettingStartedRecipesTest {
       simThread.join(TimeUnit.SECONDS.toMillis(10));
     }
     assertTrue(!simThread.isAlive(), "the simulator stopped");
+  }
+
+  /** How the guide's HelloRobot line ended: within 90 s or not, its exit code, what it printed. */
+  private record HelloRobotRun(boolean done, int exit, String out) {}
+
+  /**
+   * Runs the guide's {@code java -cp ... HelloRobot.java -rh localhost} line as written against the
+   * simulator on {@code port}: the launcher's jars if {@code package} built them (else this JVM's
+   * class path), the sample's source in this repository.
+   */
+  private HelloRobotRun runHelloRobot(String javaLine, int port)
+      throws IOException, InterruptedException {
+    List<String> words = new ArrayList<>(ShellWords.split(javaLines.get(0)));
+    String cp = words.get(2);
+    boolean built = Files.isRegularFile(root.resolve("tools/target/jaria-tools.jar"));
+    words.set(0, Path.of(System.getProperty("java.home"), "bin", "java").toString());
+    words.set(2, built ? cp.replace("tools/", root + "/tools/") : testClassPath());
+    int src = words.indexOf("HelloRobot.java");
+    words.set(
+        src, root.resolve("site/src/test/java/org/jaria/site/samples/HelloRobot.java").toString());
+    words.add("-rrtp");
+    words.add(String.valueOf(port));
+    Process p = new ProcessBuilder(words).redirectErrorStream(true).start();
+    boolean done = p.waitFor(90, TimeUnit.SECONDS);
+    if (!done) {
+      p.destroyForcibly();
+    }
+    String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+    return new HelloRobotRun(done, done ? p.exitValue() : -1, out);
   }
 
   /** The lines of one guide's command blocks that start with {@code prefix}. */

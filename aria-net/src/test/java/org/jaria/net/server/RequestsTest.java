@@ -26,6 +26,21 @@ class RequestsTest {
     return s;
   }
 
+  /** Data "slow", whose handler holds a worker until {@code release} and then answers "done". */
+  private static void addSlowData(ArServerBase s, CountDownLatch release) {
+    s.addData(
+        "slow",
+        "",
+        "none",
+        "string",
+        "",
+        Where.WORKER,
+        (c, q, r) -> {
+          release.await(20, TimeUnit.SECONDS);
+          r.strToBuf("done");
+        });
+  }
+
   /** Reads a JAria requestFailed packet: data name, why, code. */
   private static NetError failure(RawClient raw) throws Exception {
     ArNetPacket p = raw.readUntil(Protocol.FIRST_DATA_COMMAND);
@@ -90,17 +105,7 @@ class RequestsTest {
     CountDownLatch release = new CountDownLatch(1);
     try (ArServerBase s =
         server(ServerOptions.builder().maxPendingCalls(2).workerThreads(1).workerQueue(8))) {
-      s.addData(
-          "slow",
-          "",
-          "none",
-          "string",
-          "",
-          Where.WORKER,
-          (c, q, r) -> {
-            release.await(20, TimeUnit.SECONDS);
-            r.strToBuf("done");
-          });
+      addSlowData(s, release);
       s.open();
       try (RawClient raw = new RawClient(s.getPort())) {
         raw.login("", "");
@@ -126,17 +131,7 @@ class RequestsTest {
   void aConnectingMonitorsBurstOfRequestsIsNotRefused() throws Exception {
     CountDownLatch release = new CountDownLatch(1);
     try (ArServerBase s = server(ServerOptions.builder())) {
-      s.addData(
-          "slow",
-          "",
-          "none",
-          "string",
-          "",
-          Where.WORKER,
-          (c, q, r) -> {
-            release.await(20, TimeUnit.SECONDS);
-            r.strToBuf("done");
-          });
+      addSlowData(s, release);
       s.open();
       try (RawClient raw = new RawClient(s.getPort())) {
         raw.login("", "");
