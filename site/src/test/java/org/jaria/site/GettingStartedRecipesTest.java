@@ -153,7 +153,7 @@ class GettingStartedRecipesTest {
    */
   private HelloRobotRun runHelloRobot(String javaLine, int port)
       throws IOException, InterruptedException {
-    List<String> words = new ArrayList<>(ShellWords.split(javaLines.get(0)));
+    List<String> words = new ArrayList<>(ShellWords.split(javaLine));
     String cp = words.get(2);
     boolean built = Files.isRegularFile(root.resolve("tools/target/jaria-tools.jar"));
     words.set(0, Path.of(System.getProperty("java.home"), "bin", "java").toString());
