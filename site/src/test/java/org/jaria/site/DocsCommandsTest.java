@@ -23,7 +23,7 @@ import picocli.CommandLine;
  * Every command the documentation shows is checked: each {@code ./jaria ...} line parses with the
  * real command line, the quick ones run (in this JVM, with long demos cut to a second), every
  * {@code ./mvnw} line names modules and profiles that exist. (The getting-started recipes run as
- * written in {@link GettingStartedRecipesTest}.)
+ * written in {@link GettingStartedRecipesTest} and {@link BrowserOnlyRecipeTest}.)
  */
 @Tag("slow")
 class DocsCommandsTest {

@@ -28,19 +28,7 @@ class MappingRecipeTest {
   private final Path root = Repo.root();
 
   private List<String> commands(String guide) throws IOException {
-    List<String> out = new ArrayList<>();
-    for (MarkdownBlocks.Block b : MarkdownBlocks.all(root)) {
-      if (!root.resolve(b.file()).normalize().equals(root.resolve(guide).normalize())
-          || b.language().equals("java")) {
-        continue;
-      }
-      for (String l : b.text().split("\n", -1)) {
-        if (l.strip().startsWith("./jaria ")) {
-          out.add(l.strip());
-        }
-      }
-    }
-    return out;
+    return new GuideRecipes().guideLines(guide, "./jaria ");
   }
 
   @Test

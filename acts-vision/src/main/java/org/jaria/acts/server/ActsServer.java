@@ -382,9 +382,11 @@ public final class ActsServer implements AutoCloseable {
               asked = true;
               lastActivityNanos = clock.nanoTime();
               byte[] r = reply;
+              // Counted before the answer leaves: a client that has read its answer must find
+              // it counted (counting after the write raced a client's check, seen once).
+              requests.incrementAndGet();
               out.write(r, 0, r.length);
               lastActivityNanos = clock.nanoTime();
-              requests.incrementAndGet();
             } else if (buf[i] == ActsProtocol.REQUEST_QUIT) {
               LOG.info("ACTS: client {} asked to quit", socket.getRemoteSocketAddress());
               if (settings.quitOnRequest()) {
@@ -467,7 +469,7 @@ public final class ActsServer implements AutoCloseable {
     }
   }
 
-  /** Requests served ({@code '0'} bytes answered). */
+  /** Requests served ({@code '0'} bytes answered; counted as the answer is sent). */
   public long requestsServed() {
     return requests.get();
   }
