@@ -14,8 +14,6 @@ import org.jaria.geom.ArLineSegment;
 import org.jaria.geom.ArPose;
 import org.jaria.map.ArMap;
 import org.jaria.map.ArMapObject;
-import org.jaria.robot.ArRobot;
-import org.jaria.sim.client.SimulatedRobot;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
@@ -24,92 +22,9 @@ class ArPathPlanningTaskTest {
 
   private static final ArMap OFFICE = ArMap.loadBundled("office");
 
-  /** A robot localized at home with synchronous localization and planning. */
-  private record Rig(SimulatedRobot sim, ArSonarLocalizationTask loc, ArPathPlanningTask path) {
-    ArRobot robot() {
-      return sim.robot();
-    }
-
-    /** Runs until the goal is no longer active; returns whether that happened in time. */
-    boolean finish(Duration max) {
-      return sim.runUntil(() -> !path.isActive(), max);
-    }
-
-    void close() {
-      path.close();
-      loc.close();
-      SimSetup.stop(sim);
-    }
-  }
-
-  private static Rig rig(ArMap map, long seed, PlanMode mode) {
-    SimulatedRobot sim = SimSetup.start(map, seed);
-    ArSonarLocalizationTask loc =
-        ArSonarLocalizationTask.builder(sim.robot(), map)
-            .mode(ArSonarLocalizationTask.UpdateMode.SYNCHRONOUS)
-            .seed(seed)
-            .build();
-    ArPathPlanningTask path = ArPathPlanningTask.builder(sim.robot(), map).mode(mode).build();
-    sim.runMillis(1000);
-    assertTrue(loc.localizeRobotAtHomeBlocking(), "localized at home");
-    return new Rig(sim, loc, path);
-  }
-
-  @Test
-  void everyReachableColumbiaGoalIsReachedAndTheImpossibleOnesFailFast() {
-    ArMap columbia = SimSetup.columbia();
-    Rig r = rig(columbia, 1, PlanMode.SYNCHRONOUS);
-    try {
-      List<ArPose> done = new ArrayList<>();
-      List<ArPose> failed = new ArrayList<>();
-      r.path().addGoalDoneCB(done::add);
-      r.path().addGoalFailedCB(failed::add);
-      List<String> reachable =
-          List.of(
-              "Goal 3",
-              "Goal 1",
-              "Goal 2",
-              "Hallway 1",
-              "Hallway 2",
-              "Side door",
-              "Workshop",
-              "Lobby door");
-      for (String g : reachable) {
-        assertTrue(r.path().pathPlanToGoal(g), g + ": " + r.path().getStatusString());
-        assertTrue(r.finish(Duration.ofMinutes(5)), g + " finished");
-        assertEquals(
-            PathPlanningState.REACHED_GOAL, r.path().getState(), r.path().getStatusString());
-        ArPose goal = columbia.findMapObject(g).orElseThrow().pose();
-        assertTrue(
-            r.sim().sim().getTruePose().findDistanceTo(goal) < 250,
-            g + ": stopped at " + r.sim().sim().getTruePose());
-      }
-      assertEquals(reachable.size(), done.size());
-      assertEquals(0, failed.size());
-      // Every goal of the map is either reached above or refused below.
-      assertEquals(reachable.size() + 2, columbia.getGoals().size());
-
-      // The two goals that cannot be reached, failing at once (no simulated time passes):
-      // "Impossible
-      // Goal" lies in a walled-in alcove (about 0.8 m x 0.9 m) with no opening, "Inside Forbidden
-      // Area" in a forbidden area.
-      long before = r.robot().getClock().nanoTime();
-      assertFalse(r.path().pathPlanToGoal("impossible goal"), "case-insensitive name");
-      assertEquals(PathPlanningState.FAILED_PLAN, r.path().getState());
-      assertTrue(r.path().getStatusString().contains("no path"), r.path().getStatusString());
-      assertFalse(r.path().pathPlanToGoal("Inside Forbidden Area"));
-      assertEquals(PathPlanningState.GOAL_IN_OBSTACLE, r.path().getState());
-      assertTrue(r.path().getStatusString().contains("forbidden area"), r.path().getStatusString());
-      assertEquals(before, r.robot().getClock().nanoTime(), "refused without driving");
-      assertEquals(2, failed.size());
-    } finally {
-      r.close();
-    }
-  }
-
   @Test
   void aGoalBehindADoorIsReachedThroughTheDoor() {
-    Rig r = rig(OFFICE, 2, PlanMode.SYNCHRONOUS);
+    PlanningRig r = PlanningRig.start(OFFICE, 2, PlanMode.SYNCHRONOUS);
     try {
       assertTrue(r.path().pathPlanToGoal("Lab Entrance"));
       assertEquals(PathPlanningState.MOVING_TO_GOAL, r.path().getState());
@@ -149,7 +64,7 @@ class ArPathPlanningTaskTest {
 
   @Test
   void anObstacleAcrossThePathIsDrivenAround() {
-    Rig r = rig(OFFICE, 3, PlanMode.SYNCHRONOUS);
+    PlanningRig r = PlanningRig.start(OFFICE, 3, PlanMode.SYNCHRONOUS);
     try {
       // A 0.4 m x 1 m box against the north wall of the corridor, across the middle of it where
       // the planned path runs: only the southern metre of the corridor stays open.
@@ -188,7 +103,7 @@ class ArPathPlanningTaskTest {
 
   @Test
   void aBlockedCorridorEndsInFailedMoveWithAReason() {
-    Rig r = rig(OFFICE, 9, PlanMode.SYNCHRONOUS);
+    PlanningRig r = PlanningRig.start(OFFICE, 9, PlanMode.SYNCHRONOUS);
     try {
       // A cupboard across the whole corridor: Corridor East cannot be reached.
       r.sim().world().injectBox(12000, 9500, 400, 2000, 0);
@@ -248,7 +163,7 @@ class ArPathPlanningTaskTest {
   @Test
   void aBlockedPathIsReplannedTheOtherWayRound() {
     ArMap loop = loop();
-    Rig r = rig(loop, 10, PlanMode.SYNCHRONOUS);
+    PlanningRig r = PlanningRig.start(loop, 10, PlanMode.SYNCHRONOUS);
     try {
       assertTrue(r.path().pathPlanToGoal("east"));
       assertTrue(
@@ -279,7 +194,7 @@ class ArPathPlanningTaskTest {
   void manyIntermediateGoalsDoNotDegradeLocalization() {
     // The thesis's robot got lost when given many intermediate goals (§7.1): here a goal never
     // touches localization, so eight short legs are as good as one long one.
-    Rig r = rig(OFFICE, 8, PlanMode.SYNCHRONOUS);
+    PlanningRig r = PlanningRig.start(OFFICE, 8, PlanMode.SYNCHRONOUS);
     try {
       double worst = 0;
       for (double x = 4500; x <= 25500; x += 3000) {
@@ -298,7 +213,7 @@ class ArPathPlanningTaskTest {
 
   @Test
   void losingLocalizationFailsTheGoalAndArActionLostStopsTheRobot() {
-    Rig r = rig(OFFICE, 11, PlanMode.SYNCHRONOUS);
+    PlanningRig r = PlanningRig.start(OFFICE, 11, PlanMode.SYNCHRONOUS);
     try {
       r.loc().getParams().get("RecoverOnFail").setBool(false);
       r.path().getPathPlanActionGroup().addAction(new ArActionLost(r.loc(), r.path()), 150);
@@ -325,7 +240,7 @@ class ArPathPlanningTaskTest {
 
   @Test
   void cancellingAndReplacingGoalsInterruptThem() {
-    Rig r = rig(OFFICE, 4, PlanMode.SYNCHRONOUS);
+    PlanningRig r = PlanningRig.start(OFFICE, 4, PlanMode.SYNCHRONOUS);
     try {
       List<ArPose> interrupted = new ArrayList<>();
       List<ArPose> fresh = new ArrayList<>();
@@ -355,7 +270,7 @@ class ArPathPlanningTaskTest {
 
   @Test
   void refusesGoalsOffTheMapAndUnknownNames() {
-    Rig r = rig(OFFICE, 5, PlanMode.SYNCHRONOUS);
+    PlanningRig r = PlanningRig.start(OFFICE, 5, PlanMode.SYNCHRONOUS);
     try {
       assertFalse(r.path().pathPlanToPose(new ArPose(90_000, 0, 0), false));
       assertEquals(PathPlanningState.GOAL_OUT_OF_BOUNDS, r.path().getState());
@@ -374,7 +289,7 @@ class ArPathPlanningTaskTest {
 
   @Test
   void threadedPlanningReachesTheGoalToo() {
-    Rig r = rig(OFFICE, 6, PlanMode.THREADED);
+    PlanningRig r = PlanningRig.start(OFFICE, 6, PlanMode.THREADED);
     try {
       assertTrue(r.path().pathPlanToGoal("Room 101"));
       assertTrue(r.finish(Duration.ofMinutes(3)));
@@ -386,7 +301,7 @@ class ArPathPlanningTaskTest {
 
   @Test
   void parametersLoadFromAnArnlStyleFile() throws Exception {
-    Rig r = rig(OFFICE, 7, PlanMode.SYNCHRONOUS);
+    PlanningRig r = PlanningRig.start(OFFICE, 7, PlanMode.SYNCHRONOUS);
     try {
       r.path()
           .getConfig()
