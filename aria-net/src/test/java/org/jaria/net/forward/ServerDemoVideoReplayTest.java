@@ -1,11 +1,12 @@
 package org.jaria.net.forward;
 
-import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayInputStream;
 import java.time.Duration;
+import java.util.Arrays;
 import java.util.List;
 import javax.imageio.ImageIO;
 import org.jaria.net.ArNetPacket;
@@ -32,12 +33,9 @@ class ServerDemoVideoReplayTest {
     List<String> names = PeerRecording.listedNames(recorded);
     assertEquals(332 - 256, names.indexOf("videoSize"));
     assertEquals(333 - 256, names.indexOf("sendVideo"));
-    byte[] firstFrame =
-        recorded.stream()
-            .filter(p -> p.getCommand() == 333)
-            .findFirst()
-            .orElseThrow()
-            .toByteArray();
+    List<byte[]> frames =
+        recorded.stream().filter(p -> p.getCommand() == 333).map(ArNetPacket::toByteArray).toList();
+    assertFalse(frames.isEmpty(), "serverDemo sent frames");
     // What the JAria forwarder asked serverDemo by hand: videoSize once, sendVideo with a quality.
     List<ArNetPacket> asked =
         PeerRecording.packets(PeerRecording.bytes("serverDemo-video.c2s.bin"));
@@ -58,7 +56,11 @@ class ServerDemoVideoReplayTest {
         viewer.connect("127.0.0.1", robot.getPort(), "", "");
         Eventually.until("serverDemo's first frame", () -> video.getStats().frames() >= 1);
         byte[] got = viewer.requestOnce("sendVideo").get().remainingBytes();
-        assertArrayEquals(firstFrame, got, "byte for byte what serverDemo sent");
+        // The latest frame is passed on: which one depends on how far the replay has got (it
+        // was the first until a loaded machine let the forwarder read on before the request).
+        assertTrue(
+            frames.stream().anyMatch(f -> Arrays.equals(f, got)),
+            "byte for byte one of the frames serverDemo sent (" + got.length + " bytes)");
         assertEquals(160, (got[0] & 0xff) | (got[1] & 0xff) << 8);
         assertEquals(
             160,
