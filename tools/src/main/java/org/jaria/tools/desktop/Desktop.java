@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.ServiceLoader;
 import java.util.concurrent.Callable;
+import org.jaria.desktop.spi.DesktopApps;
 import org.jaria.sim.SimWorld;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
