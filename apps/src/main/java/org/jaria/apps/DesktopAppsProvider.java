@@ -13,8 +13,8 @@ import org.jaria.apps.mapper.MapperCommand;
 import org.jaria.apps.monitor.MonitorCommand;
 import org.jaria.apps.screenshot.ScreenshotCommand;
 import org.jaria.apps.simview.SimViewCommand;
+import org.jaria.desktop.spi.DesktopApps;
 import org.jaria.sim.SimWorld;
-import org.jaria.tools.desktop.DesktopApps;
 
 /**
  * The desktop apps for the {@code jaria} command line, found by {@link java.util.ServiceLoader}

@@ -52,6 +52,9 @@ class LauncherTest {
     "acts-vision",
     "classroom",
     "web",
+    "sim-vision",
+    "desktop-spi",
+    "sim-guiserver",
     "tools"
   };
 
@@ -81,10 +84,12 @@ class LauncherTest {
         echo "[INFO] Scanning for projects..."
         echo "[INFO] Building JAria core (protocol, connections) 0.1.0-SNAPSHOT [2/8]"
         echo "[INFO] Building JAria tools (jaria command line) 0.1.0-SNAPSHOT [8/8]"
-        mkdir -p "$module/target/lib"
-        # Like Maven when nothing changed: an existing jar is not rewritten.
-        jar="$module/target/jaria-$module.jar"
-        [ -f "$jar" ] || echo jar > "$jar"
+        for m in $(echo "$module" | tr , ' '); do
+          mkdir -p "$m/target/lib"
+          # Like Maven when nothing changed: an existing jar is not rewritten.
+          jar="$m/target/jaria-$m.jar"
+          [ -f "$jar" ] || echo jar > "$jar"
+        done
         """);
     executable(repo.resolve("mvnw"));
     write(
@@ -205,8 +210,8 @@ class LauncherTest {
   }
 
   /**
-   * The script's module lists are exactly what {@code ./mvnw -pl tools -am} and {@code -pl apps
-   * -am} build.
+   * The script's module lists are exactly what {@code ./mvnw -pl tools -am} and {@code -pl
+   * tools,apps -am} build.
    */
   @Test
   void theModulesWatchedAreWhatToolsAndTheAppsAreBuiltFrom() throws Exception {
@@ -220,12 +225,26 @@ class LauncherTest {
     assertTrue(a.find(), "the launcher names the apps' modules");
     TreeSet<String> apps = new TreeSet<>(watched);
     apps.addAll(Arrays.asList(a.group(1).split(" ")));
-    assertEquals(reactorOf(Path.of(".."), "apps"), apps);
+    TreeSet<String> built = new TreeSet<>(reactorOf(Path.of(".."), "tools"));
+    built.addAll(reactorOf(Path.of(".."), "apps"));
+    assertEquals(built, apps);
+    assertTrue(
+        script.contains("build tools,apps "), "an app's command builds -pl tools,apps:\n" + script);
   }
 
   /**
-   * A desktop app is built the first time it is asked for, once, and runs with the apps' class
-   * path; the command line's commands neither build nor use it.
+   * The apps build beside the command line, not after it: apps depends on tools in no scope, so
+   * Maven starts it without waiting for tools' tests (what it shares with tools is in modules below
+   * both).
+   */
+  @Test
+  void theAppsDoNotDependOnTheCommandLine() throws Exception {
+    assertFalse(reactorOf(Path.of(".."), "apps").contains("tools"));
+  }
+
+  /**
+   * A desktop app is built the first time it is asked for, once, and runs with the apps' class path
+   * beside the command line's; the command line's commands neither build nor use it.
    */
   @Test
   void theAppsAreBuiltOnFirstUseOnlyAndOnlyTheirCommandsUseThem() throws Exception {
@@ -235,20 +254,21 @@ class LauncherTest {
     assertFalse(cli.out.contains("apps/target"), cli.out);
 
     Result app = jaria(Map.of(), "mapper", "office.map");
-    assertEquals(List.of("build tools", "build apps"), calls(), app.err);
+    assertEquals(List.of("build tools", "build tools,apps"), calls(), app.err);
     assertTrue(app.err.contains("building the desktop apps and cameras"), app.err);
     assertTrue(app.out.contains("apps/target/jaria-apps.jar"), app.out);
+    assertTrue(app.out.contains("tools/target/jaria-tools.jar"), app.out);
     assertTrue(app.out.endsWith("org.jaria.tools.cli.JariaCli mapper office.map\n"), app.out);
 
     jaria(Map.of(), "screenshot", "mapper", "-o", "x.png");
     jaria(Map.of(), "version");
-    assertEquals(List.of("build tools", "build apps"), calls(), "nothing changed since");
+    assertEquals(List.of("build tools", "build tools,apps"), calls(), "nothing changed since");
 
     age(repo.resolve("apps/src/main/java/A.java"), Duration.ofMinutes(-10));
     jaria(Map.of(), "version");
     assertEquals(2, builds(), "an edited app does not rebuild the command line");
     jaria(Map.of(), "monitor");
-    assertEquals(List.of("build tools", "build apps", "build apps"), calls());
+    assertEquals(List.of("build tools", "build tools,apps", "build tools,apps"), calls());
   }
 
   /** Which commands run with the apps: apps, windows, live cameras and their benchmarks. */
@@ -370,7 +390,7 @@ class LauncherTest {
     return calls().size();
   }
 
-  /** The fake build's calls, one line each: "build tools" or "build apps". */
+  /** The fake build's calls, one line each: "build tools" or "build tools,apps". */
   private List<String> calls() throws IOException {
     Path calls = repo.resolve("mvnw-calls");
     return Files.exists(calls) ? Files.readAllLines(calls) : List.of();

@@ -379,7 +379,7 @@ public final class EzTrainWindow implements DesktopApp {
   }
 
   /** The scene behind EZ-Train's own simulator camera, once opened (tests), else null. */
-  org.jaria.tools.simvision.TrainingScene simulatorScene() {
+  org.jaria.simvision.TrainingScene simulatorScene() {
     return simCamera instanceof SimulatorCamera c ? c.scene() : null;
   }
 

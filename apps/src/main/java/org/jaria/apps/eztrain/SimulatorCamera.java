@@ -3,7 +3,7 @@ package org.jaria.apps.eztrain;
 import java.io.IOException;
 import java.util.function.Consumer;
 import org.jaria.acts.image.ImageSource;
-import org.jaria.tools.simvision.TrainingScene;
+import org.jaria.simvision.TrainingScene;
 
 /**
  * EZ-Train's own simulator camera (File → Simulator Camera when EZ-Train runs on its own): starts

@@ -93,7 +93,7 @@ public final class MonitorCommand implements Callable<Integer>, AppCommand {
   public DesktopApp open(Stage stage, AppEnvironment env) {
     String secret;
     try {
-      secret = org.jaria.tools.options.Passwords.resolve(password, passwordFile, System.getenv());
+      secret = org.jaria.net.client.Passwords.resolve(password, passwordFile, System.getenv());
     } catch (java.io.IOException e) {
       throw new IllegalArgumentException(e.getMessage(), e);
     }
@@ -107,7 +107,7 @@ public final class MonitorCommand implements Callable<Integer>, AppCommand {
     PrintWriter err = spec.commandLine().getErr();
     try {
       port();
-      org.jaria.tools.options.Passwords.resolve(password, passwordFile, System.getenv());
+      org.jaria.net.client.Passwords.resolve(password, passwordFile, System.getenv());
     } catch (IllegalArgumentException | java.io.IOException e) {
       err.println("monitor: " + e.getMessage());
       return 2;

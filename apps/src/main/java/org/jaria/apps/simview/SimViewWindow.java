@@ -47,8 +47,8 @@ import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimSnapshot;
 import org.jaria.sim.SimWorld;
 import org.jaria.sim.camera.SimCamera;
-import org.jaria.tools.simvision.SimCameraSource;
-import org.jaria.tools.simvision.TrainingScene;
+import org.jaria.simvision.SimCameraSource;
+import org.jaria.simvision.TrainingScene;
 
 /**
  * The simulator's window: the world drawn live (map, robots with footprints, sonar cones and

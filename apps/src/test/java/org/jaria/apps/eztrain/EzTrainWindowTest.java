@@ -39,7 +39,7 @@ import org.jaria.apps.fx.Mouse;
 import org.jaria.apps.fx.ScriptedPrompts;
 import org.jaria.apps.fx.TestImages;
 import org.jaria.geom.ArPose;
-import org.jaria.tools.simvision.TrainingScene;
+import org.jaria.simvision.TrainingScene;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;

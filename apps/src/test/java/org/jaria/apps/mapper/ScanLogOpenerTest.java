@@ -4,8 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.ExecutionException;
@@ -17,7 +15,6 @@ import org.jaria.apps.fx.AppEnvironment;
 import org.jaria.apps.fx.FxRuntime;
 import org.jaria.apps.fx.ScriptedPrompts;
 import org.jaria.map.ArMap;
-import org.jaria.tools.cli.JariaCli;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -51,14 +48,11 @@ class ScanLogOpenerTest {
     window.close();
   }
 
-  private Path log() {
+  /** A scan log of the hall, as {@code jaria laser log --sim hall --seconds 90} writes it. */
+  private Path log() throws Exception {
     Path log = dir.resolve("hall.2d");
-    StringWriter out = new StringWriter();
-    picocli.CommandLine cl = JariaCli.commandLine();
-    cl.setOut(new PrintWriter(out));
-    cl.setErr(new PrintWriter(out));
-    int exit = cl.execute("laser", "log", "--sim", "hall", "--seconds", "90", "-o", log.toString());
-    assertEquals(0, exit, out.toString());
+    int scans = SimulatedScanLog.record("hall", 90, log);
+    assertTrue(scans > 0, "scans logged: " + scans);
     return log;
   }
 

@@ -22,7 +22,7 @@ import org.jaria.net.arnl.ArnlNavigation;
 import org.jaria.net.server.Authenticator;
 import org.jaria.net.server.ServerOptions;
 import org.jaria.net.server.modes.ArServerModes;
-import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
+import org.jaria.simguiserver.SimulatedGuiServer;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;

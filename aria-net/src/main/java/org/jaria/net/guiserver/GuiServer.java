@@ -67,7 +67,7 @@ import org.jaria.robot.ArRobot;
  * }</pre>
  *
  * <p>{@code jaria demo guiserver} runs exactly this; {@code
- * org.jaria.tools.guiserver.sim.SimulatedGuiServer} (module {@code tools}) does it on an embedded
+ * org.jaria.simguiserver.SimulatedGuiServer} (module {@code sim-guiserver}) does it on an embedded
  * simulator. The protocol is described in {@code aria-net/PROTOCOL.md}.
  */
 public final class GuiServer implements AutoCloseable {

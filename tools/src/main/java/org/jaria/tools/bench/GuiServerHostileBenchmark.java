@@ -20,7 +20,7 @@ import org.jaria.net.client.ArClientException;
 import org.jaria.net.server.Authenticator;
 import org.jaria.net.server.ServerOptions;
 import org.jaria.net.server.ServerStats;
-import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
+import org.jaria.simguiserver.SimulatedGuiServer;
 
 /**
  * The guiServer's rows of {@code jaria bench hostile}: while hostile clients on the loopback attack

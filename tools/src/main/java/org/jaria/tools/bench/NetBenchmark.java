@@ -26,7 +26,7 @@ import org.jaria.net.protocol.Protocol;
 import org.jaria.net.server.ArServerBase;
 import org.jaria.net.server.ArServerClient;
 import org.jaria.net.server.ServerOptions;
-import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
+import org.jaria.simguiserver.SimulatedGuiServer;
 
 /**
  * The network server's reliability figures ({@code ./jaria bench net}): the robot's sync-cycle time

@@ -25,7 +25,7 @@ import org.jaria.net.server.Authenticator;
 import org.jaria.net.server.ServerOptions;
 import org.jaria.range.ArSimulatedLaser;
 import org.jaria.robot.ArRobot;
-import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
+import org.jaria.simguiserver.SimulatedGuiServer;
 import org.jaria.tools.web.NavigationView;
 import org.jaria.web.server.WebOptions;
 import org.jaria.web.server.WebServer;

@@ -1,9 +1,9 @@
 package org.jaria.tools.cli;
 
 import java.util.Optional;
+import org.jaria.desktop.spi.DesktopApps;
 import org.jaria.tools.ProjectVersion;
 import org.jaria.tools.desktop.Desktop;
-import org.jaria.tools.desktop.DesktopApps;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.ServiceLoader;
 import java.util.concurrent.Callable;
+import org.jaria.desktop.spi.DesktopApps;
 import org.jaria.sim.SimWorld;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -25,8 +26,8 @@ public final class Desktop {
 
   /**
    * The desktop apps' commands, in the order {@code jaria --help} lists them. The {@code ./jaria}
-   * launcher's list of app commands ({@code apps=} in the script) names the same; a test of the
-   * {@code apps} module checks both against the real commands.
+   * launcher's list of app commands ({@code app_commands=} in the script) names the same; a system
+   * test (DesktopAppsProviderTest in system-tests) checks both against the real commands.
    */
   public static final List<App> APPS =
       List.of(

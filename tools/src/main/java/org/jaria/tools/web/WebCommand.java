@@ -12,7 +12,7 @@ import org.jaria.map.MapFormatException;
 import org.jaria.net.arnl.ArnlNavigation;
 import org.jaria.net.server.Authenticator;
 import org.jaria.net.server.ServerOptions;
-import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
+import org.jaria.simguiserver.SimulatedGuiServer;
 import org.jaria.web.server.WebOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;

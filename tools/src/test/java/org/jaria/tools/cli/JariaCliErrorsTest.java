@@ -91,7 +91,7 @@ class JariaCliErrorsTest {
         "demo chase --map MAP --seconds 1",
         "demo navigate --map MAP",
         "demo guiserver --map MAP --port 0 --seconds 1"
-        // mapper MAP: the apps module's AppsCommandLineTest (the map editor is an app)
+        // mapper MAP: system-tests' AppsCommandLineTest (the map editor is an app)
       })
   void everyCommandThatTakesAMapSaysWhatIsWrongAndListsTheBundledOnes(
       String command, @TempDir Path dir) throws IOException {

@@ -20,7 +20,7 @@ import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
 import org.jaria.geom.ArPose;
 import org.jaria.sim.SimRobot;
-import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
+import org.jaria.simguiserver.SimulatedGuiServer;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;

@@ -1,4 +1,4 @@
-package org.jaria.tools.desktop;
+package org.jaria.desktop.spi;
 
 import java.io.PrintWriter;
 import java.util.List;
@@ -11,13 +11,18 @@ import org.jaria.sim.SimWorld;
  * that the command line starts, and builds the first time, without JavaFX or OpenCV; the {@code
  * ./jaria} launcher builds them the first time an app is asked for and then runs the command line
  * with them on the class path, where {@link java.util.ServiceLoader} finds this interface's one
- * implementation. Without them, {@link Desktop} answers instead and says how to get them.
+ * implementation. Without them, the command line's stand-ins ({@code
+ * org.jaria.tools.desktop.Desktop} in module {@code tools}) answer instead and say how to get them.
+ *
+ * <p>This interface is a module of its own ({@code desktop-spi}) so that neither side depends on
+ * the other: the command line ({@code tools}) looks it up, the apps ({@code apps}) implement it,
+ * and the two build side by side.
  */
 public interface DesktopApps {
 
   /**
-   * The apps' commands (picocli command objects), named and ordered as {@link Desktop#APPS} lists
-   * them.
+   * The apps' commands (picocli command objects), named and ordered as the command line's list of
+   * apps ({@code Desktop.APPS} in {@code tools}) names them.
    */
   List<Object> commands();
 

@@ -1,4 +1,4 @@
-package org.jaria.tools.simvision;
+package org.jaria.simvision;
 
 import java.io.IOException;
 import org.jaria.acts.image.ImageSource;

@@ -1,4 +1,4 @@
-package org.jaria.tools.options;
+package org.jaria.net.client;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;

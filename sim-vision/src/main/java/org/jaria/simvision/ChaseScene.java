@@ -1,4 +1,4 @@
-package org.jaria.tools.simvision;
+package org.jaria.simvision;
 
 import org.jaria.acts.color.ChannelBank;
 import org.jaria.acts.image.RgbImage;

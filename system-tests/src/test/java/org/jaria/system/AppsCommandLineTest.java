@@ -1,4 +1,4 @@
-package org.jaria.apps;
+package org.jaria.system;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The command line's expected failures of the commands that need this module (the map editor, a
+ * The command line's expected failures of the commands that need the apps module (the map editor, a
  * live camera), through the real {@code jaria} command line with the apps and the camera driver on
  * the class path: each said once, naming the command, with one hint and no stack trace or usage.
  */

@@ -1,4 +1,4 @@
-package org.jaria.tools.simvision;
+package org.jaria.simvision;
 
 import org.jaria.ptz.ArPTZ;
 import org.jaria.sim.camera.SimCamera;

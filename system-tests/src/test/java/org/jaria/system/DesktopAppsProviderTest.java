@@ -1,4 +1,4 @@
-package org.jaria.apps;
+package org.jaria.system;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
@@ -13,17 +13,19 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.jaria.acts.camera.OpenCvCameras;
 import org.jaria.acts.image.Cameras;
+import org.jaria.apps.DesktopAppsProvider;
 import org.jaria.apps.mapper.MapperCommand;
+import org.jaria.desktop.spi.DesktopApps;
 import org.jaria.tools.cli.JariaCli;
 import org.jaria.tools.desktop.Desktop;
-import org.jaria.tools.desktop.DesktopApps;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
 
 /**
- * With this module on the class path, {@code jaria} finds the real apps, benchmarks and camera
- * driver; their names and summaries are the ones the command line's stand-ins show without it, and
- * the {@code ./jaria} launcher's lists of commands that need this module name the same.
+ * With the apps module on the class path (beside the command line, as {@code ./jaria} runs the
+ * commands that need it), {@code jaria} finds the real apps, benchmarks and camera driver; their
+ * names and summaries are the ones the command line's stand-ins show without it, and the {@code
+ * ./jaria} launcher's lists of commands that need this module name the same.
  */
 class DesktopAppsProviderTest {
 

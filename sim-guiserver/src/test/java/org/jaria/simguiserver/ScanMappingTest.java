@@ -1,4 +1,4 @@
-package org.jaria.tools.guiserver;
+package org.jaria.simguiserver;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -22,7 +22,6 @@ import org.jaria.net.data.LiveMap;
 import org.jaria.net.data.Points;
 import org.jaria.net.server.MapFolder;
 import org.jaria.net.server.ServerOptions;
-import org.jaria.tools.guiserver.sim.SimulatedGuiServer;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

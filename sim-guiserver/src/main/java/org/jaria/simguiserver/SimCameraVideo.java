@@ -1,4 +1,4 @@
-package org.jaria.tools.guiserver.sim;
+package org.jaria.simguiserver;
 
 import org.jaria.net.video.JpegVideo;
 import org.jaria.sim.camera.SimCamera;

@@ -1,4 +1,4 @@
-package org.jaria.tools.options;
+package org.jaria.net.client;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;

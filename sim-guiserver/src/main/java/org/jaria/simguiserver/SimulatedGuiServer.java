@@ -1,4 +1,4 @@
-package org.jaria.tools.guiserver.sim;
+package org.jaria.simguiserver;
 
 import java.io.IOException;
 import java.util.Locale;
