@@ -98,6 +98,7 @@ public final class LaserCommand implements Callable<Integer> {
       }
       out.flush();
       long firstAt = 0;
+      long shown = 0;
       for (long n = 1; scans == 0 || n <= scans; n++) {
         if (!laser.waitForScans(n, Math.max(timeoutMs, 1000) * 2)) {
           err.println(
@@ -115,10 +116,14 @@ public final class LaserCommand implements Callable<Integer> {
         LaserScan s = laser.getLaserScan();
         out.println(ScanSummary.line(n, s, hz));
         out.flush();
+        shown = n;
       }
+      // The driver goes on reading while the last lines print, so it may have received more
+      // scans than were shown: both are said, so "--scans 3" never reads as "5 scans".
       out.printf(
           Locale.ROOT,
-          "%d scans; dropped %d damaged telegrams/answers, skipped %d bytes%n",
+          "%d scans shown, %d received; dropped %d damaged telegrams/answers, skipped %d bytes%n",
+          shown,
           laser.getScanCount(),
           laser.getDropCounters().total(),
           laser.getDropCounters().skippedBytes());

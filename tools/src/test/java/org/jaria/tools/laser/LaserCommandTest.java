@@ -72,7 +72,8 @@ class LaserCommandTest {
           r.out().contains("scan 3: 181 readings")
               && r.out().contains(String.format(java.util.Locale.ROOT, "ahead %.0f mm", ahead)),
           r.out());
-      assertTrue(r.out().contains("3 scans; dropped 0"), r.out());
+      assertTrue(r.out().contains("3 scans shown, "), r.out());
+      assertTrue(r.out().contains("received; dropped 0 "), r.out());
       // The emulator counts a scan once its write returned, so the last one received may not be
       // counted yet.
       assertTrue(lms.getScansSent() >= 2);
