@@ -1,4 +1,4 @@
-package org.jaria.classroom.grading;
+package org.jaria.classroom.attack;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -25,6 +25,12 @@ import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import org.jaria.classroom.classgrading.ClassGrading;
 import org.jaria.classroom.classgrading.GradeRequest;
+import org.jaria.classroom.grading.Grade;
+import org.jaria.classroom.grading.Grader;
+import org.jaria.classroom.grading.Grading;
+import org.jaria.classroom.grading.ResultFiles;
+import org.jaria.classroom.grading.Status;
+import org.jaria.classroom.grading.SubmissionFolders;
 import org.jaria.classroom.sandbox.Sandbox;
 import org.jaria.classroom.square.SquareAssignment;
 import org.junit.jupiter.api.AfterAll;
