@@ -309,6 +309,11 @@ public final class ArClientBase implements AutoCloseable {
     List<CompletableFuture<ArNetPacket>> pending = new ArrayList<>();
     synchronized (this) {
       was = connected;
+      if (was) {
+        // Said before the connection reads as lost: whoever sees isConnected() turn false
+        // finds the reason (it was set after, and a test once read null in between).
+        lastError = why;
+      }
       connected = false;
       for (Deque<CompletableFuture<ArNetPacket>> q : waiting.values()) {
         pending.addAll(q);
@@ -321,7 +326,6 @@ public final class ArClientBase implements AutoCloseable {
       f.completeExceptionally(new ArClientException("disconnected: " + why));
     }
     if (was) {
-      lastError = why;
       log.info("disconnected from {}: {}", serverName, why);
       for (ConnectionListener l : listeners) {
         l.disconnected(this, why);
