@@ -5,7 +5,6 @@ import java.io.UncheckedIOException;
 import org.jaria.acts.blob.TrackerSettings;
 import org.jaria.acts.color.ChannelBank;
 import org.jaria.acts.color.Trainer;
-import org.jaria.acts.image.ImageSource;
 import org.jaria.acts.image.RgbImage;
 import org.jaria.acts.server.ActsLink;
 import org.jaria.acts.server.VisionPipeline;
@@ -16,6 +15,7 @@ import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimWorld;
 import org.jaria.sim.camera.ColoredObject;
 import org.jaria.sim.camera.SimCamera;
+import org.jaria.simvision.SimCameraSource;
 
 /**
  * The ball-following world: the hall, a robot with a camera, a red ball ahead of it, ACTS channel 1
@@ -63,7 +63,8 @@ final class BallScene implements AutoCloseable {
       pipe.b().open();
       ActsLink link =
           new ActsLink(
-              new VisionPipeline(cameraSource(camera), bank, TrackerSettings.DEFAULT), pipe.b());
+              new VisionPipeline(new SimCameraSource(camera), bank, TrackerSettings.DEFAULT),
+              pipe.b());
       world.addStepListener(
           () -> {
             try {
@@ -130,26 +131,6 @@ final class BallScene implements AutoCloseable {
     int qx = (maxX - minX) / 4;
     int qy = (maxY - minY) / 4;
     t.addRect(frame, minX + qx, minY + qy, maxX - qx, maxY - qy);
-  }
-
-  private static ImageSource cameraSource(SimCamera camera) {
-    return new ImageSource() {
-      @Override
-      public int width() {
-        return camera.getWidth();
-      }
-
-      @Override
-      public int height() {
-        return camera.getHeight();
-      }
-
-      @Override
-      public boolean nextFrame(int[] rgb) {
-        camera.render(rgb);
-        return true;
-      }
-    };
   }
 
   @Override

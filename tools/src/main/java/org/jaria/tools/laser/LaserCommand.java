@@ -98,7 +98,6 @@ public final class LaserCommand implements Callable<Integer> {
       }
       out.flush();
       long firstAt = 0;
-      long shown = 0;
       for (long n = 1; scans == 0 || n <= scans; n++) {
         if (!laser.waitForScans(n, Math.max(timeoutMs, 1000) * 2)) {
           err.println(
@@ -116,14 +115,14 @@ public final class LaserCommand implements Callable<Integer> {
         LaserScan s = laser.getLaserScan();
         out.println(ScanSummary.line(n, s, hz));
         out.flush();
-        shown = n;
       }
-      // The driver goes on reading while the last lines print, so it may have received more
-      // scans than were shown: both are said, so "--scans 3" never reads as "5 scans".
+      // Only a finite --scans gets here, all of them shown; the driver goes on reading while the
+      // last lines print, so it may have received more: both are said, so "--scans 3" never
+      // reads as "5 scans".
       out.printf(
           Locale.ROOT,
           "%d scans shown, %d received; dropped %d damaged telegrams/answers, skipped %d bytes%n",
-          shown,
+          scans,
           laser.getScanCount(),
           laser.getDropCounters().total(),
           laser.getDropCounters().skippedBytes());
