@@ -55,7 +55,8 @@ class LauncherTest {
     "sim-vision",
     "desktop-spi",
     "sim-guiserver",
-    "tools"
+    "tools",
+    "cli"
   };
 
   /** What the apps are built from besides the command line's modules. */
@@ -74,7 +75,7 @@ class LauncherTest {
         "mvnw",
         """
         #!/bin/sh
-        module=tools
+        module=cli
         previous=
         for a in "$@"; do
           if [ "$previous" = "-pl" ]; then module="$a"; fi
@@ -144,9 +145,9 @@ class LauncherTest {
   @Test
   void aChangedSourceIsBuiltOnceEvenWhenTheJarStaysTheSame() throws Exception {
     jaria(Map.of(), "version");
-    Path jar = repo.resolve("tools/target/jaria-tools.jar");
+    Path jar = repo.resolve("cli/target/jaria-cli.jar");
     age(jar, Duration.ofMinutes(30)); // an older build
-    age(repo.resolve("tools/target/jaria-build.stamp"), Duration.ofMinutes(30));
+    age(repo.resolve("cli/target/jaria-build.stamp"), Duration.ofMinutes(30));
     Path source = repo.resolve("simulator/src/main/java/A.java");
     age(source, Duration.ofMinutes(10)); // edited since
 
@@ -210,8 +211,8 @@ class LauncherTest {
   }
 
   /**
-   * The script's module lists are exactly what {@code ./mvnw -pl tools -am} and {@code -pl
-   * tools,apps -am} build.
+   * The script's module lists are exactly what {@code ./mvnw -pl cli -am} and {@code -pl cli,apps
+   * -am} build.
    */
   @Test
   void theModulesWatchedAreWhatToolsAndTheAppsAreBuiltFrom() throws Exception {
@@ -220,16 +221,16 @@ class LauncherTest {
     assertTrue(m.find(), "the launcher names its modules");
     TreeSet<String> watched = new TreeSet<>(Arrays.asList(m.group(1).split(" ")));
     assertEquals(new TreeSet<>(Arrays.asList(MODULES)), watched);
-    assertEquals(reactorOf(Path.of(".."), "tools"), watched);
+    assertEquals(reactorOf(Path.of(".."), "cli"), watched);
     Matcher a = Pattern.compile("(?m)^apps_modules=\"\\$modules ([^\"]*)\"").matcher(script);
     assertTrue(a.find(), "the launcher names the apps' modules");
     TreeSet<String> apps = new TreeSet<>(watched);
     apps.addAll(Arrays.asList(a.group(1).split(" ")));
-    TreeSet<String> built = new TreeSet<>(reactorOf(Path.of(".."), "tools"));
+    TreeSet<String> built = new TreeSet<>(reactorOf(Path.of(".."), "cli"));
     built.addAll(reactorOf(Path.of(".."), "apps"));
     assertEquals(built, apps);
     assertTrue(
-        script.contains("build tools,apps "), "an app's command builds -pl tools,apps:\n" + script);
+        script.contains("build cli,apps "), "an app's command builds -pl cli,apps:\n" + script);
   }
 
   /**
@@ -240,6 +241,17 @@ class LauncherTest {
   @Test
   void theAppsDoNotDependOnTheCommandLine() throws Exception {
     assertFalse(reactorOf(Path.of(".."), "apps").contains("tools"));
+    assertFalse(reactorOf(Path.of(".."), "apps").contains("cli"));
+  }
+
+  /**
+   * tools builds beside the classroom module, whose tests take longest: only cli, which adds
+   * grading to tools' commands, needs both.
+   */
+  @Test
+  void theCommandsBuildBesideTheClassroom() throws Exception {
+    assertFalse(reactorOf(Path.of(".."), "tools").contains("classroom"));
+    assertTrue(reactorOf(Path.of(".."), "cli").containsAll(List.of("tools", "classroom")));
   }
 
   /**
@@ -249,26 +261,26 @@ class LauncherTest {
   @Test
   void theAppsAreBuiltOnFirstUseOnlyAndOnlyTheirCommandsUseThem() throws Exception {
     Result cli = jaria(Map.of(), "demo");
-    assertEquals(List.of("build tools"), calls(), cli.err);
-    assertTrue(cli.out.contains("tools/target/jaria-tools.jar"), cli.out);
+    assertEquals(List.of("build cli"), calls(), cli.err);
+    assertTrue(cli.out.contains("cli/target/jaria-cli.jar"), cli.out);
     assertFalse(cli.out.contains("apps/target"), cli.out);
 
     Result app = jaria(Map.of(), "mapper", "office.map");
-    assertEquals(List.of("build tools", "build tools,apps"), calls(), app.err);
+    assertEquals(List.of("build cli", "build cli,apps"), calls(), app.err);
     assertTrue(app.err.contains("building the desktop apps and cameras"), app.err);
     assertTrue(app.out.contains("apps/target/jaria-apps.jar"), app.out);
-    assertTrue(app.out.contains("tools/target/jaria-tools.jar"), app.out);
+    assertTrue(app.out.contains("cli/target/jaria-cli.jar"), app.out);
     assertTrue(app.out.endsWith("org.jaria.tools.cli.JariaCli mapper office.map\n"), app.out);
 
     jaria(Map.of(), "screenshot", "mapper", "-o", "x.png");
     jaria(Map.of(), "version");
-    assertEquals(List.of("build tools", "build tools,apps"), calls(), "nothing changed since");
+    assertEquals(List.of("build cli", "build cli,apps"), calls(), "nothing changed since");
 
     age(repo.resolve("apps/src/main/java/A.java"), Duration.ofMinutes(-10));
     jaria(Map.of(), "version");
     assertEquals(2, builds(), "an edited app does not rebuild the command line");
     jaria(Map.of(), "monitor");
-    assertEquals(List.of("build tools", "build tools,apps", "build tools,apps"), calls());
+    assertEquals(List.of("build cli", "build cli,apps", "build cli,apps"), calls());
   }
 
   /** Which commands run with the apps: apps, windows, live cameras and their benchmarks. */
@@ -313,7 +325,7 @@ class LauncherTest {
             List.of("web"));
     for (List<String> args : commandLineOnly) {
       Result r = jaria(noBuild, args.toArray(new String[0]));
-      assertTrue(r.out.contains("tools/target/jaria-tools.jar"), args + ": " + r.out);
+      assertTrue(r.out.contains("cli/target/jaria-cli.jar"), args + ": " + r.out);
       assertFalse(r.out.contains("apps/target"), args + ": " + r.out);
     }
     assertEquals(0, builds(), "JARIA_NO_BUILD builds nothing");
@@ -390,7 +402,7 @@ class LauncherTest {
     return calls().size();
   }
 
-  /** The fake build's calls, one line each: "build tools" or "build tools,apps". */
+  /** The fake build's calls, one line each: "build cli" or "build cli,apps". */
   private List<String> calls() throws IOException {
     Path calls = repo.resolve("mvnw-calls");
     return Files.exists(calls) ? Files.readAllLines(calls) : List.of();

@@ -19,8 +19,7 @@ import picocli.CommandLine.Spec;
       BenchCommand.Net.class,
       BenchCommand.Mapping.class,
       BenchCommand.Hostile.class,
-      BenchCommand.Web.class,
-      BenchCommand.Grade.class
+      BenchCommand.Web.class
     })
 final class BenchCommand implements Runnable {
 
@@ -152,19 +151,6 @@ final class BenchCommand implements Runnable {
     @Override
     String table() throws Exception {
       return org.jaria.tools.bench.HostileBenchmark.run(quick);
-    }
-  }
-
-  /** {@code jaria bench grade}. */
-  @Command(
-      name = "grade",
-      description =
-          "Grading a class of 60 square submissions (good, starters, not compiling, hanging,"
-              + " busy-waiting) with 2 jobs and with 1; the gradebooks must be the same.")
-  static final class Grade extends QuickBench {
-    @Override
-    String table() throws Exception {
-      return org.jaria.tools.bench.GradeBenchmark.run(quick);
     }
   }
 }

@@ -1,6 +1,7 @@
 package org.jaria.tools.cli;
 
 import java.util.Optional;
+import java.util.ServiceLoader;
 import org.jaria.desktop.spi.DesktopApps;
 import org.jaria.tools.ProjectVersion;
 import org.jaria.tools.desktop.Desktop;
@@ -9,9 +10,10 @@ import picocli.CommandLine.Command;
 
 /**
  * The {@code jaria} command: one entry point for the simulator, the demos, the benchmarks, the
- * protocol tools and the desktop apps. Run {@code ./jaria --help} for the list. The desktop apps
- * (JavaFX) come from the {@code apps} module when it is on the class path, and are stand-ins that
- * say how to get them otherwise (see {@link Desktop}).
+ * protocol tools, grading and the desktop apps. Run {@code ./jaria --help} for the list. Grading
+ * ({@code jaria grade}) comes from the {@code cli} module through a {@link CommandProvider}; the
+ * desktop apps (JavaFX) come from the {@code apps} module when it is on the class path, and are
+ * stand-ins that say how to get them otherwise (see {@link Desktop}).
  */
 @Command(
     name = "jaria",
@@ -27,8 +29,7 @@ import picocli.CommandLine.Command;
       org.jaria.tools.acts.ActsCommand.class,
       org.jaria.tools.demo.DemoCommand.class,
       org.jaria.tools.web.WebCommand.class,
-      BenchCommand.class,
-      org.jaria.tools.grade.GradeCommand.class
+      BenchCommand.class
     })
 public final class JariaCli implements Runnable {
 
@@ -42,19 +43,31 @@ public final class JariaCli implements Runnable {
   /** Builds the command line with every subcommand, ready to execute. */
   public static CommandLine commandLine() {
     CommandLine cli = new CommandLine(new JariaCli());
+    CommandLine bench = cli.getSubcommands().get("bench");
+    for (CommandProvider more : ServiceLoader.load(CommandProvider.class)) {
+      for (Object c : more.commands()) {
+        add(cli, new CommandLine(c));
+      }
+      for (Object b : more.benchmarks()) {
+        add(bench, new CommandLine(b));
+      }
+    }
     Optional<DesktopApps> apps = Desktop.find();
     for (CommandLine app : Desktop.appCommands(apps)) {
-      cli.addSubcommand(app.getCommandName(), app);
+      add(cli, app);
     }
-    CommandLine bench = cli.getSubcommands().get("bench");
     for (CommandLine b : Desktop.benchCommands(apps)) {
-      bench.addSubcommand(b.getCommandName(), b);
+      add(bench, b);
     }
     cli.addSubcommand(new CommandLine.HelpCommand());
     addHelpOptions(cli);
     cli.setParameterExceptionHandler(CliErrors::badArguments);
     cli.setExecutionExceptionHandler(CliErrors::failed);
     return cli;
+  }
+
+  private static void add(CommandLine parent, CommandLine sub) {
+    parent.addSubcommand(sub.getCommandName(), sub);
   }
 
   /**

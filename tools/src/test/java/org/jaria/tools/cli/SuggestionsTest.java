@@ -40,7 +40,6 @@ class SuggestionsTest {
 
   @Test
   void theIssuesExamples() {
-    assertTrue(run("grade", "--jbos", "2").contains("Did you mean --jobs?"));
     assertTrue(run("demo", "--sekonds", "3").contains("Did you mean --seconds"));
     assertTrue(run("dmeo").contains("jaria: unknown command 'dmeo'\nDid you mean demo?"));
     assertTrue(run("demo", "wandr").contains("Did you mean wander?"));

@@ -1,4 +1,4 @@
-package org.jaria.tools.grade;
+package org.jaria.cli.grade;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

@@ -1,4 +1,4 @@
-package org.jaria.tools.grade;
+package org.jaria.cli.grade;
 
 import java.io.IOException;
 import java.io.PrintWriter;

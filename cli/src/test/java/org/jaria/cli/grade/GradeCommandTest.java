@@ -1,4 +1,4 @@
-package org.jaria.tools.grade;
+package org.jaria.cli.grade;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -49,6 +49,21 @@ class GradeCommandTest {
     assertTrue(
         ignored.contains("/" + out + "/") || ignored.contains(out + "/"),
         "the repository's .gitignore lists " + out + "/: " + ignored);
+  }
+
+  /**
+   * The command line finds grading through its CommandProvider, in the order of its help, and a
+   * mistyped option of it is named as the others' are.
+   */
+  @Test
+  void gradingJoinsTheCommandLine() {
+    CommandLine cli = JariaCli.commandLine();
+    List<String> names = List.copyOf(cli.getSubcommands().keySet());
+    assertEquals(names.indexOf("bench") + 1, names.indexOf("grade"), names.toString());
+    assertTrue(cli.getSubcommands().get("bench").getSubcommands().containsKey("grade"));
+    Run typo = jaria("grade", "--jbos", "2");
+    assertEquals(2, typo.exit());
+    assertTrue(typo.err().contains("Did you mean --jobs?"), typo.err());
   }
 
   @Test

@@ -1,4 +1,4 @@
-package org.jaria.tools.bench;
+package org.jaria.cli.grade;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
