@@ -19,6 +19,7 @@ import org.jaria.classroom.link.CompileReport;
 import org.jaria.classroom.link.LinkLost;
 import org.jaria.classroom.link.StudentStreams;
 import org.jaria.classroom.sandbox.Cleanup;
+import org.jaria.classroom.sandbox.SandboxUsers;
 import org.jaria.classroom.sandbox.ScratchFiles;
 
 /**
@@ -49,17 +50,24 @@ final class StudentRun {
    * their output going to {@code log}, and grades them; {@code t0} is when their grading began.
    */
   Grader.Result run(String student, Path scratch, Path log, int slot, long t0) throws IOException {
-    options.sandbox().prepare(scratch, slot);
-    List<String> cmd =
-        options
-            .sandbox()
-            .command(
-                scratch,
-                studentClassPath,
-                options.limits(),
-                slot,
-                StudentMain.class.getName(),
-                List.of(assignment.id(), "/sandbox/src", "/sandbox/classes"));
+    try (SandboxUsers.Lease user = options.sandbox().user(slot)) {
+      options.sandbox().prepare(scratch, user.uid());
+      List<String> cmd =
+          options
+              .sandbox()
+              .command(
+                  scratch,
+                  studentClassPath,
+                  options.limits(),
+                  user.uid(),
+                  StudentMain.class.getName(),
+                  List.of(assignment.id(), "/sandbox/src", "/sandbox/classes"));
+      return run(student, scratch, log, cmd, t0);
+    }
+  }
+
+  private Grader.Result run(String student, Path scratch, Path log, List<String> cmd, long t0)
+      throws IOException {
     Process p = new ProcessBuilder(cmd).directory(scratch.toFile()).start();
     live.add(p);
     OutputCopier output =

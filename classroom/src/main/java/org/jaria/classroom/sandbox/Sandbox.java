@@ -18,11 +18,12 @@ import java.util.concurrent.TimeUnit;
  * unused loopback), IPC and host-name namespaces, so it can reach nothing over the network, sees no
  * other process, and every process it starts dies with it. Its only link to the grader is its
  * standard input and output. When the grader runs as root the JVM runs as an unprivileged user of
- * its own ({@code 64000 + slot}), because the kernel does not apply the process limit to root.
+ * its own (from {@code 64000} up, one per running JVM on the machine: {@link SandboxUsers}),
+ * because the kernel does not apply the process limit to root.
  */
 public final class Sandbox {
 
-  /** The user ids the sandboxed JVMs run as when the grader is root: BASE_UID + slot. */
+  /** The lowest user id the sandboxed JVMs run as when the grader is root (see {@link #user}). */
   public static final int BASE_UID = 64000;
 
   /** Where bubblewrap is looked for unless the teacher says otherwise ({@code --bwrap}). */
@@ -34,6 +35,7 @@ public final class Sandbox {
   private final boolean isolated;
   private final boolean root;
   private final Path bwrap;
+  private final SandboxUsers users = SandboxUsers.in(SandboxUsers.DEFAULT_FOLDER);
 
   private Sandbox(boolean isolated, boolean root, Path bwrap) {
     this.isolated = isolated;
@@ -143,17 +145,22 @@ public final class Sandbox {
     }
   }
 
-  /** The uid the JVM of {@code slot} runs as, or -1 if it runs as the grader's own user. */
-  public int uid(int slot) {
-    return isolated && root ? BASE_UID + slot : -1;
+  /**
+   * The user that the JVM of grading slot {@code slot} runs as, held until the lease is closed:
+   * when the grader is root, a user no other student's JVM on this machine has meanwhile (see
+   * {@link SandboxUsers}); otherwise none ({@code uid()} -1).
+   *
+   * @throws IOException if no user can be had (all busy, or the lock folder unusable)
+   */
+  public SandboxUsers.Lease user(int slot) throws IOException {
+    return isolated && root ? users.lease(slot) : SandboxUsers.Lease.none();
   }
 
   /**
-   * Gives the scratch folder to the sandbox's user (when the grader is root), so the student's JVM
-   * can write there and nowhere else.
+   * Gives the scratch folder to the sandbox's user {@code uid} (from {@link #user}; -1: none), so
+   * the student's JVM can write there and nowhere else.
    */
-  public void prepare(Path scratch, int slot) throws IOException {
-    int uid = uid(slot);
+  public void prepare(Path scratch, int uid) throws IOException {
     if (uid < 0) {
       return;
     }
@@ -171,7 +178,7 @@ public final class Sandbox {
    * @param scratch the student's scratch folder (seen as /sandbox inside)
    * @param classPath JAria's class path entries (bound read-only at their own paths)
    * @param limits the limits
-   * @param slot which parallel grading slot (its own user when the grader is root)
+   * @param uid the user it runs as (from {@link #user}; -1 when the grader is not root)
    * @param mainClass the JVM's main class
    * @param args its arguments; a path inside scratch is given as under /sandbox
    */
@@ -179,7 +186,7 @@ public final class Sandbox {
       Path scratch,
       List<Path> classPath,
       Limits limits,
-      int slot,
+      int uid,
       String mainClass,
       List<String> args) {
     Path javaHome = realJavaHome();
@@ -259,7 +266,10 @@ public final class Sandbox {
             "C.UTF-8",
             "--"));
     if (root) {
-      int uid = uid(slot);
+      if (uid < 0) {
+        throw new IllegalArgumentException(
+            "a student's JVM started by root needs a user of its own: lease one with user(slot)");
+      }
       cmd.addAll(
           List.of(
               SETPRIV.toString(),

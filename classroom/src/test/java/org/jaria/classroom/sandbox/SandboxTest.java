@@ -2,6 +2,7 @@ package org.jaria.classroom.sandbox;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
@@ -17,8 +18,8 @@ class SandboxTest {
   private static final List<Path> CP = List.of(Path.of("/opt/jaria/lib/classroom.jar"));
   private static final Limits LIMITS = Limits.forTimeout(Duration.ofSeconds(30));
 
-  private static List<String> command(Sandbox s, int slot) {
-    return s.command(SCRATCH, CP, LIMITS, slot, "Main", List.of("square", "/sandbox/classes"));
+  private static List<String> command(Sandbox s, int uid) {
+    return s.command(SCRATCH, CP, LIMITS, uid, "Main", List.of("square", "/sandbox/classes"));
   }
 
   private static boolean hasSequence(List<String> cmd, String... seq) {
@@ -26,8 +27,8 @@ class SandboxTest {
   }
 
   @Test
-  void asRootTheJvmRunsAsAnUnprivilegedUserOfItsSlotWithAProcessLimit() {
-    List<String> cmd = command(Sandbox.of(true, true), 2);
+  void asRootTheJvmRunsAsTheUnprivilegedUserItLeasedWithAProcessLimit() {
+    List<String> cmd = command(Sandbox.of(true, true), 64002);
     assertEquals("/usr/bin/prlimit", cmd.get(0));
     assertTrue(cmd.contains("--nproc=128"), cmd.toString());
     assertTrue(cmd.contains("--cpu=70"), cmd.toString());
@@ -50,8 +51,15 @@ class SandboxTest {
   }
 
   @Test
+  void asRootNoJvmStartsWithoutAUserOfItsOwn() {
+    IllegalArgumentException e =
+        assertThrows(IllegalArgumentException.class, () -> command(Sandbox.of(true, true), -1));
+    assertTrue(e.getMessage().contains("lease one with user(slot)"), e.getMessage());
+  }
+
+  @Test
   void withoutRootAUserNamespaceStandsInForTheUser() {
-    List<String> cmd = command(Sandbox.of(true, false), 1);
+    List<String> cmd = command(Sandbox.of(true, false), -1);
     assertTrue(cmd.contains("--unshare-user"), cmd.toString());
     assertFalse(cmd.stream().anyMatch(a -> a.startsWith("--nproc")), cmd.toString());
     assertFalse(cmd.stream().anyMatch(a -> a.contains("setpriv")), cmd.toString());
@@ -59,7 +67,7 @@ class SandboxTest {
 
   @Test
   void unsafeIsAPlainJvmOnTheScratchFolder() {
-    List<String> cmd = command(Sandbox.none(), 1);
+    List<String> cmd = command(Sandbox.none(), -1);
     assertTrue(cmd.get(0).endsWith("/bin/java"), cmd.toString());
     assertFalse(cmd.stream().anyMatch(a -> a.contains("bwrap")), cmd.toString());
     assertEquals(SCRATCH + "/classes", cmd.get(cmd.size() - 1));
