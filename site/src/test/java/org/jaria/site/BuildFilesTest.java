@@ -2,6 +2,7 @@ package org.jaria.site;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
 import java.io.StringWriter;
@@ -102,5 +103,26 @@ class BuildFilesTest {
     assertTrue(log.toString().contains("element not closed: b"), log.toString());
     assertTrue(
         !log.toString().contains("Broken.java:3"), "private members are not checked\n" + log);
+  }
+
+  /**
+   * What {@code ./jaria} runs (cli/target/lib beside cli's jar, made by {@code package}, which
+   * {@code ./mvnw verify} runs before these tests) holds the log output's backend, the command
+   * line's commands and grading, and neither JavaFX nor OpenCV.
+   */
+  @Test
+  void theLaunchersLibrariesHaveTheLogBackendAndGrading() throws IOException {
+    Path lib = root.resolve("cli/target/lib");
+    assumeTrue(Files.isDirectory(lib), "cli is not packaged (./mvnw verify packages it)");
+    List<String> jars;
+    try (var files = Files.list(lib)) {
+      jars = files.map(p -> p.getFileName().toString()).sorted().toList();
+    }
+    for (String wanted : List.of("slf4j-simple-", "tools-", "classroom-", "picocli-")) {
+      assertTrue(jars.stream().anyMatch(j -> j.startsWith(wanted)), wanted + " in " + jars);
+    }
+    for (String unwanted : List.of("javafx-", "opencv-")) {
+      assertTrue(jars.stream().noneMatch(j -> j.startsWith(unwanted)), unwanted + " in " + jars);
+    }
   }
 }

@@ -10,8 +10,8 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
- * A gigabyte log read as a stream: the reader keeps one line, so the memory it needs does not
- * depend on the log's length. The log is generated on the fly (no gigabyte file on disk).
+ * A 256 MB log read as a stream: the reader keeps one line, so the memory it needs does not depend
+ * on the log's length. The log is generated on the fly (no such file on disk).
  */
 @Tag("slow")
 class HugeLogTest {
@@ -74,13 +74,13 @@ class HugeLogTest {
   }
 
   @Test
-  void aGigabyteLogStreamsThroughInBoundedMemory() throws IOException {
+  void aLongLogStreamsThroughInBoundedMemory() throws IOException {
     StringBuilder readings = new StringBuilder();
     for (int i = 0; i < 181; i++) {
       readings.append(1000 + i).append(' ').append(-2000 + 7 * i).append("  ");
     }
     String block = ScanLogReaderTest.scan(0, 1.5, 300, readings.toString());
-    long size = 1L << 30;
+    long size = 1L << 28;
     RepeatingLog in = new RepeatingLog(ScanLogReaderTest.HEADER, block, size);
     Runtime rt = Runtime.getRuntime();
     long scans = 0;
@@ -89,7 +89,7 @@ class HugeLogTest {
     try (ScanLogReader r = ScanLogReader.of(in, "generated.2d")) {
       for (ScanLogEntry e = r.next(); e != null; e = r.next()) {
         readingsSeen += ((LoggedScan) e).size();
-        if (++scans % 200_000 == 0) {
+        if (++scans % 50_000 == 0) {
           // Live data only: without a collection first, the reading would count whatever garbage
           // the collector has not yet reclaimed (hundreds of MB with a large young generation, and
           // more in a JVM that ran other test classes before this one).
@@ -102,8 +102,9 @@ class HugeLogTest {
     }
     assertEquals(in.blocks(), scans);
     assertEquals(181 * scans, readingsSeen);
-    assertTrue(scans * block.length() >= size, "the whole gigabyte was read: " + scans);
-    // Nothing accumulates: the heap in use stays far below the gigabyte read.
-    assertTrue(maxUsed < 256L << 20, "heap in use " + (maxUsed >> 20) + " MB");
+    assertTrue(scans * block.length() >= size, "the whole log was read: " + scans);
+    // Nothing accumulates: the heap in use stays far below the 256 MB read.
+    assertTrue(maxUsed > 0, "the heap was measured");
+    assertTrue(maxUsed < 64L << 20, "heap in use " + (maxUsed >> 20) + " MB");
   }
 }
