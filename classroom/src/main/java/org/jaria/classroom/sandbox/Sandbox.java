@@ -35,7 +35,7 @@ public final class Sandbox {
   private final boolean isolated;
   private final boolean root;
   private final Path bwrap;
-  private final SandboxUsers users = SandboxUsers.in(SandboxUsers.DEFAULT_FOLDER);
+  private final SandboxUsers users = SandboxUsers.ofThisMachine();
 
   private Sandbox(boolean isolated, boolean root, Path bwrap) {
     this.isolated = isolated;

@@ -42,6 +42,16 @@ public final class SandboxUsers {
     return new SandboxUsers(folder);
   }
 
+  /**
+   * The user ids of this machine's graders: lock files in {@link #DEFAULT_FOLDER}, or where {@code
+   * /run} cannot be written (some containers), in the system's temporary folder.
+   */
+  public static SandboxUsers ofThisMachine() {
+    boolean run = Files.isDirectory(DEFAULT_FOLDER) || Files.isWritable(DEFAULT_FOLDER.getParent());
+    return new SandboxUsers(
+        run ? DEFAULT_FOLDER : Path.of(System.getProperty("java.io.tmpdir"), "jaria-grader-users"));
+  }
+
   /** One user id, held until the lease is closed. */
   public static final class Lease implements AutoCloseable {
     private final int uid;
@@ -124,6 +134,15 @@ public final class SandboxUsers {
     if (!Files.isDirectory(folder, LinkOption.NOFOLLOW_LINKS)) {
       throw new IOException(
           folder + " is not a folder: remove it, so that the grader can keep its lock files there");
+    }
+    // In a shared temporary folder someone else could have made it first, to hold every lock.
+    Object owner = Files.getAttribute(folder, "unix:uid", LinkOption.NOFOLLOW_LINKS);
+    if (!owner.equals(Files.getAttribute(Path.of("/proc/self"), "unix:uid"))) {
+      throw new IOException(
+          folder
+              + " belongs to another user (uid "
+              + owner
+              + "): remove it, so that the grader can keep its lock files there");
     }
   }
 }

@@ -3,6 +3,7 @@ package org.jaria.classroom.sandbox;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -85,6 +86,17 @@ class SandboxUsersTest {
     Path link = Files.createSymbolicLink(tmp.resolve("locks"), real);
     IOException e = assertThrows(IOException.class, () -> SandboxUsers.in(link).lease(0));
     assertTrue(e.getMessage().contains("is not a folder"), e.getMessage());
+  }
+
+  @Test
+  void aLockFolderOfAnotherUserIsRefused() throws IOException {
+    Path locks = Files.createDirectory(tmp.resolve("locks"));
+    assumeTrue(
+        Integer.valueOf(0).equals(Files.getAttribute(Path.of("/proc/self"), "unix:uid")),
+        "giving a folder away needs root");
+    Files.setAttribute(locks, "unix:uid", 64999);
+    IOException e = assertThrows(IOException.class, () -> SandboxUsers.in(locks).lease(0));
+    assertTrue(e.getMessage().contains("belongs to another user (uid 64999)"), e.getMessage());
   }
 
   /**
