@@ -47,6 +47,16 @@ class RobotFactoryRecipeTest {
     return out;
   }
 
+  /** The simulator of the recipe's {@code ./jaria sim} line, its first port {@code port}. */
+  private static SimWorld simulator(String simLine, int port) throws Exception {
+    List<String> simArgs = new ArrayList<>(ShellWords.split(simLine));
+    simArgs.subList(0, 2).clear(); // ./jaria sim
+    simArgs.addAll(List.of("-p", String.valueOf(port)));
+    SimCommand sim = new SimCommand();
+    new CommandLine(sim).parseArgs(simArgs.toArray(String[]::new));
+    return sim.createWorld();
+  }
+
   @Test
   void twoProgramsOnTheFactoryPortEachDriveTheirOwnRobot() throws Exception {
     List<String> simLines = recipeLines("./jaria sim -R");
@@ -54,18 +64,27 @@ class RobotFactoryRecipeTest {
     List<String> clients = recipeLines("./jaria demo wander --remote localhost:8101");
     assertEquals(2, clients.size(), clients.toString());
 
-    int port;
-    try (ServerSocket s = new ServerSocket(0)) {
-      port = s.getLocalPort();
+    SimWorld listening = null;
+    int port = 0;
+    // The recipe's simulator takes two ports, the factory's and the next: a free port's neighbour
+    // can be taken meanwhile (by another test's connection), so a port pair in use is tried again.
+    for (int attempt = 1; listening == null; attempt++) {
+      try (ServerSocket s = new ServerSocket(0)) {
+        port = s.getLocalPort();
+      }
+      SimWorld world = simulator(simLines.get(0), port);
+      try {
+        world.listen();
+        listening = world;
+      } catch (IOException e) {
+        world.close();
+        if (attempt == 5 || !String.valueOf(e.getMessage()).contains("in use")) {
+          throw e;
+        }
+      }
     }
-    List<String> simArgs = new ArrayList<>(ShellWords.split(simLines.get(0)));
-    simArgs.subList(0, 2).clear(); // ./jaria sim
-    simArgs.addAll(List.of("-p", String.valueOf(port)));
-    SimCommand sim = new SimCommand();
-    new CommandLine(sim).parseArgs(simArgs.toArray(String[]::new));
     ExecutorService pool = Executors.newFixedThreadPool(2);
-    try (SimWorld world = sim.createWorld()) {
-      world.listen();
+    try (SimWorld world = listening) {
       RobotFactory factory = world.getRobotFactories().get(0);
       assertEquals(port, factory.getPort(), "the factory has the first port");
       assertEquals(port + 1, world.findRobot("guard").orElseThrow().getPort(), "guard the next");
