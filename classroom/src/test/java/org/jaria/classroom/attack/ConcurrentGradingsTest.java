@@ -1,6 +1,7 @@
 package org.jaria.classroom.attack;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -13,9 +14,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
-import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
 import org.jaria.classroom.classgrading.ClassGrading;
 import org.jaria.classroom.classgrading.GradeRequest;
 import org.jaria.classroom.sandbox.Sandbox;
@@ -30,17 +31,35 @@ import org.junit.jupiter.api.io.TempDir;
  */
 class ConcurrentGradingsTest {
 
-  /** A student who waits long enough for the other grading's student to be running too. */
+  /**
+   * A student who says, on their standard error (the report's output.txt), which user their JVM
+   * runs as, and then that it is still running, with the time, every 50 ms for up to 6 s (until the
+   * grader interrupts the program).
+   */
   private static final String WAITER =
       """
+      import java.nio.file.*;
       import org.jaria.classroom.RobotProgram;
       import org.jaria.robot.ArRobot;
       public class Square implements RobotProgram {
         public void run(ArRobot robot) throws InterruptedException {
-          Thread.sleep(6000);
+          String uid = "?";
+          try {
+            for (String l : Files.readAllLines(Path.of("/proc/self/status"))) {
+              if (l.startsWith("Uid:")) { uid = new java.util.Scanner(l.substring(4)).next(); }
+            }
+          } catch (java.io.IOException e) { uid = "unknown"; }
+          long end = System.currentTimeMillis() + 6000;
+          while (System.currentTimeMillis() < end) {
+            System.err.println("alive " + uid + " " + System.currentTimeMillis());
+            Thread.sleep(50);
+          }
         }
       }
       """;
+
+  /** What a student's output says: the user their JVM ran as, and when it first and last ran. */
+  private record Alive(String uid, long first, long last) {}
 
   @TempDir Path tmp;
 
@@ -52,24 +71,18 @@ class ConcurrentGradingsTest {
         "students get users of their own only when the grader is root");
     CompletableFuture<String> a = grade("a");
     CompletableFuture<String> b = grade("b");
-    // Both students' JVMs are running: each is a process of its sandbox user below the sandbox
-    // whose command line names its grading's scratch root.
-    long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
-    Optional<Integer> uidA = Optional.empty();
-    Optional<Integer> uidB = Optional.empty();
-    while (System.nanoTime() < deadline && (uidA.isEmpty() || uidB.isEmpty())) {
-      uidA = studentUid(tmp.resolve("a/scratch"));
-      uidB = studentUid(tmp.resolve("b/scratch"));
-      if (uidA.isEmpty() || uidB.isEmpty()) {
-        TimeUnit.MILLISECONDS.sleep(20); // polling /proc: no event says a process started
-      }
-    }
-    assertTrue(uidA.isPresent() && uidB.isPresent(), "both students ran at once: " + uidA + uidB);
-    assertNotEquals(uidA.get(), uidB.get(), "the two gradings' students share a user");
     for (CompletableFuture<String> grading : List.of(a, b)) {
       String table = grading.get(120, TimeUnit.SECONDS);
       assertTrue(table.contains("GRADED"), table);
     }
+    // Read afterwards from the reports: the two JVMs ran at once when each said it was running
+    // after the other had started and before the other had stopped.
+    Alive inA = alive(tmp.resolve("a/report"));
+    Alive inB = alive(tmp.resolve("b/report"));
+    assertTrue(
+        Math.max(inA.first(), inB.first()) <= Math.min(inA.last(), inB.last()),
+        "both students ran at once: " + inA + " " + inB);
+    assertNotEquals(inA.uid(), inB.uid(), "the two gradings' students share a user");
   }
 
   private CompletableFuture<String> grade(String name) throws IOException {
@@ -100,23 +113,21 @@ class ConcurrentGradingsTest {
         });
   }
 
-  /** The user of a running student JVM of the grading whose scratch root is {@code scratch}. */
-  private static Optional<Integer> studentUid(Path scratch) {
-    return ProcessHandle.allProcesses()
-        .filter(p -> p.info().commandLine().map(c -> c.contains(scratch.toString())).orElse(false))
-        .flatMap(ProcessHandle::descendants)
-        .map(ConcurrentGradingsTest::uid)
-        .flatMap(Optional::stream)
-        .filter(u -> u >= Sandbox.BASE_UID)
-        .findFirst();
-  }
-
-  private static Optional<Integer> uid(ProcessHandle p) {
-    try {
-      return Optional.of(
-          (Integer) Files.getAttribute(Path.of("/proc", Long.toString(p.pid())), "unix:uid"));
-    } catch (IOException | RuntimeException e) {
-      return Optional.empty(); // ended meanwhile
+  /** The one student's output in the report folder {@code report}, read for its "alive" lines. */
+  private static Alive alive(Path report) throws IOException {
+    Path output;
+    try (Stream<Path> files = Files.walk(report)) {
+      output = files.filter(f -> f.getFileName().toString().equals("output.txt")).findFirst().get();
     }
+    List<String[]> lines =
+        Files.readAllLines(output, StandardCharsets.UTF_8).stream()
+            .filter(l -> l.startsWith("alive "))
+            .map(l -> l.split(" "))
+            .toList();
+    assertFalse(lines.isEmpty(), "the student said nothing: " + output);
+    return new Alive(
+        lines.get(0)[1],
+        Long.parseLong(lines.get(0)[2]),
+        Long.parseLong(lines.get(lines.size() - 1)[2]));
   }
 }
