@@ -49,15 +49,29 @@ public final class VisionBenchmark {
 
   private VisionBenchmark() {}
 
+  /**
+   * How long the benchmark runs: each figure's rounds take about {@code budgetNanos} each, and the
+   * round trip is timed {@code samples} times.
+   */
+  record Effort(String name, long budgetNanos, int rounds, int samples) {
+    static final Effort FULL = new Effort("full", 400_000_000L, 7, 5000);
+    static final Effort QUICK = new Effort("quick", 40_000_000L, 3, 500);
+  }
+
   /** Runs everything and returns the table ({@code quick}: shorter, less precise runs). */
   public static String run(boolean quick) throws IOException, InterruptedException {
+    return run(quick ? Effort.QUICK : Effort.FULL);
+  }
+
+  /** Runs everything with that effort and returns the table. */
+  static String run(Effort effort) throws IOException, InterruptedException {
     OpenCvLoader.load();
     Core.setNumThreads(1);
-    long budget = quick ? 40_000_000L : 400_000_000L;
-    int rounds = quick ? 3 : 7;
+    long budget = effort.budgetNanos();
+    int rounds = effort.rounds();
     StringBuilder out = new StringBuilder();
     out.append("JAria ACTS vision benchmark (")
-        .append(quick ? "quick" : "full")
+        .append(effort.name())
         .append("), one core, desk test scene, median of ")
         .append(rounds)
         .append(" rounds\n");
@@ -109,7 +123,7 @@ public final class VisionBenchmark {
               a / 1e6,
               b / 1e6));
     }
-    out.append(roundTrip(quick ? 500 : 5000));
+    out.append(roundTrip(effort.samples()));
     return out.toString();
   }
 

@@ -41,13 +41,17 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * A class with hostile submissions beside honest ones, graded once in the sandbox with two jobs:
- * each attack (forge the grade, tamper with or read others' files, write outside, network, fork,
+ * A class with hostile submissions beside honest ones, graded in the sandbox with two jobs: each
+ * attack (forge the grade, tamper with or read others' files, write outside, network, fork,
  * threads, spin, allocate, System.exit, a stray process, fill the disk, bomb the compiler, hand in
  * too much) gets 0 and its own status, the honest students keep exactly the grade they get in one
  * JVM, nothing outside the scratch folders changes and no process of theirs is left. Hermetic: it
  * looks only at its own scratch root and at the processes that name it, so another grading running
  * beside it changes nothing.
+ *
+ * <p>The two attacks that only burn processor time until the time limit stops them (the endless
+ * constructor, the compiler bomb) are graded apart, with a shorter limit: the class's limit is long
+ * so that honest students finish on a loaded machine, and these two would burn all of it.
  */
 @Tag("slow")
 @Timeout(value = 15, unit = TimeUnit.MINUTES)
@@ -57,6 +61,8 @@ class GradeAttackTest {
 
   static Path subs;
   static Path out;
+  static Path cpuSubs;
+  static Path cpuOut;
   static Path scratch;
   static Path canary;
   static ServerSocket server;
@@ -83,8 +89,13 @@ class GradeAttackTest {
   }
 
   private static void write(String student, String file, String text) throws IOException {
-    Files.createDirectories(subs.resolve(student));
-    Files.writeString(subs.resolve(student).resolve(file), text, StandardCharsets.UTF_8);
+    write(subs, student, file, text);
+  }
+
+  private static void write(Path folder, String student, String file, String text)
+      throws IOException {
+    Files.createDirectories(folder.resolve(student));
+    Files.writeString(folder.resolve(student).resolve(file), text, StandardCharsets.UTF_8);
   }
 
   @BeforeAll
@@ -92,6 +103,8 @@ class GradeAttackTest {
     assumeTrue(Sandbox.whyUnavailable().isEmpty(), "bubblewrap is not usable here");
     subs = tmp.resolve("submissions");
     out = tmp.resolve("report");
+    cpuSubs = tmp.resolve("submissions-cpu");
+    cpuOut = tmp.resolve("report-cpu");
     scratch = tmp.resolve("scratch");
     canary = tmp.resolve("canary");
     Files.createDirectories(canary);
@@ -196,6 +209,7 @@ class GradeAttackTest {
                 + " Thread.sleep(60000); } catch (InterruptedException e) { } }); t.setDaemon(true);"
                 + " t.start(); }"));
     write(
+        cpuSubs,
         "spin",
         "Square.java",
         program(
@@ -250,7 +264,7 @@ class GradeAttackTest {
     for (int i = 0; i < 7; i++) {
       a = "(b ? new ArrayList<>(List.of(" + a + ")) : new LinkedList<>(Set.of(" + a + ")))";
     }
-    write("inference", "Square.java", bomb.append(a).append(";\n  }\n}\n").toString());
+    write(cpuSubs, "inference", "Square.java", bomb.append(a).append(";\n  }\n}\n").toString());
     // too much to hand in: a 50 MB source, and 10,000 sources
     Files.createDirectories(subs.resolve("hugefile"));
     try (RandomAccessFile f =
@@ -278,30 +292,41 @@ class GradeAttackTest {
             "    List<long[]> hoard = new ArrayList<>();\n"
                 + "    while (true) { hoard.add(new long[1 << 20]); }"));
     before = snapshot(subs);
+    before.putAll(snapshot(cpuSubs));
     before.putAll(snapshot(canary));
 
     StringWriter o = new StringWriter();
     StringWriter e = new StringWriter();
-    int exit =
-        ClassGrading.grade(
-            GradeRequest.of("square", subs, out)
-                .withJobs(2)
-                .withTimeout(Duration.ofSeconds(10))
-                .withScratchRoot(scratch),
-            new PrintWriter(o),
-            new PrintWriter(e));
+    int exit = grade(subs, out, 10, o, e);
+    // 6 s: long enough for the endless constructor to be compiled and started on a loaded machine
+    // (stopped while still compiling, it would be a compile limit, not a time-out)
+    int cpuExit = grade(cpuSubs, cpuOut, 6, o, e);
     stdout = o.toString();
     stderr = e.toString();
     assertEquals(0, exit, stderr);
+    assertEquals(0, cpuExit, stderr);
+  }
+
+  private static int grade(Path from, Path to, int seconds, StringWriter o, StringWriter e)
+      throws IOException {
+    int exit =
+        ClassGrading.grade(
+            GradeRequest.of("square", from, to)
+                .withJobs(2)
+                .withTimeout(Duration.ofSeconds(seconds))
+                .withScratchRoot(scratch),
+            new PrintWriter(o),
+            new PrintWriter(e));
     List<String> names =
-        SubmissionFolders.scan(subs).submissions().stream()
+        SubmissionFolders.scan(from).submissions().stream()
             .map(SubmissionFolders.Submission::student)
             .toList();
     Map<String, String> folders = SubmissionFolders.reportFolders(names);
     for (String name : names) {
       byStudent.put(
-          name, ResultFiles.read(out.resolve("students").resolve(folders.get(name)), name));
+          name, ResultFiles.read(to.resolve("students").resolve(folders.get(name)), name));
     }
+    return exit;
   }
 
   @AfterAll
@@ -416,6 +441,7 @@ class GradeAttackTest {
   @Test
   void nothingOutsideTheScratchFoldersChanged() throws IOException {
     Map<String, String> after = snapshot(subs);
+    after.putAll(snapshot(cpuSubs));
     after.putAll(snapshot(canary));
     assertEquals(before, after);
     assertFalse(Files.exists(Path.of("/tmp/pwned")));
@@ -510,13 +536,15 @@ class GradeAttackTest {
     String csv = Files.readString(out.resolve("gradebook.csv"));
     assertTrue(csv.startsWith("student,score,max,status,program ends,corner 1 reached"), csv);
     assertTrue(csv.contains("\nalice,10,10,GRADED,1,2,2,2,1,1,1\n"), csv);
-    assertTrue(csv.contains("\nspin,0,10,TIMEOUT,"), csv);
+    String cpuCsv = Files.readString(cpuOut.resolve("gradebook.csv"));
+    assertTrue(cpuCsv.contains("\nspin,0,10,TIMEOUT,"), cpuCsv);
     String feedback = Files.readString(out.resolve("students/allocate/feedback.txt"));
     assertTrue(
         feedback.contains("Status: OUT_OF_MEMORY — Your program ran out of memory"), feedback);
     assertTrue(
-        Files.exists(out.resolve("students/spin/grade.txt")),
+        Files.exists(cpuOut.resolve("students/spin/grade.txt")),
         "a timed-out student has a grade file");
-    assertTrue(stdout.contains("[24/24]"), stdout);
+    assertTrue(stdout.contains("[22/22]"), stdout);
+    assertTrue(stdout.contains("[2/2]"), stdout);
   }
 }

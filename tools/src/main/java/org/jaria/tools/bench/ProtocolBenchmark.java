@@ -42,13 +42,27 @@ public final class ProtocolBenchmark {
 
   private ProtocolBenchmark() {}
 
-  /** Runs everything and returns the table. */
+  /**
+   * How long the benchmark runs: {@code rounds} timed runs of {@code n} operations per rate, and
+   * {@code samples} round trips.
+   */
+  record Effort(String name, int rounds, long n, int samples) {
+    static final Effort FULL = new Effort("full", 7, 10_000_000, 3000);
+    static final Effort QUICK = new Effort("quick", 3, 2_000_000, 500);
+  }
+
+  /** Runs everything and returns the table ({@code quick}: shorter, less precise runs). */
   public static String run(boolean quick) throws Exception {
+    return run(quick ? Effort.QUICK : Effort.FULL);
+  }
+
+  /** Runs everything with that effort and returns the table. */
+  static String run(Effort effort) throws Exception {
     StringBuilder out = new StringBuilder();
-    out.append("JAria protocol benchmark (").append(quick ? "quick" : "full").append(")\n");
+    out.append("JAria protocol benchmark (").append(effort.name()).append(")\n");
     out.append(String.format(Locale.ROOT, "%-46s %16s%n", "measure", "result"));
-    int rounds = quick ? 3 : 7;
-    long n = quick ? 2_000_000 : 10_000_000;
+    int rounds = effort.rounds();
+    long n = effort.n();
     out.append(String.format(Locale.ROOT, "%-46s %16s%n", "rates timed on", timerName()));
     row(out, "SIPs received+decoded per second (1 core)", rate(rounds, n, receiveAndDecode()));
     row(out, "SIPs decoded per second (1 core)", rate(rounds, n, decodeOnly()));
@@ -60,7 +74,7 @@ public final class ProtocolBenchmark {
             "%-46s %16s%n",
             "bytes allocated per SIP received+decoded",
             allocationPerOp(n, receiveAndDecode())));
-    long[] lat = latency(quick ? 500 : 3000);
+    long[] lat = latency(effort.samples());
     out.append(
         String.format(
             Locale.ROOT,
