@@ -45,6 +45,10 @@ public final class ShareErrorProne {
         errorProne.add(jar);
       }
     }
+    if (errorProne.isEmpty()) {
+      throw new IllegalStateException(
+          "no Error Prone jar among " + jars + ": check the share-error-prone step's exclude");
+    }
     ClassLoader app = ClassLoader.getSystemClassLoader();
     if (isLoadable(app)) {
       // a second build in a JVM that stays between builds (a build daemon): shared already, but
