@@ -47,7 +47,7 @@ class WebViewBrowserTest {
     cl.setErr(new PrintWriter(log, true));
     Thread server =
         new Thread(
-            () -> cl.execute("--port", "0", "--allow-control", "--speed", "2", "--seconds", "300"),
+            () -> cl.execute("--port", "0", "--allow-control", "--speed", "4", "--seconds", "300"),
             "web-command");
     server.start();
     try (Chromium chrome = Chromium.start(1400, 860)) {
@@ -193,7 +193,7 @@ class WebViewBrowserTest {
     return !mids.isEmpty() && dark >= mids.size() / 2;
   }
 
-  /** Waits for the simulated world (it runs on its own thread at twice real time). */
+  /** Waits for the simulated world (it runs on its own thread at four times real time). */
   private static void waitUntil(java.util.function.BooleanSupplier done, String what)
       throws InterruptedException {
     long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(90);
