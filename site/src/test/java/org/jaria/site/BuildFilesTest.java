@@ -5,17 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
-import java.io.StringWriter;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import javax.tools.JavaCompiler;
-import javax.tools.StandardJavaFileManager;
-import javax.tools.ToolProvider;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -82,27 +76,14 @@ class BuildFilesTest {
           private void helper() {}
         }
         """);
-    JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
-    StringWriter log = new StringWriter();
-    boolean ok;
-    try (StandardJavaFileManager fm =
-        javac.getStandardFileManager(null, Locale.ROOT, StandardCharsets.UTF_8)) {
-      ok =
-          javac
-              .getTask(
-                  log,
-                  fm,
-                  null,
-                  List.of(option.group(1), "-d", dir.toString()),
-                  null,
-                  fm.getJavaFileObjects(broken))
-              .call();
-    }
+    InProcessJavac.Result r =
+        InProcessJavac.compile(List.of(option.group(1), "-d", dir.toString()), broken);
+    boolean ok = r.ok();
+    String log = r.log();
     assertTrue(!ok, "javac with " + option.group(1) + " must fail the broken comment:\n" + log);
-    assertTrue(log.toString().contains("reference not found"), log.toString());
-    assertTrue(log.toString().contains("element not closed: b"), log.toString());
-    assertTrue(
-        !log.toString().contains("Broken.java:3"), "private members are not checked\n" + log);
+    assertTrue(log.contains("reference not found"), log);
+    assertTrue(log.contains("element not closed: b"), log);
+    assertTrue(!log.contains("Broken.java:3"), "private members are not checked\n" + log);
   }
 
   /**

@@ -1,25 +1,21 @@
 package org.jaria.site;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.io.OutputStream;
-import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import java.util.jar.JarOutputStream;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.zip.ZipEntry;
-import javax.tools.JavaCompiler;
-import javax.tools.StandardJavaFileManager;
-import javax.tools.ToolProvider;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -90,22 +86,8 @@ class ShareErrorProneTest {
   }
 
   private static void compile(Path out, Path... sources) throws IOException {
-    JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
-    StringWriter log = new StringWriter();
-    try (StandardJavaFileManager fm =
-        javac.getStandardFileManager(null, Locale.ROOT, StandardCharsets.UTF_8)) {
-      boolean ok =
-          javac
-              .getTask(
-                  log,
-                  fm,
-                  null,
-                  List.of("-d", out.toString()),
-                  null,
-                  fm.getJavaFileObjects(sources))
-              .call();
-      assertTrue(ok, log.toString());
-    }
+    InProcessJavac.Result r = InProcessJavac.compile(List.of("-d", out.toString()), sources);
+    assertTrue(r.ok(), r.log());
   }
 
   private static void jar(Path jar, Path from, String entry) throws IOException {
@@ -166,7 +148,7 @@ class ShareErrorProneTest {
     String out = run(List.of("--add-opens", "java.base/jdk.internal.loader=ALL-UNNAMED"));
     assertTrue(out.contains("loads " + PLUGIN), out);
     assertTrue(out.contains("does not load Tool"), out);
-    assertTrue(!out.contains("not shared"), out);
+    assertFalse(out.contains("not shared"), out);
   }
 
   @Test
