@@ -14,6 +14,9 @@ import javafx.scene.image.WritableImage;
  * out, many points fall on the same pixel and each costs one array write (the level of detail is
  * the pixel grid itself); zoomed in, points grow to squares of their real size.
  *
+ * <p>A view redrawn with nothing changed for the points (the robot moves, the map stays) gets the
+ * same image back untouched: no pixel is drawn, converted or uploaded again.
+ *
  * <p>Not thread-safe; build it anywhere, draw on the JavaFX thread.
  */
 public final class PointLayer {
@@ -33,6 +36,28 @@ public final class PointLayer {
 
   private int[] buffer = new int[0];
   private WritableImage image;
+
+  /** What {@link #image} shows (null until drawn). */
+  private Drawn drawn;
+
+  /** A view, its colours and its selection: what one image of the points shows. */
+  private record Drawn(
+      int w,
+      int h,
+      double scale,
+      double centerX,
+      double centerY,
+      int argb,
+      int selectedArgb,
+      int dot,
+      BitSet selected) {
+
+    /** A copy to keep: callers change their selection in place between frames. */
+    Drawn withCopiedSelection() {
+      BitSet copy = selected == null ? null : (BitSet) selected.clone();
+      return new Drawn(w, h, scale, centerX, centerY, argb, selectedArgb, dot, copy);
+    }
+  }
 
   /** Indexes the points {@code (xs[i], ys[i])}, mm; the arrays are not copied or changed. */
   public PointLayer(int[] xs, int[] ys) {
@@ -83,7 +108,8 @@ public final class PointLayer {
   }
 
   /**
-   * Draws the visible points into an image of the viewport's size (reused between calls).
+   * Draws the visible points into an image of the viewport's size (reused between calls, and
+   * returned as it is when the view, the colours and the selection are those it was drawn for).
    *
    * @param vp the view
    * @param argb colour of points
@@ -96,13 +122,19 @@ public final class PointLayer {
       Viewport vp, int argb, BitSet selected, int selectedArgb, double pointSizeMm) {
     int w = (int) Math.ceil(vp.width());
     int h = (int) Math.ceil(vp.height());
+    int dot = (int) Math.max(1, Math.min(12, Math.round(pointSizeMm * vp.scale())));
+    Drawn wanted =
+        new Drawn(w, h, vp.scale(), vp.centerX(), vp.centerY(), argb, selectedArgb, dot, selected);
+    if (image != null && wanted.equals(drawn)) {
+      return image;
+    }
+    drawn = wanted.withCopiedSelection();
     if (image == null || (int) image.getWidth() != w || (int) image.getHeight() != h) {
       image = new WritableImage(w, h);
       buffer = new int[w * h];
     } else {
       Arrays.fill(buffer, 0);
     }
-    int dot = (int) Math.max(1, Math.min(12, Math.round(pointSizeMm * vp.scale())));
     int half = dot / 2;
     double s = vp.scale();
     double ox = vp.width() / 2 - vp.centerX() * s;

@@ -124,7 +124,7 @@ public final class MapperBenchmark {
           v.viewport().setScale(fitScale);
           v.viewport().setCenter(cx, cy);
         };
-    row(out, view, img, frames, "whole map in view (fit)", reset, (v, f) -> {});
+    row(out, view, img, frames, "whole map in view (fit, not moved)", reset, (v, f) -> {});
     row(
         out,
         view,

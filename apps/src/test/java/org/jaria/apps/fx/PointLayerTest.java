@@ -2,6 +2,7 @@ package org.jaria.apps.fx;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.BitSet;
@@ -104,5 +105,31 @@ class PointLayerTest {
     assertEquals(xs[77], xs[i]);
     assertEquals(ys[77], ys[i]);
     assertEquals(-1, layer.nearest(1e7, 1e7, 10));
+  }
+
+  @Test
+  void anUnchangedViewIsNotDrawnAgainAndAnyChangeIs() {
+    PointLayer layer = new PointLayer(new int[] {0, 1000}, new int[] {0, 0});
+    Viewport vp = new Viewport();
+    vp.setSize(100, 100);
+    vp.setScale(0.1);
+    vp.setCenter(500, 0);
+    BitSet sel = new BitSet();
+    WritableImage first = layer.render(vp, 0xFF000000, sel, 0xFF0000FF, 40);
+    // A mark the layer never draws: it survives only if the image is not drawn again.
+    first.getPixelWriter().setArgb(10, 10, 0xFF00FF00);
+    assertSame(first, layer.render(vp, 0xFF000000, sel, 0xFF0000FF, 40));
+    assertEquals(0xFF00FF00, pixels(first)[10 * 100 + 10], "nothing changed: not drawn again");
+
+    sel.set(1); // the caller changes its selection in place
+    int[] px = pixels(layer.render(vp, 0xFF000000, sel, 0xFF0000FF, 40));
+    assertEquals(0, px[10 * 100 + 10], "the selection changed: drawn again");
+    assertEquals(0xFF0000FF, px[50 * 100 + 99]);
+
+    first.getPixelWriter().setArgb(10, 10, 0xFF00FF00);
+    vp.setCenter(501, 0);
+    assertEquals(0, pixels(layer.render(vp, 0xFF000000, sel, 0xFF0000FF, 40))[10 * 100 + 10]);
+    first.getPixelWriter().setArgb(10, 10, 0xFF00FF00);
+    assertEquals(0, pixels(layer.render(vp, 0xFF101010, sel, 0xFF0000FF, 40))[10 * 100 + 10]);
   }
 }
