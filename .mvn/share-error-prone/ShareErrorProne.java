@@ -5,7 +5,7 @@ import java.util.List;
 
 /**
  * Puts Error Prone on the application class path of Maven's own JVM, once, before the first module
- * compiles: the root pom's {@code share-error-prone} step runs it as an Ant task (Ant calls the
+ * compiles: the parent pom's {@code share-error-prone} step runs it as an Ant task (Ant calls the
  * setters, then {@link #execute}).
  *
  * <p>Why: javac runs inside Maven's JVM and makes a new class loader for its processor path in
@@ -86,7 +86,7 @@ public final class ShareErrorProne {
     if (!isLoadable(app)) {
       throw new IllegalStateException(
           "Error Prone's jars were added to Maven's class path but its plugin class does not load"
-              + " from there: check the share-error-prone step in the root pom.xml. Jars: "
+              + " from there: check the share-error-prone step in parent/pom.xml. Jars: "
               + errorProne);
     }
   }

@@ -24,9 +24,9 @@ class BuildFilesTest {
    */
   @Test
   void theBomDeclaresTheSpotlessPluginTheBuildUses() throws IOException {
-    String rootPom = Files.readString(root.resolve("pom.xml"));
+    String rootPom = Files.readString(root.resolve("parent/pom.xml"));
     Matcher v = Pattern.compile("<spotless.version>([^<]+)</spotless.version>").matcher(rootPom);
-    assertTrue(v.find(), "the root pom pins spotless.version");
+    assertTrue(v.find(), "the parent pom pins spotless.version");
     String bom = Files.readString(root.resolve("jaria-bom/pom.xml"));
     Matcher p =
         Pattern.compile(
@@ -53,10 +53,10 @@ class BuildFilesTest {
    */
   @Test
   void theMainCompileChecksJavadocAsTheJavadocToolDid(@TempDir Path dir) throws IOException {
-    String rootPom = Files.readString(root.resolve("pom.xml"));
+    String rootPom = Files.readString(root.resolve("parent/pom.xml"));
     Matcher option =
         Pattern.compile("<jaria.javac.doclint>([^<]+)</jaria.javac.doclint>").matcher(rootPom);
-    assertTrue(option.find(), "the root pom sets jaria.javac.doclint");
+    assertTrue(option.find(), "the parent pom sets jaria.javac.doclint");
     assertTrue(
         Pattern.compile(
                 "<id>default-compile</id>\\s*<configuration>\\s*"

@@ -21,10 +21,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The build's {@code share-error-prone} step (root pom, {@code .mvn/share-error-prone}) puts Error
- * Prone on Maven's own class path once, so that the build's compiles stop loading it one by one: it
- * must use the version the compiler's processor path names, leave its own tools' jars out, and work
- * with the JVM options {@code .mvn/jvm.config} gives Maven (and do no harm without them).
+ * The build's {@code share-error-prone} step (parent/pom.xml, {@code .mvn/share-error-prone}) puts
+ * Error Prone on Maven's own class path once, so that the build's compiles stop loading it one by
+ * one: it must use the version the compiler's processor path names, leave its own tools' jars out,
+ * and work with the JVM options {@code .mvn/jvm.config} gives Maven (and do no harm without them).
  */
 class ShareErrorProneTest {
 
@@ -36,10 +36,10 @@ class ShareErrorProneTest {
 
   @BeforeAll
   static void compileTheStepAndFakeJars() throws IOException {
-    String pom = Files.readString(ROOT.resolve("pom.xml"));
+    String pom = Files.readString(ROOT.resolve("parent/pom.xml"));
     Matcher m =
         Pattern.compile("<share-error-prone jars=\"[^\"]+\"\\s+exclude=\"([^\"]+)\"").matcher(pom);
-    assertTrue(m.find(), "the root pom runs the share-error-prone task with an exclude pattern");
+    assertTrue(m.find(), "the parent pom runs the share-error-prone task with an exclude pattern");
     exclude = m.group(1);
     Path classes = Files.createDirectories(dir.resolve("classes"));
     Files.writeString(
@@ -121,7 +121,7 @@ class ShareErrorProneTest {
 
   @Test
   void itUsesTheProcessorPathsVersionAndMavensJvmGetsTheOptionItNeeds() throws IOException {
-    String pom = Files.readString(ROOT.resolve("pom.xml"));
+    String pom = Files.readString(ROOT.resolve("parent/pom.xml"));
     Matcher processorPath =
         Pattern.compile(
                 "<annotationProcessorPaths>\\s*<path>\\s*<groupId>com.google.errorprone</groupId>\\s*"

@@ -102,6 +102,7 @@ class LauncherTest {
         """);
     executable(repo.resolve("jdk/bin/java"));
     write("pom.xml", "<project/>");
+    write("parent/pom.xml", "<project/>");
     List<String> all = new ArrayList<>(Arrays.asList(MODULES));
     all.addAll(Arrays.asList(APPS_MODULES));
     all.addAll(List.of("examples", "site", "jaria-bom"));
@@ -160,6 +161,11 @@ class LauncherTest {
     age(repo.resolve("pom.xml"), Duration.ofMinutes(-10)); // the root pom is built from too
     jaria(Map.of(), "version");
     assertEquals(3, builds());
+
+    // and so are the build settings every module inherits
+    age(repo.resolve("parent/pom.xml"), Duration.ofMinutes(-5));
+    jaria(Map.of(), "version");
+    assertEquals(4, builds());
   }
 
   @Test
