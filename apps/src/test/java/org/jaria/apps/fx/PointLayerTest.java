@@ -73,13 +73,26 @@ class PointLayerTest {
     }
   }
 
-  @Test
-  void selectedPointsTakeTheirColourAndBigDotsStayInside() {
-    PointLayer layer = new PointLayer(new int[] {0, 1000}, new int[] {0, 0});
+  /** Points at (0, 0) and (1000, 0). */
+  private static PointLayer twoPoints() {
+    return new PointLayer(new int[] {0, 1000}, new int[] {0, 0});
+  }
+
+  /**
+   * A 100x100 view at 0.1 px/mm centred on (500, 0): the two points at its left and right edges.
+   */
+  private static Viewport tenthOfAPixelPerMm() {
     Viewport vp = new Viewport();
     vp.setSize(100, 100);
     vp.setScale(0.1);
     vp.setCenter(500, 0);
+    return vp;
+  }
+
+  @Test
+  void selectedPointsTakeTheirColourAndBigDotsStayInside() {
+    PointLayer layer = twoPoints();
+    Viewport vp = tenthOfAPixelPerMm();
     BitSet sel = new BitSet();
     sel.set(1);
     int[] px = pixels(layer.render(vp, 0xFF000000, sel, 0xFF0000FF, 40));
@@ -109,11 +122,8 @@ class PointLayerTest {
 
   @Test
   void anUnchangedViewIsNotDrawnAgainAndAnyChangeIs() {
-    PointLayer layer = new PointLayer(new int[] {0, 1000}, new int[] {0, 0});
-    Viewport vp = new Viewport();
-    vp.setSize(100, 100);
-    vp.setScale(0.1);
-    vp.setCenter(500, 0);
+    PointLayer layer = twoPoints();
+    Viewport vp = tenthOfAPixelPerMm();
     BitSet sel = new BitSet();
     WritableImage first = layer.render(vp, 0xFF000000, sel, 0xFF0000FF, 40);
     // A mark the layer never draws: it survives only if the image is not drawn again.
