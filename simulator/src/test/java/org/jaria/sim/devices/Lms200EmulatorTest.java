@@ -32,12 +32,18 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.api.parallel.Execution;
+import org.junit.jupiter.api.parallel.ExecutionMode;
 
 /**
  * The LMS-200 driver against a simulated robot's laser presented as a real LMS-200 on a serial
  * pseudo-terminal (socat) or a TCP port: the whole set-up conversation, the baud switch, scans that
  * match the world, and the faults of real lasers.
+ *
+ * <p>Each test has a world, an emulator and a line of its own and waits mostly on the line (9600
+ * baud), so the tests run side by side (see junit-platform.properties).
  */
+@Execution(ExecutionMode.CONCURRENT)
 class Lms200EmulatorTest {
 
   /** Bound on every wait: generous, so a slow machine is not a failure; never a pacing device. */

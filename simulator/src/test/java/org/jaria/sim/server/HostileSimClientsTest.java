@@ -24,6 +24,8 @@ import org.jaria.sim.SimRobot;
 import org.jaria.sim.SimServerOptions;
 import org.jaria.sim.SimWorld;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.parallel.Execution;
+import org.junit.jupiter.api.parallel.ExecutionMode;
 
 /**
  * Hostile clients on a robot's TCP port (loopback only, a bounded number of sockets): squatters
@@ -32,7 +34,11 @@ import org.junit.jupiter.api.Test;
  * world runs on its own thread ten times faster than real time (the ARIA client in real time), so
  * the kernel's delivery of loopback bytes never races the simulated clock; the tests wait for what
  * the world thread does (a step listener), never for a time.
+ *
+ * <p>Each test has a world and sockets of its own and waits mostly on the world's real-time clock,
+ * so the tests run side by side (see junit-platform.properties).
  */
+@Execution(ExecutionMode.CONCURRENT)
 class HostileSimClientsTest {
 
   private static final byte[] SYNC0 = Hex.parse("FA FB 03 00 00 00");
