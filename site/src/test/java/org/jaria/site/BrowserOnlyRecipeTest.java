@@ -9,14 +9,20 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.parallel.Execution;
+import org.junit.jupiter.api.parallel.ExecutionMode;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * The getting-started guide's browser-only recipe run as a reader follows it, in English and
  * Spanish (apart from {@link GettingStartedRecipesTest}, so that the two run side by side).
+ *
+ * <p>The two guides' runs go side by side too (see junit-platform.properties): each starts its own
+ * simulator on free ports and its own HelloRobot, and mostly waits on the robot's square.
  */
 @Tag("slow")
+@Execution(ExecutionMode.CONCURRENT)
 class BrowserOnlyRecipeTest {
 
   private final GuideRecipes guides = new GuideRecipes();
