@@ -24,8 +24,8 @@ class BuildFilesTest {
    */
   @Test
   void theBomDeclaresTheSpotlessPluginTheBuildUses() throws IOException {
-    String rootPom = Files.readString(root.resolve("parent/pom.xml"));
-    Matcher v = Pattern.compile("<spotless.version>([^<]+)</spotless.version>").matcher(rootPom);
+    String parentPom = Files.readString(root.resolve("parent/pom.xml"));
+    Matcher v = Pattern.compile("<spotless.version>([^<]+)</spotless.version>").matcher(parentPom);
     assertTrue(v.find(), "the parent pom pins spotless.version");
     String bom = Files.readString(root.resolve("jaria-bom/pom.xml"));
     Matcher p =
@@ -53,16 +53,16 @@ class BuildFilesTest {
    */
   @Test
   void theMainCompileChecksJavadocAsTheJavadocToolDid(@TempDir Path dir) throws IOException {
-    String rootPom = Files.readString(root.resolve("parent/pom.xml"));
+    String parentPom = Files.readString(root.resolve("parent/pom.xml"));
     Matcher option =
-        Pattern.compile("<jaria.javac.doclint>([^<]+)</jaria.javac.doclint>").matcher(rootPom);
+        Pattern.compile("<jaria.javac.doclint>([^<]+)</jaria.javac.doclint>").matcher(parentPom);
     assertTrue(option.find(), "the parent pom sets jaria.javac.doclint");
     assertTrue(
         Pattern.compile(
                 "<id>default-compile</id>\\s*<configuration>\\s*"
                     + "<compilerArgs combine.children=\"append\">\\s*"
                     + "<arg>\\$\\{jaria.javac.doclint}</arg>")
-            .matcher(rootPom)
+            .matcher(parentPom)
             .find(),
         "the main compile (default-compile) passes jaria.javac.doclint to javac");
 

@@ -125,7 +125,7 @@ public final class PointLayer {
     int dot = (int) Math.max(1, Math.min(12, Math.round(pointSizeMm * vp.scale())));
     Drawn wanted =
         new Drawn(w, h, vp.scale(), vp.centerX(), vp.centerY(), argb, selectedArgb, dot, selected);
-    if (image != null && wanted.equals(drawn)) {
+    if (wanted.equals(drawn)) { // drawn is set only with an image
       return image;
     }
     drawn = wanted.withCopiedSelection();
